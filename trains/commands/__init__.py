@@ -1,0 +1,1 @@
+"""Sub-commands of the ``geartrain`` CLI, one module each (see :mod:`trains.cli`)."""
