@@ -6,7 +6,19 @@ The public surface (see ``docs/``)::
 """
 
 from gears.errors import GearError
+from gears.gear import Gear
+from gears.pair import GearPair, PairGeometry, Rack, pair_geometry
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 
-__all__ = ["BasicRack", "Finding", "GearError", "Report"]
+__all__ = [
+    "BasicRack",
+    "Finding",
+    "Gear",
+    "GearError",
+    "GearPair",
+    "PairGeometry",
+    "Rack",
+    "Report",
+    "pair_geometry",
+]

@@ -146,4 +146,6 @@ class BasicRack:
         """h*_eff = h_aP0* - rho_aP0* (1 - sin alpha): depth below the reference line where the
         tool's straight flank ends. It sets the undercut limit and the form circle
         (standards.md §1.1)."""
-        return self.dedendum - self.root_radius * (1.0 - math.sin(math.radians(self.pressure_angle)))
+        return self.dedendum - self.root_radius * (
+            1.0 - math.sin(math.radians(self.pressure_angle))
+        )

@@ -1,0 +1,712 @@
+"""A meshing pair: external, internal (gear 2 is the ring) or pinion-and-rack, spur or helical.
+
+Formulas (standards.md §1.2-1.5, §1.8; ISO 21771 / DIN 3960 / KHK; Ozols §21-3...21-8;
+Joldasbekov §11). Positions on the line of action are measured in mm from N1, the point where
+the line of action touches gear 1's base circle, towards the pitch point C:
+
+* ``u_C = r_b1 tan alpha_wt``, ``u_N2 = r_b1 tan alpha_wt + sigma r_b2 tan alpha_wt``
+  (sigma = +1 external, -1 internal: N2 lies beyond N1 for a ring);
+* contact starts where gear 2's tip circle cuts the line
+  (``u_A = u_N2 - sigma sqrt(r_a2^2 - r_b2^2)``) and ends where gear 1's tip circle cuts it
+  (``u_E = sqrt(r_a1^2 - r_b1^2)``) when gear 1 drives;
+* ``contact_ratio = (u_E - u_A) / p_bt``.
+
+All formulas are numpy functions over arrays (:func:`pair_geometry` evaluates 10^6 pairs at once);
+:class:`GearPair` calls them for one pair.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import NamedTuple
+
+import numpy as np
+
+from gears.errors import GearError
+from gears.gear import Gear
+from gears.involute import inv, inv_inverse
+from gears.report import Finding, Report
+
+__all__ = [
+    "GearPair",
+    "PairGeometry",
+    "PathOfContact",
+    "Rack",
+    "center_distance_shift_sum",
+    "mesh_efficiency",
+    "pair_geometry",
+    "specific_sliding",
+]
+
+
+class PairGeometry(NamedTuple):
+    """Arrays returned by :func:`pair_geometry` (mm and degrees)."""
+
+    working_pressure_angle: np.ndarray
+    center_distance: np.ndarray
+    center_distance_modification: np.ndarray
+    tip_alteration: np.ndarray
+    tip_diameter_1: np.ndarray
+    tip_diameter_2: np.ndarray
+    working_diameter_1: np.ndarray
+    working_diameter_2: np.ndarray
+    contact_ratio: np.ndarray
+
+
+def _sigma(internal):
+    return np.where(np.asarray(internal, bool), -1.0, 1.0)
+
+
+def pair_geometry(
+    z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angle=0.0, internal=False,
+    addendum=1.0, tip_shortening=True,
+):  # fmt: skip
+    """Geometry of many pairs at once (all arguments broadcast; angles in degrees).
+
+    ``z2`` and ``x2`` are gear 2's own (positive) tooth count and shift; ``internal`` marks
+    gear 2 as a ring. ``helix_angle`` is gear 1's (gear 2 has the opposite hand externally, the
+    same internally). Tip shortening (DIN 3960: k = y - (x1 + x2), applied when negative) is for
+    external pairs only; internal pairs keep their tips.
+
+    Returns
+    -------
+    PairGeometry
+        Working transverse pressure angle alpha_wt (deg), centre distance a_w, y, k, tip
+        diameters, working pitch diameters, transverse contact ratio. Tips inside the base
+        circle give a contact ratio of 0 (no involute contact); use :class:`GearPair` for a
+        checked single pair.
+
+    Examples
+    --------
+    >>> g = pair_geometry(12, 28, 1.0, 0.3, 0.2)   # Joldasbekov §5.4, row 3
+    >>> round(float(g.working_pressure_angle), 5), round(float(g.center_distance), 5)
+    (23.29917, 20.46253)
+    >>> round(float(g.contact_ratio), 5)
+    1.36264
+    """
+    s = _sigma(internal)
+    z1 = np.asarray(z1, float)
+    z2s = s * np.asarray(z2, float)  # signed tooth count of gear 2
+    x2s = s * np.asarray(x2, float)
+    m = np.asarray(module, float)
+    an = np.radians(pressure_angle)
+    cos_b = np.cos(np.radians(helix_angle))
+    at = np.arctan(np.tan(an) / cos_b)
+    inv_wt = 2.0 * np.tan(an) * (x1 + x2s) / (z1 + z2s) + inv(at)
+    awt = inv_inverse(inv_wt)
+    zsum = np.abs(z1 + z2s)
+    ratio = np.cos(at) / np.cos(awt)
+    a = zsum * m / (2.0 * cos_b) * ratio
+    y = zsum / (2.0 * cos_b) * (ratio - 1.0)
+    shift_sum = s * (x1 + x2s)  # x1 + x2 external, x2 - x1 internal
+    k = np.where(s > 0, np.minimum(y - shift_sum, 0.0), 0.0)
+    if not tip_shortening:
+        k = np.zeros_like(k)
+    mt = m / cos_b
+    d1 = z1 * mt
+    d2 = np.abs(z2s) * mt
+    da1 = d1 + 2.0 * m * (addendum + x1 + k)
+    da2 = d2 + 2.0 * s * m * (addendum + x2s + k)
+    rb1 = d1 * np.cos(at) / 2.0
+    rb2 = d2 * np.cos(at) / 2.0
+    tw = np.tan(awt)
+    eps = _contact_ratio(da1 / 2, da2 / 2, rb1, rb2, tw, s, np.pi * mt * np.cos(at))
+    return PairGeometry(
+        np.degrees(awt), a, y, k, da1, da2, 2 * rb1 / np.cos(awt), 2 * rb2 / np.cos(awt), eps
+    )
+
+
+def _line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
+    """(u_A, u_E, u_N2) on the line of action, measured from N1 (see the module docstring)."""
+    u_n2 = rb1 * tan_wt + sigma * rb2 * tan_wt
+    u_e = np.sqrt(np.maximum(ra1 * ra1 - rb1 * rb1, 0.0))
+    u_a = u_n2 - sigma * np.sqrt(np.maximum(ra2 * ra2 - rb2 * rb2, 0.0))
+    return u_a, u_e, u_n2
+
+
+def _contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
+    u_a, u_e, _ = _line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma)
+    valid = (ra1 >= rb1) & (ra2 >= rb2)
+    return np.where(valid, (u_e - u_a) / base_pitch, 0.0)
+
+
+def center_distance_shift_sum(
+    z1, z2, module, center_distance, pressure_angle=20.0, helix_angle=0.0, internal=False
+):
+    """Sum of shifts x1 + x2 (internal: x2 - x1) that gives ``center_distance`` (ISO 21771 §5;
+    standards.md §1.2, inverse problem): cos alpha_wt = a_d cos alpha_t / a_w, then
+    sum x = (z2 +- z1)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n).
+
+    Raises
+    ------
+    GearError
+        If no shift reaches ``center_distance`` (a_w <= a_d cos alpha_t).
+    """
+    s = _sigma(internal)
+    z1 = np.asarray(z1, float)
+    z2 = np.asarray(z2, float)
+    an = np.radians(pressure_angle)
+    cos_b = np.cos(np.radians(helix_angle))
+    at = np.arctan(np.tan(an) / cos_b)
+    zsum = np.abs(z1 + s * z2)
+    a_d = zsum * np.asarray(module) / (2 * cos_b)
+    c = a_d * np.cos(at) / np.asarray(center_distance, float)
+    if np.any(~(c < 1.0)):
+        lowest = np.min(a_d * np.cos(at))
+        raise GearError(
+            f"centre distance {center_distance} mm cannot be reached by profile shift: it must "
+            f"exceed a_d cos(alpha_t) = {lowest:.6f} mm (working pressure angle 0)"
+        )
+    awt = np.arccos(c)
+    out = zsum * (inv(awt) - inv(at)) / (2 * np.tan(an))
+    return out[()] if np.ndim(out) == 0 else out
+
+
+def specific_sliding(u, rb1, rb2, tan_wt, ratio, internal=False):
+    """Specific sliding of both flanks at positions ``u`` on the line of action (from N1).
+
+    zeta_1 = 1 - rho_2 / (u rho_1) and zeta_2 = 1 - u rho_1 / rho_2 with the flank radii of
+    curvature rho_1 = u and rho_2 = sigma (u_N2 - u), u = z2/z1 (Ozols §21-4 (2)-(3) with the
+    lost page restored; Joldasbekov §5.6). Both are 0 at the pitch point; at N1 (rho_1 = 0)
+    zeta_1 is -inf, which is why a pair whose contact reaches N1 is interfering.
+    """
+    s = _sigma(internal)
+    u = np.asarray(u, float)
+    u_n2 = rb1 * tan_wt + s * rb2 * tan_wt
+    rho1 = u
+    rho2 = s * (u_n2 - u)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        z1_ = 1.0 - rho2 / (ratio * rho1)
+        z2_ = 1.0 - ratio * rho1 / rho2
+    return z1_, z2_
+
+
+def mesh_efficiency(z1, z2, contact_ratio, friction=0.1, internal=False):
+    """Mesh efficiency estimate, Ozols (14.25) after Reshetov:
+    eta = 1 - (pi f eps / 2)(1/z1 +- 1/z2), + external, - internal.
+
+    >>> round(float(mesh_efficiency(20, 40, 1.6, 0.1)), 6)   # Ozols digest, derived case
+    0.98115
+    """
+    s = _sigma(internal)
+    return 1.0 - np.pi * friction * contact_ratio / 2.0 * (1.0 / z1 + s / np.asarray(z2, float))
+
+
+@dataclass(frozen=True)
+class Rack:
+    """A gear rack (z -> infinity) to mesh with a pinion.
+
+    Parameters
+    ----------
+    module : float
+        Normal module; must equal the pinion's.
+    pressure_angle : float
+        Normal pressure angle in degrees (defaults to 20).
+    helix_angle : float
+        Helix angle of the rack teeth in degrees; the pinion's is its negative.
+    face_width : float or None
+        For the overlap ratio.
+    addendum : float
+        Rack addendum coefficient h_aP* (1.0 for ISO 53).
+    """
+
+    module: float
+    pressure_angle: float = 20.0
+    helix_angle: float = 0.0
+    face_width: float | None = None
+    addendum: float = 1.0
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.module, int | float) and self.module > 0):
+            raise GearError(f"rack module = {self.module!r}; valid is > 0")
+        if not 0 < self.pressure_angle < 45:
+            raise GearError(f"rack pressure_angle = {self.pressure_angle}; valid is 0 < a < 45")
+        if not -60 < self.helix_angle < 60:
+            raise GearError(f"rack helix_angle = {self.helix_angle}; valid is -60 < b < 60")
+
+
+@dataclass(frozen=True)
+class PathOfContact:
+    """Positions on the line of action, in mm from N1 (gear 1's base-circle tangent point).
+
+    ``start`` (A, gear 2's tip when gear 1 drives), ``end`` (E, gear 1's tip), ``pitch_point``
+    (C), ``n2`` (N2, gear 2's tangent point; for a rack, ``inf``), ``base_pitch`` p_bt, and the
+    single-contact zone ``[single_start, single_end] = [E - p_bt, A + p_bt]`` (empty when the
+    contact ratio reaches 2).
+    """
+
+    start: float
+    end: float
+    pitch_point: float
+    n2: float
+    base_pitch: float
+
+    @property
+    def length(self) -> float:
+        """g_alpha = AE."""
+        return self.end - self.start
+
+    @property
+    def single_start(self) -> float:
+        return self.end - self.base_pitch
+
+    @property
+    def single_end(self) -> float:
+        return self.start + self.base_pitch
+
+    @property
+    def single_contact(self) -> tuple[float, float] | None:
+        """The single-tooth contact zone on the line, or None when two pairs always mesh."""
+        lo, hi = self.single_start, self.single_end
+        return (lo, hi) if hi > lo else None
+
+
+def _same(name: str, a: float, b: float) -> None:
+    if not math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-12):
+        raise GearError(f"the gears of a pair need equal {name}; got {a:g} and {b:g}")
+
+
+@dataclass(frozen=True, init=False)
+class GearPair:
+    """Two gears in mesh at the centre distance that their shifts give (zero backlash).
+
+    Parameters
+    ----------
+    g1 : Gear
+        Gear 1 (the pinion; external).
+    g2 : Gear or Rack
+        Gear 2: external, internal (the ring: ``internal=True``) or a :class:`Rack`.
+    tip_shortening : bool
+        External pairs: shorten both tips by k m_n (DIN 3960, k = y - (x1 + x2) when negative)
+        to keep the bottom clearance of the basic rack. Internal pairs keep their tips.
+
+    Raises
+    ------
+    GearError
+        Unequal modules or pressure angles, wrong hands (external helical pairs need opposite
+        hands, internal ones the same hand), gear 1 internal, or a ring with no more teeth than
+        its pinion.
+
+    Examples
+    --------
+    >>> p = GearPair(Gear(12, 3, profile_shift=0.6), Gear(24, 3, profile_shift=0.36))
+    >>> round(p.working_pressure_angle, 4), round(p.center_distance, 4)   # KHK example
+    (26.0886, 56.4999)
+    >>> round(p.contact_ratio, 4)
+    1.2021
+    """
+
+    g1: Gear
+    g2: Gear | Rack
+    tip_shortening: bool
+
+    def __init__(self, g1: Gear, g2: Gear | Rack, tip_shortening: bool = True) -> None:
+        if not isinstance(g1, Gear):
+            raise GearError(f"g1 must be a Gear; got {g1!r}")
+        if g1.internal:
+            raise GearError("gear 1 must be external; pass the internal gear (ring) as g2")
+        if isinstance(g2, Rack):
+            _same("modules", g1.module, g2.module)
+            _same("pressure angles", g1.pressure_angle, g2.pressure_angle)
+            if not math.isclose(g1.helix_angle, -g2.helix_angle, abs_tol=1e-12):
+                raise GearError(
+                    f"a pinion with helix {g1.helix_angle:g} deg meshes with a rack of helix "
+                    f"{-g1.helix_angle:g} deg (opposite hand); got {g2.helix_angle:g}"
+                )
+        elif isinstance(g2, Gear):
+            _same("modules", g1.module, g2.module)
+            _same("pressure angles", g1.pressure_angle, g2.pressure_angle)
+            want = g1.helix_angle if g2.internal else -g1.helix_angle
+            if not math.isclose(g2.helix_angle, want, abs_tol=1e-12):
+                kind = "the same hand" if g2.internal else "opposite hands"
+                raise GearError(
+                    f"an {'internal' if g2.internal else 'external'} helical pair needs {kind}: "
+                    f"gear 1 has {g1.helix_angle:g} deg, so gear 2 needs {want:g} deg; got "
+                    f"{g2.helix_angle:g} deg"
+                )
+            if g2.internal and g2.teeth <= g1.teeth:
+                raise GearError(
+                    f"a ring needs more teeth than its pinion: z2 = {g2.teeth} <= z1 = {g1.teeth}"
+                )
+        else:
+            raise GearError(f"g2 must be a Gear or a Rack; got {g2!r}")
+        object.__setattr__(self, "g1", g1)
+        object.__setattr__(self, "g2", g2)
+        object.__setattr__(self, "tip_shortening", bool(tip_shortening))
+
+    # --- construction ------------------------------------------------------------------------
+    @classmethod
+    def at_center_distance(
+        cls, g1: Gear, g2: Gear, center_distance: float, split: str = "equal_sliding",
+        tip_shortening: bool = True,
+    ) -> GearPair:  # fmt: skip
+        """The pair whose shifts give ``center_distance`` (mm), split between the gears.
+
+        The sum x1 + x2 (internal: x2 - x1) follows from the centre distance
+        (:func:`center_distance_shift_sum`); ``split`` distributes it:
+
+        * ``"equal_sliding"``: the maximum specific sliding of the two flanks is equal (the
+          physically based choice; solved on the line of action);
+        * ``"proportional"``: the DIN 3992 / ISO/TR 4467 style suggestion as approximated by
+          Roloff/Matek, x1 = S/2 + (0.5 - S/2) lg(u) / lg(z1 z2 / 100) (standards.md §1.10; a
+          suggestion, not a standard value; external pairs);
+        * ``"keep"``: keep g1's shift, gear 2 takes the rest.
+
+        Raises
+        ------
+        GearError
+            If no shift reaches the centre distance, or for an unknown split.
+        """
+        if not isinstance(g2, Gear):
+            raise GearError("at_center_distance needs two Gears (a rack has no centre distance)")
+        cls(g1, g2)  # validates modules, hands, counts
+        total = float(
+            center_distance_shift_sum(
+                g1.teeth, g2.teeth, g1.module, center_distance, g1.pressure_angle,
+                g1.helix_angle, g2.internal,
+            )
+        )  # fmt: skip
+        s = -1.0 if g2.internal else 1.0
+        if split == "keep":
+            x1 = g1.profile_shift
+        elif split == "proportional":
+            if g2.internal:
+                raise GearError("split='proportional' is defined for external pairs; use 'keep'")
+            u = g2.teeth / g1.teeth
+            denominator = math.log10(g1.teeth * g2.teeth / 100.0)
+            if u == 1.0 or abs(denominator) < 1e-9:
+                x1 = total / 2
+            else:
+                x1 = total / 2 + (0.5 - total / 2) * math.log10(u) / denominator
+        elif split == "equal_sliding":
+            x1 = _equal_sliding_x1(g1, g2, total, tip_shortening)
+        else:
+            raise GearError(f"split = {split!r}; valid are 'equal_sliding', 'proportional', 'keep'")
+        x2 = total - x1 if s > 0 else total + x1  # external x1 + x2 = S; internal x2 - x1 = S
+        return cls(
+            g1.with_(profile_shift=x1, tip_alteration=0.0),
+            g2.with_(profile_shift=x2, tip_alteration=0.0),
+            tip_shortening,
+        )
+
+    # --- basic quantities ----------------------------------------------------------------------
+    @property
+    def internal(self) -> bool:
+        """True when gear 2 is a ring."""
+        return isinstance(self.g2, Gear) and self.g2.internal
+
+    @property
+    def is_rack(self) -> bool:
+        return isinstance(self.g2, Rack)
+
+    @property
+    def _sigma(self) -> float:
+        return -1.0 if self.internal else 1.0
+
+    @cached_property
+    def _geometry(self) -> PairGeometry:
+        g1, g2 = self.g1, self.g2
+        return pair_geometry(
+            g1.teeth, g2.teeth, g1.module, g1.profile_shift, g2.profile_shift,
+            g1.pressure_angle, g1.helix_angle, g2.internal, g1.rack.addendum,
+            self.tip_shortening,
+        )  # fmt: skip
+
+    @property
+    def working_pressure_angle(self) -> float:
+        """Working transverse pressure angle alpha_wt in degrees."""
+        if self.is_rack:
+            return self.g1.transverse_pressure_angle
+        return float(self._geometry.working_pressure_angle)
+
+    @property
+    def center_distance(self) -> float:
+        """Working centre distance a_w in mm (rack: from the pinion axis to the rack's reference
+        line, r1 + x1 m_n)."""
+        if self.is_rack:
+            return self.g1.reference_diameter / 2 + self.g1.profile_shift * self.g1.module
+        return float(self._geometry.center_distance)
+
+    @property
+    def reference_center_distance(self) -> float:
+        """a_d = m_n (z2 +- z1) / (2 cos beta): the centre distance of the zero-shift pair."""
+        if self.is_rack:
+            return self.g1.reference_diameter / 2
+        s = self._sigma
+        return abs(self.g1.reference_diameter + s * self.g2.reference_diameter) / 2
+
+    @property
+    def center_distance_modification(self) -> float:
+        """y = (a_w - a_d) / m_n."""
+        if self.is_rack:
+            return self.g1.profile_shift
+        return float(self._geometry.center_distance_modification)
+
+    @property
+    def tip_alteration(self) -> float:
+        """k = y - (x1 + x2) when negative (external pairs with tip shortening), else 0."""
+        return 0.0 if self.is_rack else float(self._geometry.tip_alteration)
+
+    @cached_property
+    def gears(self) -> tuple[Gear, Gear | Rack]:
+        """``(g1, g2)`` as mounted in this pair: with the tip alteration applied."""
+        k = self.tip_alteration
+        if k == 0.0:
+            return self.g1, self.g2
+        return self.g1.with_(tip_alteration=k), self.g2.with_(tip_alteration=k)
+
+    @property
+    def tip_diameters(self) -> tuple[float, float]:
+        """Tip diameters of the pair (after tip shortening); a rack's is ``inf``."""
+        if self.is_rack:
+            return self.g1.tip_diameter, math.inf
+        return float(self._geometry.tip_diameter_1), float(self._geometry.tip_diameter_2)
+
+    @property
+    def working_diameters(self) -> tuple[float, float]:
+        """Working pitch diameters d_w = d_b / cos alpha_wt."""
+        if self.is_rack:
+            return self.g1.reference_diameter, math.inf
+        return float(self._geometry.working_diameter_1), float(self._geometry.working_diameter_2)
+
+    @property
+    def ratio(self) -> float:
+        """Gear ratio u = z2 / z1 (speed ratio |w1 / w2|); ``inf`` for a rack."""
+        return math.inf if self.is_rack else self.g2.teeth / self.g1.teeth
+
+    # --- contact ---------------------------------------------------------------------------------
+    @cached_property
+    def path_of_contact(self) -> PathOfContact:
+        """Start, end, pitch point and N2 on the line of action (mm from N1)."""
+        g1 = self.g1
+        rb1 = g1.base_diameter / 2
+        ra1 = self.tip_diameters[0] / 2
+        self._require_tip_above_base(1, ra1, rb1)
+        at = math.radians(self.working_pressure_angle)
+        tw = math.tan(at)
+        pb = g1.base_pitch
+        if self.is_rack:
+            # The rack's tip line (h_a - x1 m above the pitch line... measured from the
+            # pinion's reference line) cuts the line of action at (h_a - x1) m / sin(alpha_t)
+            # before the pitch point (standards.md §1.5, rack formula).
+            h = (self.g2.addendum - g1.profile_shift) * g1.module
+            u_c = rb1 * tw
+            start = u_c - h / math.sin(at)
+            end = math.sqrt(ra1 * ra1 - rb1 * rb1)
+            return PathOfContact(start, end, u_c, math.inf, pb)
+        rb2 = self.g2.base_diameter / 2
+        ra2 = self.tip_diameters[1] / 2
+        self._require_tip_above_base(2, ra2, rb2)
+        u_a, u_e, u_n2 = _line_positions(ra1, ra2, rb1, rb2, tw, self._sigma)
+        return PathOfContact(float(u_a), float(u_e), rb1 * tw, float(u_n2), pb)
+
+    def _require_tip_above_base(self, which: int, ra: float, rb: float) -> None:
+        if ra < rb:
+            raise GearError(
+                f"gear {which}'s tip circle (d_a = {2 * ra:.4f} mm) lies inside its base circle "
+                f"(d_b = {2 * rb:.4f} mm): there is no involute to mesh; raise the tip "
+                f"(internal gears: a negative shift or more teeth)"
+            )
+
+    @property
+    def contact_ratio(self) -> float:
+        """Transverse contact ratio epsilon_alpha (Ozols 21.12; standards.md §1.5)."""
+        p = self.path_of_contact
+        return p.length / p.base_pitch
+
+    @property
+    def overlap_ratio(self) -> float:
+        """epsilon_beta = b sin|beta| / (pi m_n) (Ozols 21.31); b = the smaller face width.
+
+        Raises :class:`GearError` when neither gear has a face width.
+        """
+        widths = [w for w in (self.g1.face_width, getattr(self.g2, "face_width", None)) if w]
+        if not widths:
+            raise GearError("overlap_ratio needs a face_width on g1 or g2")
+        b = min(widths)
+        return b * abs(math.sin(math.radians(self.g1.helix_angle))) / (math.pi * self.g1.module)
+
+    @property
+    def total_contact_ratio(self) -> float:
+        """epsilon_gamma = epsilon_alpha + epsilon_beta (epsilon_beta = 0 for spur gears)."""
+        if self.g1.helix_angle == 0:
+            return self.contact_ratio
+        return self.contact_ratio + self.overlap_ratio
+
+    def specific_sliding(self, u=None, n: int = 101):
+        """Specific sliding ``(u, zeta_1, zeta_2)`` along the path of contact.
+
+        ``u`` are positions in mm from N1 (default: ``n`` points from start to end).
+        """
+        p = self.path_of_contact
+        u = np.linspace(p.start, p.end, n) if u is None else np.asarray(u, float)
+        if self.is_rack:
+            # rack flank: straight (rho_2 = inf); the limit of the gear formula as z2 -> inf
+            u_c = p.pitch_point
+            with np.errstate(divide="ignore"):
+                return u, 1.0 - u_c / u, 1.0 - u / u_c
+        rb1 = self.g1.base_diameter / 2
+        rb2 = self.g2.base_diameter / 2
+        tw = math.tan(math.radians(self.working_pressure_angle))
+        z1_, z2_ = specific_sliding(u, rb1, rb2, tw, self.ratio, self.internal)
+        return u, z1_, z2_
+
+    @property
+    def max_specific_sliding(self) -> tuple[float, float]:
+        """Largest |specific sliding| of each flank: gear 1 at the contact start (its root),
+        gear 2 at the contact end (its root)."""
+        p = self.path_of_contact
+        _, a1, _ = self.specific_sliding([p.start])
+        _, _, e2 = self.specific_sliding([p.end])
+        return float(abs(a1[0])), float(abs(e2[0]))
+
+    def mesh_efficiency(self, friction: float = 0.1) -> float:
+        """Ozols (14.25): 1 - (pi f eps_alpha / 2)(1/z1 +- 1/z2) (rack: 1/z2 = 0)."""
+        z2 = math.inf if self.is_rack else self.g2.teeth
+        return float(
+            mesh_efficiency(self.g1.teeth, z2, self.contact_ratio, friction, self.internal)
+        )
+
+    # --- checks ----------------------------------------------------------------------------------
+    def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
+        """Both gears' findings (prefixed ``g1.``/``g2.``) plus ``contact_ratio``,
+        ``tip_interference`` and, for internal pairs, ``involute_interference``,
+        ``trochoid_interference``, ``radial_interference`` and ``ring_tip_above_base``."""
+        m1, m2 = self.gears
+        findings = list(m1.check(min_tip_land).prefixed("g1").values())
+        if not self.is_rack:
+            findings += list(m2.check(min_tip_land).prefixed("g2").values())
+        try:
+            eps = self.contact_ratio
+        except GearError as exc:
+            findings.append(Finding("contact_ratio", -min_contact_ratio, str(exc), unit=""))
+            return Report(findings)
+        findings.append(
+            Finding(
+                "contact_ratio", eps - min_contact_ratio,
+                f"transverse contact ratio {eps:.4f} vs required {min_contact_ratio:g}", unit="",
+            )
+        )  # fmt: skip
+        findings.extend(self._interference_findings())
+        return Report(findings)
+
+    def _interference_findings(self) -> list[Finding]:
+        p = self.path_of_contact
+        g1, g2 = self.gears
+        rb1 = g1.base_diameter / 2
+        # gear 2's tip must meet gear 1's flank at or above gear 1's form circle
+        u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
+        margin1 = p.start - u_f1
+        out = [
+            Finding(
+                "tip_interference", margin1,
+                f"mate's tip meets gear 1's flank {margin1:+.4f} mm along the line of action from "
+                f"its form circle (d_Ff1 = {g1.form_diameter:.4f} mm; N1 at {-u_f1:+.4f} mm)",
+            )
+        ]  # fmt: skip
+        if self.is_rack:
+            return out
+        rb2 = g2.base_diameter / 2
+        l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
+        # external: gear 1's tip point must stay at least l2 before N2; internal: within l2 of N2
+        margin2 = (p.n2 - p.end) - l2 if not self.internal else l2 - (p.end - p.n2)
+        out.append(
+            Finding(
+                "tip_interference_2", margin2,
+                f"gear 1's tip meets gear 2's flank {margin2:+.4f} mm along the line of action "
+                f"inside its usable involute (d_Ff2 = {g2.form_diameter:.4f} mm)",
+            )
+        )  # fmt: skip
+        if self.internal:
+            out.extend(self._internal_findings())
+        return out
+
+    def _internal_findings(self) -> list[Finding]:
+        """The KHK internal-gear checks (standards.md §1.8), each as a signed angle margin."""
+        g1, g2 = self.gears
+        a = self.center_distance
+        ra1, ra2 = g1.tip_diameter / 2, g2.tip_diameter / 2
+        rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
+        z1, z2 = g1.teeth, g2.teeth
+        awt = math.radians(self.working_pressure_angle)
+        out = [
+            Finding(
+                "ring_tip_above_base", ra2 - rb2,
+                f"ring tip radius {ra2:.4f} mm vs its base radius {rb2:.4f} mm",
+            )
+        ]  # fmt: skip
+        if ra2 <= rb2 or ra1 <= rb1:
+            return out
+        aa1 = math.acos(rb1 / ra1)
+        aa2 = math.acos(rb2 / ra2)
+        inv_w, inv_a1, inv_a2 = float(inv(awt)), float(inv(aa1)), float(inv(aa2))
+        # involute interference: z1/z2 >= 1 - tan(alpha_a2)/tan(alpha_wt)
+        m_inv = z1 / z2 - (1 - math.tan(aa2) / math.tan(awt))
+        out.append(
+            Finding(
+                "involute_interference", m_inv,
+                f"z1/z2 = {z1 / z2:.4f} vs 1 - tan(alpha_a2)/tan(alpha_wt) = "
+                f"{1 - math.tan(aa2) / math.tan(awt):.4f} (ring tip must not pass N1)", unit="",
+            )
+        )  # fmt: skip
+        # trochoid interference: theta1 z1/z2 + inv alpha_wt - inv alpha_a2 >= theta2
+        c1 = (ra2 * ra2 - ra1 * ra1 - a * a) / (2 * a * ra1)
+        c2 = (a * a + ra2 * ra2 - ra1 * ra1) / (2 * a * ra2)
+        if abs(c1) <= 1 and abs(c2) <= 1:
+            th1 = math.acos(c1) + inv_a1 - inv_w
+            th2 = math.acos(c2)
+            m_tro = th1 * z1 / z2 + inv_w - inv_a2 - th2
+            msg = "tips clear each other while leaving mesh"
+        else:
+            m_tro = math.pi / z2  # tip circles do not intersect: the tips cannot foul
+            msg = "tip circles do not cross: no trochoid interference possible"
+        out.append(Finding("trochoid_interference", m_tro, msg + " (margin in rad)", unit="rad"))
+        # radial (trimming) interference: the pinion can be inserted radially
+        q1 = (1 - (math.cos(aa1) / math.cos(aa2)) ** 2) / (1 - (z1 / z2) ** 2)
+        q2 = ((math.cos(aa2) / math.cos(aa1)) ** 2 - 1) / ((z2 / z1) ** 2 - 1)
+        if 0 <= q1 <= 1 and 0 <= q2 <= 1:
+            t1 = math.asin(math.sqrt(q1))
+            t2 = math.asin(math.sqrt(q2))
+            m_rad = (t1 + inv_a1 - inv_w) - (z2 / z1) * (t2 + inv_a2 - inv_w)
+            msg = "pinion can be moved in radially (trimming)"
+        else:
+            m_rad = math.pi / z1
+            msg = "no radial (trimming) interference possible for these tip circles"
+        out.append(Finding("radial_interference", m_rad, msg + " (margin in rad)", unit="rad"))
+        return out
+
+
+def _equal_sliding_x1(g1: Gear, g2: Gear, total: float, tip_shortening: bool) -> float:
+    """x1 that balances the maximum specific sliding of both flanks for a fixed shift sum."""
+    from scipy.optimize import brentq
+
+    s = -1.0 if g2.internal else 1.0
+
+    def imbalance(x1: float) -> float:
+        x2 = total - x1 if s > 0 else total + x1
+        pair = GearPair(g1.with_(profile_shift=x1), g2.with_(profile_shift=x2), tip_shortening)
+        try:
+            a, b = pair.max_specific_sliding
+        except GearError:
+            return math.nan
+        return math.log(a) - math.log(b) if a > 0 and b > 0 else math.nan
+
+    grid = (
+        np.linspace(total / 2 - 1.5, total / 2 + 1.5, 61) if s > 0 else np.linspace(-1.5, 1.5, 61)
+    )
+    values = []
+    for x1 in grid:
+        with np.errstate(all="ignore"):
+            v = imbalance(float(x1))
+        values.append(v)
+    values = np.array(values)
+    ok = np.isfinite(values)
+    for i in range(len(grid) - 1):
+        if ok[i] and ok[i + 1] and values[i] * values[i + 1] <= 0:
+            return float(brentq(imbalance, grid[i], grid[i + 1], xtol=1e-12))
+    raise GearError(
+        f"no split of the shift sum {total:.4f} balances the specific sliding of z1 = {g1.teeth} "
+        f"and z2 = {g2.teeth}; use split='keep' or 'proportional'"
+    )
