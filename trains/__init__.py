@@ -1,5 +1,60 @@
-"""Gear trains: the Willis formula per carrier, solved generically (see docs/trains.md)."""
+"""Gear trains: the Willis formula per carrier, solved generically (see docs/trains.md).
 
+>>> from trains import Train
+>>> t = Train()
+>>> t.mesh("sun", "planet", teeth=(20, 30), carrier="arm")
+>>> t.mesh("planet", "ring", teeth=(30, 80), carrier="arm", internal=True)
+>>> t.ratio("sun", "arm", fixed=["ring"])
+Fraction(5, 1)
+"""
+
+from trains.catalog import (
+    bevel_differential,
+    biplanetary,
+    double_planet,
+    ferguson,
+    khv,
+    simple_planetary,
+    stepped_planetary,
+    strain_wave,
+    wolfrom,
+)
 from trains.errors import TrainError
+from trains.inertia import reduced_inertia
+from trains.power import (
+    PowerFlow,
+    RelationPower,
+    parallel_efficiency,
+    planetary_efficiency,
+    self_locking_range,
+    series_efficiency,
+)
+from trains.trajectory import point_path
+from trains.willis import IllConditionedTrainWarning, Motion, Relation, Structure, Train
 
-__all__ = ["TrainError"]
+# Kinematics and statics (issue 3). Planetary design and synthesis (issue 4) add their names here.
+__all__ = [
+    "IllConditionedTrainWarning",
+    "Motion",
+    "PowerFlow",
+    "Relation",
+    "RelationPower",
+    "Structure",
+    "Train",
+    "TrainError",
+    "bevel_differential",
+    "biplanetary",
+    "double_planet",
+    "ferguson",
+    "khv",
+    "parallel_efficiency",
+    "planetary_efficiency",
+    "point_path",
+    "reduced_inertia",
+    "self_locking_range",
+    "series_efficiency",
+    "simple_planetary",
+    "stepped_planetary",
+    "strain_wave",
+    "wolfrom",
+]

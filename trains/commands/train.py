@@ -1,0 +1,123 @@
+"""Solve a gear train read from a TOML file: speeds, ratios, planet bearing speeds, torques and
+efficiency.
+
+Example: ``geartrain train examples/train_closed_differential.toml --fixed ring --input sun=1500``.
+Speeds given as integers or decimals are exact; the TOML file's ``[run]`` table supplies defaults
+for every option.
+"""
+
+from __future__ import annotations
+
+import argparse
+from fractions import Fraction
+from typing import Any
+
+from trains.errors import TrainError
+from trains.willis import FRAME, Train
+
+HELP = "solve a gear train from a TOML file (speeds, ratios, torques, efficiency)"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", help="train description (TOML; see docs/trains.md)")
+    parser.add_argument(
+        "--fixed", action="append", default=None, metavar="MEMBER",
+        help="member held at speed 0 (repeat, or comma-separated)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--input", action="append", default=None, metavar="MEMBER=SPEED",
+        help="a driving member and its speed (repeat for a differential)",
+    )  # fmt: skip
+    parser.add_argument("--output", default=None, help="driven member (for ratios and torques)")
+    parser.add_argument(
+        "--efficiency", type=float, default=None, metavar="ETA",
+        help="efficiency of every mesh in its carrier frame (default 1, or the file's)",
+    )  # fmt: skip
+    parser.add_argument("--torque", type=float, default=1.0, help="input torque (default 1)")
+
+
+def _speed(text: str) -> Fraction:
+    try:
+        return Fraction(text.strip())
+    except (ValueError, ZeroDivisionError):
+        raise TrainError(f"speed {text!r} is not a number") from None
+
+
+def _parse_inputs(items: Any) -> dict[str, Fraction]:
+    if isinstance(items, dict):
+        return {str(k): _speed(str(v)) for k, v in items.items()}
+    out: dict[str, Fraction] = {}
+    for item in items or []:
+        if "=" not in item:
+            raise TrainError(f"--input must be MEMBER=SPEED, got {item!r}")
+        name, value = item.split("=", 1)
+        out[name.strip()] = _speed(value)
+    return out
+
+
+def _fmt(x: Any) -> str:
+    if isinstance(x, Fraction):
+        if x.denominator == 1:
+            return str(x.numerator)
+        return f"{float(x):.10g} (= {x})"
+    return f"{float(x):.10g}"
+
+
+def run(args: argparse.Namespace) -> int:
+    t = Train.from_toml(args.file)
+    run_defaults = t.run_defaults
+    fixed: list[str] = []
+    for f in args.fixed if args.fixed is not None else run_defaults.get("fixed", []):
+        fixed += [s.strip() for s in str(f).split(",") if s.strip()]
+    inputs = _parse_inputs(args.input if args.input is not None else run_defaults.get("input"))
+    output = args.output or run_defaults.get("output")
+    eta = args.efficiency if args.efficiency is not None else run_defaults.get("mesh_efficiency")
+    if not inputs:
+        raise TrainError("give at least one --input MEMBER=SPEED (or an input in the file's [run])")
+
+    s = t.structure
+    print(t.name or args.file)
+    print(
+        f"mobility {s.mobility} (Chebyshev {s.chebyshev} with {s.redundant} redundant"
+        f" constraint{'s' if s.redundant != 1 else ''}); fixed: {', '.join(fixed) or 'none'}"
+    )
+    motion = t.solve({**inputs, **{f: 0 for f in fixed if f != FRAME}})
+    width = max(len(m) for m in t.members)
+    print("\nspeeds")
+    for m in t.members:
+        print(f"  {m:<{width}s}  {_fmt(motion[m])}")
+    bearings = {}
+    for r in t.relations:
+        if r.kind != "couple" and r.carrier != FRAME:
+            for m in (r.a, r.b):
+                bearings.setdefault((m, r.carrier), motion.relative(m, r.carrier))
+    if bearings:
+        print("\nspeeds relative to carriers (bearing speeds)")
+        for (m, c), v in bearings.items():
+            print(f"  {m} on {c}: {_fmt(v)}")
+    first = next(iter(inputs))
+    print(f"\nratios i = w_{first} / w_member")
+    for m in t.members:
+        if m not in (FRAME, first) and motion[m] != 0:
+            print(f"  {first}/{m:<{width}s}  {_fmt(motion[first] / motion[m])}")
+    if output is None:
+        print("\n(no --output: torques and efficiency need the driven member)")
+        return 0
+    pf = t.power_flow(
+        list(inputs), output, fixed=fixed, mesh_efficiency=1.0 if eta is None else eta,
+        input_torque=args.torque, input_speed={k: float(v) for k, v in inputs.items()},
+    )  # fmt: skip
+    print(f"\npower flow: input {', '.join(inputs)} -> output {output}, mesh efficiency "
+          f"{1.0 if eta is None else eta}")  # fmt: skip
+    print(f"  {'member':<{width}s}  {'torque':>14s}  {'power':>14s}")
+    for m in t.members:
+        print(f"  {m:<{width}s}  {pf.torques[m]:14.6g}  {pf.powers[m]:14.6g}")
+    print(f"  {'relation':<16s} {'driver':>10s} {'power':>12s} {'loss':>12s}")
+    for r in pf.relations.values():
+        print(f"  {r.name:<16s} {r.driver or '-':>10s} {r.power:12.6g} {r.loss:12.6g}")
+    print(f"efficiency {pf.efficiency:.6g}")
+    if pf.self_locking:
+        print("SELF-LOCKING: the output cannot be driven from this input")
+    if pf.circulating_power > 0:
+        print(f"circulating power {pf.circulating_power:.6g} (input power {pf.input_power:.6g})")
+    return 0

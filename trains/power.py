@@ -1,0 +1,462 @@
+"""Statics and efficiency of gear trains: torques, mesh powers, losses, self-locking.
+
+Every relation of a :class:`~trains.willis.Train` is a lever: its ideal reaction puts the torques
+``lambda * (k_a, k_b, -(k_a + k_b))`` on its members ``a``, ``b`` and carrier ``c`` (the
+coefficients of the relation, so the torques balance and do no work in the allowed motion).
+Losses follow the relative-power rule (Kreines; standards.md §4; Ozols §14-5): in the frame of
+the carrier the relation is an ordinary mesh of efficiency ``eta``; the end that supplies power in
+that relative motion (``-tau_a (w_a - w_c) > 0``) drives it, and the torque at the driven end is
+``eta`` times its ideal value. Which end drives depends on the torques, so the signs are found by
+iteration: start from the ideal torques, take the drivers, solve, repeat until they do not change.
+
+This reproduces Ozols (14.26) with the corrected exponent ``k`` on the planetary efficiency, the
+self-locking range (14.27), the differential formulas (14.28)/(14.29) with the general sign rule
+``h = sign(M_1 (w_1 - w_H))`` (the digest's errata), the Kreines formulas of standards.md §4 and,
+for a fixed-axis train, the product of the mesh efficiencies (Ozols (14.10)).
+
+Examples
+--------
+>>> from trains import simple_planetary
+>>> pf = simple_planetary(20, 30, 80).power_flow("sun", "carrier", fixed=["ring"],
+...                                              mesh_efficiency=0.98)
+>>> round(pf.efficiency, 6), pf.self_locking
+(0.96832, False)
+>>> {m: round(t, 6) for m, t in pf.torques.items()}
+{'frame': 0.0, 'sun': 1.0, 'planet': 0.0, 'carrier': -4.8416, 'ring': 3.8416}
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from trains.errors import TrainError
+from trains.willis import FRAME, Motion, Train
+
+
+@dataclass(frozen=True)
+class RelationPower:
+    """Power through one relation (mesh, link or coupling).
+
+    Attributes
+    ----------
+    name : str
+        The relation's name.
+    driver : str or None
+        The end (member) that supplies power in the carrier frame; None without relative motion.
+    rolling_power : float
+        Power entering at the driver end in the carrier frame (Kreines' rolling power).
+    power : float
+        Absolute power passing through: the sum of the powers the members put into it.
+    loss : float
+        Power lost in it (``(1 - eta) * rolling_power``).
+    efficiency : float
+        The efficiency used for it.
+    """
+
+    name: str
+    driver: str | None
+    rolling_power: float
+    power: float
+    loss: float
+    efficiency: float
+
+
+@dataclass(frozen=True)
+class PowerFlow:
+    """Result of :func:`power_flow`.
+
+    Attributes
+    ----------
+    speeds : Motion
+        Speed of every member (floats).
+    torques : dict
+        External torque on every member (input drive, output load, the holding torque of fixed
+        members, the housing's reaction as ``"frame"``); they sum to zero.
+    powers : dict
+        ``torque * speed`` per member: positive where power enters the train.
+    relations : dict
+        :class:`RelationPower` per relation name.
+    input_power, output_power : float
+        Power supplied by the input(s); power delivered at the output.
+    efficiency : float
+        ``output_power / input_power``; negative means self-locking.
+    self_locking : bool
+        True when the output cannot be driven from the input (efficiency <= 0).
+    circulating_power : float
+        How much the largest power through a relation exceeds the input power (0 if none does):
+        the power circulating in a closed loop, as in closed differentials.
+    iterations : int
+        Sign iterations needed.
+    """
+
+    speeds: Motion
+    torques: dict[str, float]
+    powers: dict[str, float]
+    relations: dict[str, RelationPower]
+    input_power: float
+    output_power: float
+    efficiency: float
+    self_locking: bool
+    circulating_power: float
+    iterations: int
+
+    @property
+    def mesh_power(self) -> dict[str, float]:
+        """Absolute power through every relation, by name."""
+        return {n: r.power for n, r in self.relations.items()}
+
+    @property
+    def loss(self) -> float:
+        """Total power lost (input minus output)."""
+        return self.input_power - self.output_power
+
+    def __str__(self) -> str:
+        lines = [f"{'member':<12s} {'speed':>14s} {'torque':>14s} {'power':>14s}"]
+        for m in self.torques:
+            w = float(self.speeds[m])
+            lines.append(f"{m:<12s} {w:14.6g} {self.torques[m]:14.6g} {self.powers[m]:14.6g}")
+        lines.append(f"{'relation':<16s} {'driver':>10s} {'power':>12s} {'loss':>12s}")
+        for r in self.relations.values():
+            lines.append(f"{r.name:<16s} {r.driver or '-':>10s} {r.power:12.6g} {r.loss:12.6g}")
+        lines.append(f"efficiency {self.efficiency:.6g}" + ("  (SELF-LOCKING)" * self.self_locking))
+        if self.circulating_power > 0:
+            lines.append(f"circulating power {self.circulating_power:.6g}")
+        return "\n".join(lines)
+
+
+def _efficiencies(train: Train, mesh_efficiency: Any) -> list[float]:
+    rel = train.relations
+    if isinstance(mesh_efficiency, Mapping):
+        names = {r.name for r in rel}
+        for k in mesh_efficiency:
+            if k not in names:
+                raise TrainError(
+                    f"mesh_efficiency names unknown relation {k!r}; the relations are"
+                    f" {', '.join(r.name for r in rel)}"
+                )
+        etas = [1.0 if r.kind == "couple" else mesh_efficiency.get(r.name, 1.0) for r in rel]
+        etas = [mesh_efficiency.get(r.name, e) for r, e in zip(rel, etas, strict=True)]
+    else:
+        etas = [1.0 if r.kind == "couple" else mesh_efficiency for r in rel]
+    out = []
+    for r, e in zip(rel, etas, strict=True):
+        if isinstance(e, bool) or not isinstance(e, numbers.Real):
+            raise TrainError(f"efficiency of {r.name!r} must be a number, got {e!r}")
+        e = float(e)
+        if not (0.0 < e <= 1.0):
+            raise TrainError(f"efficiency of {r.name!r} must be in (0, 1], got {e}")
+        out.append(e)
+    return out
+
+
+def power_flow(
+    train: Train,
+    input: str | Sequence[str],
+    output: str,
+    fixed: Iterable[str] = (),
+    mesh_efficiency: float | Mapping[str, float] = 1.0,
+    input_torque: float = 1.0,
+    input_speed: float | Mapping[str, float] = 1.0,
+) -> PowerFlow:
+    """Torques, powers, losses and efficiency of a train driven at ``input``, loaded at ``output``.
+
+    Parameters
+    ----------
+    train : Train
+    input : str or sequence of str
+        The driving member, or several (a differential driven by two members, Ozols (14.28),
+        (14.29)).
+    output : str
+        The driven member.
+    fixed : iterable of str
+        Members held by the housing.
+    mesh_efficiency : float or mapping
+        Efficiency of every mesh and link in its carrier frame, or a mapping ``relation name ->
+        efficiency`` (missing relations are lossless). Couplings are lossless.
+    input_torque : float
+        Torque on the (first) input member; the result scales with it.
+    input_speed : float or mapping
+        Speed of the input, or ``{member: speed}`` for several inputs.
+
+    Returns
+    -------
+    PowerFlow
+
+    Raises
+    ------
+    TrainError
+        If the kinematics are not determined by the inputs and fixed members, the input does
+        no work, or the loss signs do not settle.
+
+    Examples
+    --------
+    Ozols example 14-3: the David mechanism (i_1H = 1/10000, eta_H = 0.98) is self-locking when
+    driven from gear 1, and 0.5 % efficient when driven from the carrier.
+
+    >>> from trains import stepped_planetary
+    >>> t = stepped_planetary(100, 101, 100, 99, meshes=("external", "external"))
+    >>> eta = {"1-2": 0.98}
+    >>> pf = t.power_flow("1", "H", fixed=["3"], mesh_efficiency=eta)
+    >>> pf.self_locking, round(pf.efficiency, 2)
+    (True, -203.06)
+    >>> round(t.power_flow("H", "1", fixed=["3"], mesh_efficiency=eta).efficiency, 6)
+    0.004976
+    """
+    inputs = [input] if isinstance(input, str) else list(input)
+    if not inputs:
+        raise TrainError("give at least one input member")
+    for m in (*inputs, output):
+        train._check_member(m)
+    fixed = [fixed] if isinstance(fixed, str) else list(fixed)
+    for f in fixed:
+        train._check_member(f)
+    if output in inputs or output in fixed or set(inputs) & set(fixed):
+        raise TrainError("input, output and fixed members must all differ")
+    if len(set(inputs)) != len(inputs):
+        raise TrainError(f"input members repeated: {inputs}")
+    if isinstance(input_speed, Mapping):
+        speeds = {m: input_speed[m] if m in input_speed else None for m in inputs}
+        missing = [m for m, v in speeds.items() if v is None]
+        if missing or set(input_speed) - set(inputs):
+            raise TrainError(
+                f"input_speed must give exactly the inputs {inputs}, got {list(input_speed)}"
+            )
+    elif len(inputs) == 1:
+        speeds = {inputs[0]: input_speed}
+    else:
+        raise TrainError("with several inputs, give input_speed as a mapping {member: speed}")
+    tq = float(input_torque)
+    if not math.isfinite(tq) or tq == 0:
+        raise TrainError(f"input_torque must be finite and non-zero, got {input_torque!r}")
+
+    given = {**speeds, **{f: 0 for f in fixed if f != FRAME}}
+    motion = train.solve(given)
+    w = {m: float(motion[m]) for m in train.members}
+    if not all(math.isfinite(x) for x in w.values()):
+        raise TrainError("speeds must be finite")
+    etas = _efficiencies(train, mesh_efficiency)
+
+    members = list(train.members)
+    row = {m: i for i, m in enumerate(members)}
+    rels = train.relations
+    nr = len(rels)
+    # unknown external torques: output, fixed members, frame, the inputs after the first
+    reacting = [output, *[f for f in fixed if f != FRAME], FRAME, *inputs[1:]]
+    ncol = nr + len(reacting)
+    rhs = np.zeros(len(members))
+    rhs[row[inputs[0]]] = -tq  # member balance: T_i + sum_j B_ji lambda_j = 0
+
+    rel_u = []
+    for r in rels:
+        if r.kind == "couple":
+            rel_u.append((0.0, 0.0))
+        else:
+            rel_u.append((w[r.a] - w[r.carrier], w[r.b] - w[r.carrier]))
+
+    def lever(j: int, driver: str | None) -> dict[str, float]:
+        r = rels[j]
+        ka, kb = float(r.k_a), float(r.k_b)
+        if driver == r.a:
+            kb *= etas[j]
+        elif driver == r.b:
+            ka *= etas[j]
+        if r.kind == "couple":
+            return {r.a: ka, r.b: kb}
+        out = {r.a: ka, r.b: kb}
+        out[r.carrier] = out.get(r.carrier, 0.0) - (ka + kb)
+        return out
+
+    def solve(drivers: list[str | None]) -> tuple[np.ndarray, list[dict[str, float]]]:
+        a = np.zeros((len(members), ncol))
+        levers = [lever(j, d) for j, d in enumerate(drivers)]
+        for j, lev in enumerate(levers):
+            for m, k in lev.items():
+                a[row[m], j] += k
+        for i, m in enumerate(reacting):
+            a[row[m], nr + i] = 1.0
+        x, *_ = np.linalg.lstsq(a, rhs, rcond=None)
+        resid = np.abs(a @ x - rhs).max() if len(rhs) else 0.0
+        if not np.all(np.isfinite(x)) or resid > 1e-9 * max(1.0, abs(tq)) * max(
+            1.0, np.abs(x).max()
+        ):
+            raise TrainError(
+                "the torques cannot balance: the train is not statically determined by the"
+                f" input {inputs}, output {output!r} and fixed members {fixed}"
+            )
+        return x, levers
+
+    def drivers_of(x: np.ndarray, levers: list[dict[str, float]]) -> list[str | None]:
+        out: list[str | None] = []
+        scale = abs(tq) * max(1.0, max(abs(v) for v in w.values()))
+        for j, r in enumerate(rels):
+            if r.kind == "couple":
+                out.append(None)
+                continue
+            ua, ub = rel_u[j]
+            pa = -x[j] * levers[j][r.a] * ua  # relative power into the relation at end a
+            pb = -x[j] * levers[j][r.b] * ub
+            tol = 1e-13 * scale
+            out.append(r.a if pa > tol else r.b if pb > tol else None)
+        return out
+
+    drivers: list[str | None] = [None] * nr
+    x, levers = solve(drivers)
+    seen = []
+    iteration = 1
+    for iteration in range(1, 4 * nr + 8):  # noqa: B007 - reported below
+        new = drivers_of(x, levers)
+        if new == drivers:
+            break
+        if new in seen:
+            raise TrainError(
+                f"the loss signs do not settle (relations {[r.name for r in rels]} alternate"
+                " drivers): the power flow is ambiguous at this operating point"
+            )
+        seen.append(drivers)
+        drivers = new
+        x, levers = solve(drivers)
+    else:  # pragma: no cover - bounded by the number of sign patterns tried
+        raise TrainError("the loss signs did not settle")
+
+    torques = {m: 0.0 for m in members}
+    torques[inputs[0]] = tq
+    tiny = 1e-13 * max(abs(tq), float(np.abs(x[nr:]).max(initial=0.0)))
+    for i, m in enumerate(reacting):
+        torques[m] = float(x[nr + i]) if abs(x[nr + i]) > tiny else 0.0  # round-off to 0
+    powers = {m: torques[m] * w[m] + 0.0 for m in members}  # no -0.0
+    p_in = sum(powers[m] for m in inputs)
+    if not p_in > 0:
+        raise TrainError(
+            f"the inputs {inputs} supply no power (input power {p_in:.6g}); reverse the input"
+            " torque or choose another input"
+        )
+    p_out = -powers[output]
+    relations: dict[str, RelationPower] = {}
+    for j, r in enumerate(rels):
+        lev = levers[j]
+        absolute = sum(max(0.0, -x[j] * k * w[m]) for m, k in lev.items())
+        d = drivers[j]
+        if d is None:
+            rolling = loss = 0.0
+        else:
+            u = rel_u[j][0] if d == r.a else rel_u[j][1]
+            rolling = float(-x[j] * lev[d] * u)
+            loss = (1.0 - etas[j]) * rolling
+        relations[r.name] = RelationPower(r.name, d, rolling, float(absolute), loss, etas[j])
+    eff = p_out / p_in
+    biggest = max((r.power for r in relations.values()), default=0.0)
+    circulating = biggest - p_in if biggest > p_in * (1 + 1e-9) else 0.0
+    return PowerFlow(
+        speeds=Motion(w),
+        torques=torques,
+        powers=powers,
+        relations=relations,
+        input_power=p_in,
+        output_power=p_out,
+        efficiency=eff,
+        self_locking=eff <= 0,
+        circulating_power=circulating,
+        iterations=iteration,
+    )
+
+
+# ------------------------------------------------------------------- closed forms (Ozols §14)
+
+
+def series_efficiency(*efficiencies: float) -> float:
+    """Efficiency of units in series, Ozols (14.10) / Joldasbekov (9.7): the product.
+
+    Examples
+    --------
+    Ozols example 14-1 (hoist: two spur stages 0.95 and a drum 0.90):
+
+    >>> round(series_efficiency(0.95, 0.95, 0.90), 5)
+    0.81225
+    """
+    return float(np.prod([float(e) for e in efficiencies]))
+
+
+def parallel_efficiency(
+    efficiencies: Sequence[float],
+    *,
+    input_power: Sequence[float] | None = None,
+    output_power: Sequence[float] | None = None,
+) -> float:
+    """Efficiency of branches in parallel, Ozols (14.12)/(14.13), Joldasbekov (9.8).
+
+    Give the power of each branch either at its input (``eta = sum(eta_i nu_i)``, nu = input
+    shares) or at its output (``eta = sum(N_i) / sum(N_i / eta_i)``).
+
+    Examples
+    --------
+    Ozols example 14-2: branches delivering 15 hp at 0.95 and 20 hp at 0.98.
+
+    >>> round(parallel_efficiency([0.95, 0.98], output_power=[15, 20]), 5)
+    0.96691
+    """
+    eta = np.asarray(efficiencies, dtype=float)
+    if (input_power is None) == (output_power is None):
+        raise TrainError("give exactly one of input_power and output_power")
+    if np.any(eta <= 0) or np.any(eta > 1):
+        raise TrainError(f"efficiencies must be in (0, 1], got {list(eta)}")
+    if input_power is not None:
+        p = np.asarray(input_power, dtype=float)
+        if p.shape != eta.shape or p.sum() <= 0:
+            raise TrainError("input_power must be one non-negative power per branch")
+        return float((eta * p).sum() / p.sum())
+    p = np.asarray(output_power, dtype=float)
+    if p.shape != eta.shape or p.sum() <= 0:
+        raise TrainError("output_power must be one non-negative power per branch")
+    return float(p.sum() / (p / eta).sum())
+
+
+def planetary_efficiency(ratio: Any, basic_efficiency: float, driver: str = "gear") -> float:
+    """Efficiency of a planetary train (gear 1, fixed gear n, carrier H), Ozols (14.26).
+
+    ``i_1H eta^k = 1 - (1 - i_1H) eta_H^h`` with ``k = +1`` when gear 1 drives (``driver =
+    "gear"``) and ``k = -1`` when the carrier drives; ``h = +1`` when gear 1 supplies power in
+    the carrier frame (for gear 1 driving: ``i_1H < 0`` or ``i_1H > 1``), else ``-1``. The
+    printed (14.26) has the exponent ``h`` on the left, a misprint (Ozols digest §5): only ``k``
+    follows from the derivation and reproduces example 14-3. A closed form to check
+    :func:`power_flow` against.
+
+    Examples
+    --------
+    >>> round(planetary_efficiency(4, 0.98), 5), round(planetary_efficiency(4, 0.98, "carrier"), 5)
+    (0.985, 0.98492)
+    """
+    i = float(ratio)
+    if i == 0 or not math.isfinite(i):
+        raise TrainError(f"the planetary ratio must be finite and non-zero, got {ratio!r}")
+    if driver not in ("gear", "carrier"):
+        raise TrainError(f"driver must be 'gear' or 'carrier', got {driver!r}")
+    k = 1 if driver == "gear" else -1
+    h = -1 if 0 < i < 1 else 1
+    h *= k
+    x = (1 - (1 - i) * basic_efficiency**h) / i
+    return x if k == 1 else 1 / x
+
+
+def self_locking_range(basic_efficiency: float) -> tuple[float, float]:
+    """Ratios ``i_1H`` for which a planetary train locks when gear 1 drives, Ozols (14.27).
+
+    ``1 - 1/eta_H < i_1H < 1 - eta_H``.
+
+    Examples
+    --------
+    Ozols example 14-3: ``-0.0204 < i_1H < 0.02`` for eta_H = 0.98.
+
+    >>> lo, hi = self_locking_range(0.98)
+    >>> round(lo, 4), round(hi, 4)
+    (-0.0204, 0.02)
+    """
+    e = float(basic_efficiency)
+    if not 0 < e <= 1:
+        raise TrainError(f"efficiency must be in (0, 1], got {basic_efficiency!r}")
+    return 1 - 1 / e, 1 - e
