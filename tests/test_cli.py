@@ -1,0 +1,108 @@
+"""The ``geartrain`` CLI: ``pair`` and ``demo`` (issue 2), called through trains.cli.main."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from trains.cli import main
+
+
+def _row(out: str, label: str) -> str:
+    """The value column(s) of the report row starting with ``label``."""
+    for line in out.splitlines():
+        if line.startswith(label):
+            return re.sub(r"^\[[^\]]*\]", "", line[len(label) :].strip()).strip()
+    raise AssertionError(f"no row {label!r} in:\n{out}")
+
+
+def _run(capsys, *argv) -> str:
+    assert main(list(argv)) == 0
+    return capsys.readouterr().out
+
+
+def test_pair_12_24_profile_shifted(capsys):
+    out = _run(capsys, "pair", "12", "24", "--module", "3", "--shift", "0.6", "0.36")
+    # peers.md (pygears, verified): 12/24, m 3, x 0.6/0.36 -> a_w = 56.49987 mm, alpha_w = 26.088
+    assert _row(out, "centre distance a_w") == "56.4999"
+    assert _row(out, "working pressure angle alpha_wt").startswith("26.088")
+    # y = (a_w - a_d)/m = (56.49987 - 54)/3 = 0.8333; k = y - (x1 + x2) = -0.1267 (standards §1.3)
+    assert _row(out, "centre distance modification y") == "0.8333"
+    assert _row(out, "tip alteration k").split() == ["-0.1267", "-0.1267"]
+    # KHK form d_a1 = d1 + 2 m (1 + y - x2) = 36 + 6 (1.8333 - 0.36) = 44.8397,
+    # d_a2 = 72 + 6 (1.8333 - 0.6) = 79.3997 (standards.md §1.3); d_f = d - 2 m (1.25 - x)
+    assert _row(out, "tip diameter d_a [mm]").split() == ["44.8397", "79.3997"]
+    assert _row(out, "root diameter d_f [mm]").split() == ["32.1000", "66.6600"]
+    # s_t = m (pi/2 + 2 x tan 20) = 3 (1.570796 + 0.436764) = 6.0227 (standards.md §1.4)
+    assert _row(out, "thickness at d, s_t [mm]").split()[0] == "6.0227"
+    assert _row(out, "ratio u = z2/z1") == "2.0000"
+    assert "contact ratio eps_alpha" in out and "mesh efficiency" in out
+    assert "max specific sliding" in out
+    for name in ("g1.undercut", "g2.pointed_tip", "contact_ratio", "tip_interference_2"):
+        assert re.search(rf"\[ok  \] {re.escape(name)}\s+margin [+]", out), name
+    assert "all conditions hold" in out
+
+
+def test_pair_contact_ratio_matches_gearpair(capsys):
+    from gears import Gear, GearPair
+
+    out = _run(capsys, "pair", "12", "28", "--shift", "0.3", "0.2")
+    # Joldasbekov §5.4 row 3: 12/28, x 0.3/0.2 -> epsilon_alpha = 1.36264 (pair_geometry doctest)
+    assert _row(out, "contact ratio eps_alpha") == "1.3626"
+    ref = GearPair(Gear(12, 1, profile_shift=0.3), Gear(28, 1, profile_shift=0.2))
+    assert _row(out, "mesh efficiency (f = 0.1)") == f"{ref.mesh_efficiency(0.1):.4f}"
+
+
+def test_pair_internal_helical_with_face_width(capsys):
+    out = _run(
+        capsys, "pair", "20", "80", "-m", "2", "--internal", "--helix", "15", "--face-width", "20"
+    )
+    # eps_beta = b sin(beta) / (pi m_n) = 20 sin 15 / (2 pi) = 0.8238 (Ozols 21.31)
+    assert _row(out, "overlap ratio eps_beta") == "0.8238"
+    # a_d = m_n (z2 - z1) / (2 cos beta) = 2 * 60 / (2 cos 15) = 62.1166 (standards.md §1.2)
+    assert _row(out, "centre distance a_w") == "62.1166"
+    assert "internal, right" in out
+    for name in ("involute_interference", "trochoid_interference", "radial_interference"):
+        assert name in out
+
+
+def test_pair_from_center_distance_round_trip(capsys):
+    out = _run(capsys, "pair", "12", "24", "-m", "3", "--center-distance", "56.5")
+    assert _row(out, "centre distance a_w") == "56.5000"
+    out = _run(
+        capsys, "pair", "12", "24", "-m", "3", "--shift", "0.6", "0", "--center-distance",
+        "56.49987", "--split", "keep",
+    )  # fmt: skip
+    # keeping x1 = 0.6 the rest is x2 = 0.36 (peers.md pygears example, inverted)
+    assert _row(out, "profile shift x").split() == ["0.6000", "0.3600"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["pair", "12", "24", "--module", "0"], "module = 0"),
+        (["pair", "0", "24"], "teeth = 0"),
+        (["pair", "30", "20", "--internal"], "z2"),
+        (["pair", "12", "24", "--center-distance", "10"], "centre distance 10"),
+        (["pair", "12", "24", "--pressure-angle", "50"], "pressure_angle"),
+    ],
+)
+def test_pair_errors_exit_2_with_the_gear_error(capsys, argv, message):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("geartrain pair: error: ")
+    assert message in err
+
+
+def test_demo_runs_the_default_pair(capsys):
+    out = _run(capsys, "demo")
+    assert "Profile-shifted spur pair 12/24" in out
+    assert _row(out, "centre distance a_w") == "56.4999"  # peers.md, pygears: 56.49987
+    assert "all conditions hold" in out
+
+
+def test_demo_sections_are_extensible():
+    from trains.commands import demo
+
+    assert all(callable(f) and isinstance(t, str) for t, f in demo.SECTIONS)
