@@ -106,8 +106,16 @@ class BasicRack:
 
     @classmethod
     def stub(cls, pressure_angle: float = 20.0) -> BasicRack:
-        """The textbooks' stub tooth: h_a* = 0.8, c* = 0.3 (Ozols §21-5, Joldasbekov §10)."""
-        return cls(pressure_angle, 0.8, 1.1, 0.0, name="stub 0.8")
+        """The textbooks' stub tooth: h_a* = 0.8, c* = 0.3 (Ozols §21-5, Joldasbekov §10).
+
+        The tool's tip round rho = c*/(1 - sin alpha) only forms the clearance and does not cut
+        the involute (Joldasbekov §8), so the straight flank reaches h_a* = 0.8 and
+        z_min = 2 * 0.8 / sin^2(20 deg) = 13.68 ("14", Ozols §21-5). A sharp-cornered tool
+        (rho = 0) would reach 1.1 m and undercut up to z = 18.8.
+        """
+        c = 0.3
+        rho = c / (1.0 - math.sin(math.radians(pressure_angle))) if 0 < pressure_angle < 45 else 0
+        return cls(pressure_angle, 0.8, 0.8 + c, rho, name="stub 0.8")
 
     def with_pressure_angle(self, pressure_angle: float) -> BasicRack:
         """The same rack at another pressure angle; the root radius is capped to fit the tool."""
