@@ -17,7 +17,9 @@ All formulas are numpy functions over arrays (:func:`pair_geometry` evaluates 10
 
 from __future__ import annotations
 
+import itertools
 import math
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from functools import cached_property
 from typing import NamedTuple
@@ -86,36 +88,85 @@ def pair_geometry(
     >>> round(float(g.contact_ratio), 5)
     1.36264
     """
-    s = _sigma(internal)
-    z1 = np.asarray(z1, float)
-    z2s = s * np.asarray(z2, float)  # signed tooth count of gear 2
-    x2s = s * np.asarray(x2, float)
-    m = np.asarray(module, float)
+    args = [np.asarray(v, float) for v in (z1, z2, module, x1, x2, pressure_angle, helix_angle)]
+    args += [np.asarray(addendum, float), np.asarray(internal, bool)]
+    shape = np.broadcast_shapes(*(v.shape for v in args))
+    n = math.prod(shape)
+    workers = min(_THREADS, n // _PARALLEL_MIN)
+    if workers <= 1:
+        return PairGeometry(*_pair_geometry_block(*args, tip_shortening))
+    # Large arrays: evaluate contiguous chunks on threads (numpy ufuncs release the GIL).
+    flat = [v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in args]
+    out = np.empty((len(PairGeometry._fields), n))
+    bounds = np.linspace(0, n, workers + 1).astype(int)
+
+    def work(i0: int, i1: int) -> None:
+        part = [v if v.ndim == 0 else v[i0:i1] for v in flat]
+        for row, value in zip(out, _pair_geometry_block(*part, tip_shortening), strict=True):
+            row[i0:i1] = value
+
+    for future in [_pool().submit(work, i0, i1) for i0, i1 in itertools.pairwise(bounds)]:
+        future.result()  # re-raises a GearError from any chunk
+    return PairGeometry(*(row.reshape(shape) for row in out))
+
+
+_THREADS = 2  # this machine's cores (standards.md §5); more threads only add overhead here
+_PARALLEL_MIN = 1 << 15  # pairs per thread below which one thread is faster
+_POOL: ThreadPoolExecutor | None = None
+
+
+def _pool() -> ThreadPoolExecutor:
+    global _POOL
+    if _POOL is None:
+        _POOL = ThreadPoolExecutor(_THREADS, thread_name_prefix="pair_geometry")
+    return _POOL
+
+
+def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendum, internal,
+                         tip_shortening):  # fmt: skip
+    """The formulas of :func:`pair_geometry` on one block of (broadcastable) arrays."""
+    external = not internal.any()
+    s = 1.0 if external else _sigma(internal)
     an = np.radians(pressure_angle)
+    tan_an = np.tan(an)
     cos_b = np.cos(np.radians(helix_angle))
-    at = np.arctan(np.tan(an) / cos_b)
-    inv_wt = 2.0 * np.tan(an) * (x1 + x2s) / (z1 + z2s) + inv(at)
+    at = np.arctan(tan_an / cos_b)
+    cos_at = np.cos(at)
+    z2s = z2 if external else s * z2  # signed tooth count of gear 2
+    x2s = x2 if external else s * x2
+    zs = z1 + z2s
+    xs = x1 + x2s
+    inv_wt = xs / zs
+    inv_wt *= 2.0 * tan_an
+    inv_wt += inv(at)
     awt = inv_inverse(inv_wt)
-    zsum = np.abs(z1 + z2s)
-    ratio = np.cos(at) / np.cos(awt)
-    a = zsum * m / (2.0 * cos_b) * ratio
-    y = zsum / (2.0 * cos_b) * (ratio - 1.0)
-    shift_sum = s * (x1 + x2s)  # x1 + x2 external, x2 - x1 internal
-    k = np.where(s > 0, np.minimum(y - shift_sum, 0.0), 0.0)
+    cos_wt = np.cos(awt)
+    tan_wt = np.tan(awt)
+    ratio = cos_at / cos_wt
+    half = np.abs(zs) / (2.0 * cos_b)
+    a = half * ratio * m
+    y = ratio - 1.0
+    y *= half
+    # k = y - (x1 + x2) when negative (DIN 3960), external pairs only
+    k = np.minimum(y - xs, 0.0) if external else np.where(s > 0, np.minimum(y - s * xs, 0.0), 0.0)
     if not tip_shortening:
         k = np.zeros_like(k)
     mt = m / cos_b
     d1 = z1 * mt
-    d2 = np.abs(z2s) * mt
-    da1 = d1 + 2.0 * m * (addendum + x1 + k)
-    da2 = d2 + 2.0 * s * m * (addendum + x2s + k)
-    rb1 = d1 * np.cos(at) / 2.0
-    rb2 = d2 * np.cos(at) / 2.0
-    tw = np.tan(awt)
-    eps = _contact_ratio(da1 / 2, da2 / 2, rb1, rb2, tw, s, np.pi * mt * np.cos(at))
-    return PairGeometry(
-        np.degrees(awt), a, y, k, da1, da2, 2 * rb1 / np.cos(awt), 2 * rb2 / np.cos(awt), eps
-    )
+    d2 = z2 * mt
+    da1 = addendum + x1
+    da1 += k
+    da1 *= 2.0 * m
+    da1 += d1
+    da2 = addendum + x2s
+    da2 += k
+    da2 *= 2.0 * m if external else 2.0 * s * m
+    da2 += d2
+    rb1 = d1 * (cos_at / 2.0)
+    rb2 = d2 * (cos_at / 2.0)
+    eps = _contact_ratio(da1 / 2, da2 / 2, rb1, rb2, tan_wt, s, np.pi * mt * cos_at)
+    two_over_cos_wt = 2.0 / cos_wt
+    return (np.degrees(awt), a, y, k, da1, da2, rb1 * two_over_cos_wt, rb2 * two_over_cos_wt, eps)
 
 
 def _line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):

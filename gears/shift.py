@@ -26,6 +26,11 @@ Each field is a signed margin, positive where the condition holds, zero on the l
 ``tip_interference_2``
     the same for gear 1's tip on gear 2's flank (Ozols lines 1-2; ``tip_interference_2``).
 
+Where a gear is undercut (``undercut_*`` < 0) its form circle is taken as the base circle, the
+involute's own limit (the vectorised :func:`gears.gear.form_diameter`); the exact trochoid
+crossing (:func:`gears.profile.undercut_form_diameter`) is a per-gear root-find and is not needed
+to draw the contour, because the undercut limit already excludes that region.
+
 Margins are made dimensionless (divided by the normal module) so a plot at any module is the
 same figure.
 """

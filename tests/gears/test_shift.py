@@ -104,6 +104,10 @@ def test_fields_agree_with_gearpair_check_pointwise(bc):
             "tip_interference_1": r["tip_interference"].margin,
             "tip_interference_2": r["tip_interference_2"].margin,
         }
+        if r["g1.undercut"].margin < 0 or r["g2.undercut"].margin < 0:
+            # undercut: Gear.form_diameter finds the trochoid crossing (gears.profile); the
+            # vectorised field uses the base circle there (documented in gears.shift)
+            del expect["tip_interference_1"], expect["tip_interference_2"]
         for name, value in expect.items():
             assert bc.margins[name][i, j] == pytest.approx(value, abs=1e-11), (name, x1, x2)
         assert bc.center_distance[i, j] == pytest.approx(pair.center_distance, abs=1e-11)
