@@ -193,6 +193,7 @@ class _Map:
     missing: int  # how many more independent speeds are needed
     constraints: tuple[tuple[tuple[Fraction, ...], tuple[int, ...]], ...]  # (c, relation ids)
     exact: bool  # all coefficients exact
+    amplification: float = 1.0  # relative change of the map per relative change of float data
 
     def matrix(self) -> np.ndarray:
         names = list(self.determined)
@@ -244,6 +245,12 @@ def _eliminate(
         if r == m:
             break
     return mat, pivots
+
+
+def _replace_amplification(mp: _Map, amplification: float) -> _Map:
+    from dataclasses import replace
+
+    return replace(mp, amplification=amplification)
 
 
 # --------------------------------------------------------------------------------- motion
@@ -601,8 +608,15 @@ class Train:
         cached = self._maps.get(known)
         if cached is not None:
             return cached
-        unknown = [m for m in self._members if m != FRAME and m not in known]
         rows = [r.coefficients for r in self._relations]
+        result = self._build_map(known, rows)
+        if not result.exact and result.determined:
+            result = _replace_amplification(result, self._sensitivity(known, result))
+        self._maps[known] = result
+        return result
+
+    def _build_map(self, known: tuple[str, ...], rows: list[dict[str, Any]]) -> _Map:
+        unknown = [m for m in self._members if m != FRAME and m not in known]
         mat, pivots = _eliminate(rows, unknown, list(known))
         nu, nk = len(unknown), len(known)
         pivot_cols = {c for c in pivots if c >= 0}
@@ -623,7 +637,7 @@ class Train:
                     constraints.append((cvec, rel))
         order = {n: i for i, n in enumerate(self._members)}
         determined = dict(sorted(determined.items(), key=lambda kv: order[kv[0]]))
-        result = _Map(
+        return _Map(
             known=known,
             determined=determined,
             free=tuple(sorted(free, key=order.__getitem__)),
@@ -632,24 +646,36 @@ class Train:
             constraints=tuple(constraints),
             exact=self.exact,
         )
-        self._maps[known] = result
-        return result
 
-    def _condition(self, known: tuple[str, ...]) -> float:
-        """2-norm condition number of the float system for the unknown members."""
-        unknown = [m for m in self._members if m != FRAME and m not in known]
-        if not unknown or not self._relations:
-            return 1.0
-        col = {n: i for i, n in enumerate(unknown)}
-        a = np.zeros((len(self._relations), len(unknown)))
-        for i, r in enumerate(self._relations):
-            for m, k in r.coefficients.items():
-                if m in col:
-                    a[i, col[m]] += float(k)
-        a /= np.maximum(np.abs(a).max(axis=1, keepdims=True), 1e-300)  # row equilibration
-        s = np.linalg.svd(a, compute_uv=False)
-        s = s[s > s[0] * 1e-15] if s.size and s[0] > 0 else s
-        return float(s[0] / s[-1]) if s.size else 1.0
+    def _sensitivity(self, known: tuple[str, ...], base: _Map) -> float:
+        """Relative change of the speed map per relative change of the float coefficients.
+
+        Float ratios carry a relative rounding of about 1e-16; a map that amplifies it by more
+        than ``CONDITION_LIMIT`` (a float basic ratio near 1) gives results with few correct
+        digits. Measured by perturbing every float coefficient by 2^-30 (two sign patterns).
+        """
+        delta = Fraction(1, 2**30)
+        worst = 0.0
+        for pattern in (1, -1):
+            rows = []
+            for j, r in enumerate(self._relations):
+                ka, kb = r.k_a, r.k_b
+                if not _exact(kb):
+                    kb = Fraction(kb) * (1 + delta * (pattern if j % 2 else 1))
+                if not _exact(ka):
+                    ka = Fraction(ka) * (1 + delta)
+                rows.append(Relation(r.kind, r.name, r.a, r.b, r.carrier, ka, kb).coefficients)
+            pert = self._build_map(known, rows)
+            for name, cs in base.determined.items():
+                cp = pert.determined.get(name)
+                if cp is None:  # a perturbation changes the rank: singular to working precision
+                    return math.inf
+                for a, b in zip(cs, cp, strict=True):  # entry-wise relative change
+                    if a != 0:
+                        worst = max(worst, float(abs(b - a) / abs(a) / delta))
+                    elif b != 0:
+                        return math.inf
+        return worst
 
     # ---- kinematics
 
@@ -741,16 +767,16 @@ class Train:
             out = {n: sum((c * w for c, w in zip(cs, vals, strict=True)), Fraction(0))
                    for n, cs in mp.determined.items()}  # fmt: skip
             return self._assemble(mp, dict(zip(mp.known, vals, strict=True)), out)
-        if not mp.exact:
-            cond = self._condition(mp.known)
-            if cond > CONDITION_LIMIT:
-                warnings.warn(
-                    f"the train's float relations are ill-conditioned (condition number"
-                    f" {cond:.2g}): results may have lost {math.log10(cond):.0f} digits; give the"
-                    " ratios as Fractions or strings like '9999/10000' for exact results",
-                    IllConditionedTrainWarning,
-                    stacklevel=3,
-                )
+        if not mp.exact and mp.amplification > CONDITION_LIMIT:
+            amp = mp.amplification
+            digits = "all" if math.isinf(amp) else f"{math.log10(amp):.0f}"
+            warnings.warn(
+                f"the train's float ratios are ill-conditioned (rounding amplified {amp:.2g}"
+                f" times): results may have lost {digits} of 16 digits; give the ratios as"
+                " Fractions or strings like '9999/10000' for exact results",
+                IllConditionedTrainWarning,
+                stacklevel=3,
+            )
         if kind == "float":
             vals = np.array([float(v) for v in values])
             if not np.all(np.isfinite(vals)):
