@@ -1,0 +1,613 @@
+"""Analytic tooth outlines: involute flanks, generated root fillet, undercut, tip and root arcs.
+
+The outline is what the generating tool leaves (standards.md §3.1; Joldasbekov §2.7-2.8, Ozols
+§21-6). The tool is the basic rack's mirror image (:class:`gears.rack.BasicRack`): straight flanks
+at the pressure angle, a tip land and tip rounds of radius rho_aP0. In the transverse section of a
+helical gear the rounds are ellipses (semi-axes rho/cos(beta) along the pitch line, rho across).
+
+**Envelope in closed form.** A tool point T = (u, v) (v measured from the tool reference line,
+positive away from the gear axis) with profile normal N is in contact at the roll angle where its
+normal passes through the pitch point I = (-r phi, -x m_n) (the meshing equation n . v12 = 0):
+
+    phi = ((v + x m_n) N_u / N_v - u) / r,    P = Rot(phi) (u + r phi, r + x m_n + v)
+
+(standards.md §3.1, rack kinematics). Applied to the straight flank it gives the involute; to the
+flat tip land, the root circle; to a circular tip round it gives the offset of the primary trochoid
+traced by the round's centre C(phi): the contact point lies on the line IC, so
+E = C + rho (C - I)/|C - I| with C' perpendicular to C - I, i.e. the offset curve
+E = C +- rho J C'/|C'| of standards.md §3.1. No sampling or iteration is involved.
+
+**Undercut.** When the tool's straight flank reaches below the line-of-action limit point N1
+(x < x_min), the fillet curve cuts the involute; the generated boundary is the outermost of the
+two (for each radius the larger space angle). The crossing is found by Brent's method on
+eta_fillet(t) - eta_involute(r(t)) (:func:`undercut_form_diameter`).
+
+**Internal gears** are modelled with the rack limit of the shaper cutter (a pinion-type cutter
+with infinitely many teeth): the flanks are exact involutes of the ring's base circle, as with
+any cutter; the root fillet is the envelope of the rack tool's tip round rolled on the ring's
+reference circle from the inside. A real shaper of z0 teeth leaves a slightly different fillet;
+:func:`gears.generate.shaper_outline` simulates it.
+
+**Sampling from a tolerance** (chordal deviation in mm): arcs by their sagitta,
+n = ceil(angle / (2 acos(1 - e/R))); the involute by its curvature radius rho = r_b t
+(t = tan alpha_y, the roll angle), chord sag r_b t dt^2 / 8 <= e, i.e. points uniform in
+w = t^(3/2) (standards.md §3.2, table "points per flank"); the fillet by its measured curvature
+(point density sqrt(kappa / 8e) per unit length), then refined by bisection until every chord
+midpoint is within ``e`` of the curve.
+
+**Backlash** is a thickness allowance: ``backlash`` j is the pair's normal (line-of-action)
+backlash; each gear takes half, so every flank is moved j/4 along its normal (the tool is widened
+by j/(4 cos alpha_t)). The transverse arc thickness at diameter d shrinks by j/(2 cos alpha_y).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+import shapely
+from scipy.optimize import brentq
+
+from gears.errors import GearError
+from gears.involute import inv
+
+__all__ = [
+    "ToothProfile",
+    "outline",
+    "tooth_profile",
+    "undercut_form_diameter",
+]
+
+_SAFETY = 0.9  # sample at 90 % of the tolerance so the measured deviation stays below it
+
+
+def _check_tolerance(tolerance: float) -> float:
+    t = float(tolerance)
+    if not (math.isfinite(t) and t > 0):
+        raise GearError(f"tolerance = {tolerance!r} mm; valid is a finite number > 0")
+    return t
+
+
+def arc_segments(radius: float, angle: float, tolerance: float) -> int:
+    """Segments for an arc of ``radius`` over ``angle`` rad with sagitta <= ``tolerance``.
+
+    >>> arc_segments(10.0, math.pi, 0.001)
+    111
+    """
+    if angle <= 0 or radius <= 0:
+        return 1
+    c = 1.0 - _SAFETY * tolerance / radius
+    step = 2.0 * math.acos(max(c, -1.0))
+    return max(1, math.ceil(angle / step))
+
+
+@dataclass(frozen=True)
+class RackTool:
+    """The generating rack in the transverse section (lengths in mm).
+
+    ``s = +1`` cuts an external gear (tool tip towards the axis), ``s = -1`` an internal one.
+    The right half of the tool tooth (u >= 0) is: tip land ``0 <= u <= u_c`` at
+    ``v = -s h``; a tip round, centre ``(u_c, v_c)``, semi-axes ``a`` (along u) and ``b``; the
+    straight flank ``u = c + s v tan(alpha_t)`` from ``v_f`` upwards.
+    """
+
+    r: float  # reference radius (transverse)
+    xm: float  # profile shift x m_n
+    s: float  # +1 external, -1 internal
+    tan_a: float  # tan alpha_t
+    c: float  # flank: u = c + s v tan_a (half tooth width at the tool reference line)
+    h: float  # tool addendum h_aP0 m_n
+    a: float  # round semi-axis along u
+    b: float  # round semi-axis along v
+    u_c: float
+    v_c: float
+    t_f: float  # round parameter where it meets the flank
+
+    @classmethod
+    def for_gear(cls, gear, backlash: float = 0.0) -> RackTool:
+        mn = gear.module
+        an = math.radians(gear.pressure_angle)
+        at = math.radians(gear.transverse_pressure_angle)
+        cb = math.cos(math.radians(gear.helix_angle))
+        s = -1.0 if gear.internal else 1.0
+        h = gear.rack.tool_addendum * mn
+        rho = gear.rack.tool_tip_radius * mn
+        delta = backlash / (4.0 * math.cos(at))
+        v_c = -s * (h - rho)
+        # tangency in the normal section, then stretched by 1/cos(beta) along the pitch line
+        u_c = (math.pi * mn / 4 - (h - rho) * math.tan(an) - rho / math.cos(an)) / cb + delta
+        a, b = rho / cb, rho
+        t_f = -math.atan(math.tan(at) * b / a) if rho > 0 else -at
+        return cls(
+            r=gear.reference_diameter / 2, xm=gear.profile_shift * mn, s=s, tan_a=math.tan(at),
+            c=math.pi * gear.transverse_module / 4 + delta, h=h, a=a, b=b, u_c=max(u_c, 0.0),
+            v_c=v_c, t_f=t_f,
+        )  # fmt: skip
+
+    @property
+    def v_f(self) -> float:
+        """Tool height where the round ends and the straight flank starts."""
+        return self.v_c + self.s * self.b * math.sin(self.t_f)
+
+    def envelope(self, u, v, nu, nv):
+        """Gear-frame points generated by tool points (u, v) with normals (nu, nv).
+
+        Returns ``(rho, eta, phi)``: radius, angle from the space centre line (clockwise, i.e.
+        into the right flank), roll angle of contact.
+        """
+        phi = ((v + self.xm) * nu / nv - u) / self.r
+        x0 = u + self.r * phi
+        y0 = self.r + self.xm + v
+        c, s_ = np.cos(phi), np.sin(phi)
+        px, py = c * x0 - s_ * y0, s_ * x0 + c * y0
+        return np.hypot(px, py), np.arctan2(px, py), phi
+
+    def round_points(self, t):
+        t = np.asarray(t, float)
+        u = self.u_c + self.a * np.cos(t)
+        v = self.v_c + self.s * self.b * np.sin(t)
+        return u, v, self.b * np.cos(t), self.s * self.a * np.sin(t)
+
+    def flank_points(self, v):
+        v = np.asarray(v, float)
+        u = self.c + self.s * v * self.tan_a
+        cos_a = 1.0 / math.sqrt(1.0 + self.tan_a**2)
+        return u, v, np.full_like(v, cos_a), np.full_like(v, -self.s * self.tan_a * cos_a)
+
+
+class ToothProfile:
+    """Exact half-space boundary of one gear, with sampling to a tolerance.
+
+    Parameters
+    ----------
+    gear : Gear
+        The gear (its transverse section is drawn).
+    backlash : float
+        Pair normal backlash in mm; this gear takes half (see the module docstring).
+
+    Notes
+    -----
+    Angles ``eta`` are measured from the centre line of a tooth space, positive into the flank
+    that lies clockwise of it; the tooth itself is centred at ``eta = pi/z``.
+    """
+
+    def __init__(self, gear, backlash: float = 0.0) -> None:
+        self.gear = gear
+        b = float(backlash)
+        if not (math.isfinite(b) and b >= 0):
+            raise GearError(f"backlash = {backlash!r} mm; valid is a finite number >= 0")
+        self.backlash = b
+        self.tool = RackTool.for_gear(gear, b)
+        self.z = gear.teeth
+        self.rb = gear.base_diameter / 2
+        self.ra = gear.tip_diameter / 2
+        self.rf = self.tool.r + self.tool.xm - self.tool.s * self.tool.h
+        self.alpha_t = math.radians(gear.transverse_pressure_angle)
+        t = self.tool
+        # space half-angle on the reference circle (tool half-width on the rolling line)
+        self.eta_p = (t.c - t.s * t.xm * t.tan_a) / t.r
+        self._validate()
+
+    # --- exact curves ----------------------------------------------------------------------
+    def eta_involute(self, rho):
+        """Space half-angle of the involute flank at radius ``rho`` (exact)."""
+        ay = np.arccos(np.clip(self.rb / np.asarray(rho, float), -1.0, 1.0))
+        return self.eta_p + self.tool.s * (inv(ay) - inv(self.alpha_t))
+
+    @property
+    def v_limit(self) -> float:
+        """Tool height of the interference point N1 (external gears); below it the straight
+        flank undercuts (Ozols §21-7)."""
+        t = self.tool
+        return -t.xm - t.r * math.sin(self.alpha_t) ** 2
+
+    @property
+    def undercut(self) -> bool:
+        t = self.tool
+        return t.s > 0 and t.v_f < self.v_limit - 1e-12 * self.gear.module
+
+    def fillet(self, tau):
+        """The fillet curve ``(rho, eta, phi)`` at parameter ``tau``.
+
+        ``0 <= tau <= 1`` runs over the tool round (tip land end to flank tangency); for an
+        undercut gear ``1 < tau <= 2`` continues over the straight flank down to N1's height.
+        """
+        t = self.tool
+        tau = np.asarray(tau, float)
+        on_round = tau <= 1.0
+        tr = -math.pi / 2 + np.minimum(tau, 1.0) * (t.t_f + math.pi / 2)
+        ur, vr, nur, nvr = t.round_points(tr)
+        vf = t.v_f + (np.maximum(tau, 1.0) - 1.0) * (self.v_limit - t.v_f)
+        uf, vff, nuf, nvf = t.flank_points(vf)
+        u = np.where(on_round, ur, uf)
+        v = np.where(on_round, vr, vff)
+        nu = np.where(on_round, nur, nuf)
+        nv = np.where(on_round, nvr, nvf)
+        return t.envelope(u, v, nu, nv)
+
+    @property
+    def has_round(self) -> bool:
+        return self.tool.a > 0
+
+    @cached_property
+    def tau_form(self) -> float:
+        """Fillet parameter where the flank (involute) takes over."""
+        if not self.undercut:
+            return self._tau_tangent()
+        tau = np.linspace(0.0, 2.0, 801)[:-1]
+        rho, eta, _ = self.fillet(tau)
+        above = rho >= self.rb
+        g = np.where(above, eta - self.eta_involute(np.maximum(rho, self.rb)), 1.0)
+        idx = np.flatnonzero((g[:-1] > 0) & (g[1:] <= 0))
+        if idx.size == 0:
+            raise GearError(
+                f"z = {self.z}, x = {self.gear.profile_shift:g}: the undercut fillet does not "
+                "meet the involute (the tooth is cut away); use a larger profile shift"
+            )
+        i = int(idx[0])
+
+        def f(x):
+            r_, e_, _ = self.fillet(x)
+            return float(e_ - self.eta_involute(max(float(r_), self.rb)))
+
+        return float(brentq(f, tau[i], tau[i + 1], xtol=1e-15, rtol=1e-15))
+
+    @cached_property
+    def _tangent_radius(self) -> float:
+        t = self.tool
+        u, v, nu, nv = t.flank_points(np.array([t.v_f]))
+        return float(t.envelope(u, v, nu, nv)[0][0])
+
+    def _tau_tangent(self) -> float:
+        """End of the fillet when it is tangent to the involute (no undercut).
+
+        The round's envelope may fold back just before the tangency (a swallowtail of a few
+        micro-radians, seen with the rack limit of internal gears); the fillet is then ended where
+        it first reaches the form radius, and the fold (inside the space by less than 1e-4 of the
+        module) is dropped.
+        """
+        tau = np.linspace(0.0, 1.0, 801)
+        rho = self.fillet(tau)[0] * self.tool.s
+        r_form = self._tangent_radius * self.tool.s
+        if np.all(np.diff(rho) >= 0):
+            return 1.0
+        idx = np.flatnonzero(rho[:-1] - r_form < 0)
+        hit = np.flatnonzero(rho[1:] - r_form >= 0)
+        first = int(hit[0]) if hit.size else len(tau) - 2
+        if first + 1 >= len(tau) - 1 or not idx.size:
+            return 1.0
+
+        def f(x):
+            return float(self.fillet(x)[0]) * self.tool.s - r_form
+
+        return float(brentq(f, tau[first], tau[first + 1], xtol=1e-15, rtol=1e-15))
+
+    @cached_property
+    def ring_fold(self) -> tuple[float, float] | None:
+        """Internal gears whose rack-limit fillet reaches beyond the root circle.
+
+        A rack tool rolled inside a ring digs outwards on both sides of its centre position, so
+        the round's envelope can pass the root circle and fold back. The part outside the root
+        circle (which a real cutter's tip circle never reaches) is clipped: the boundary runs
+        along the root circle to where the returning fillet branch crosses it (``tau_r``), back
+        along that branch to where it crosses the involute (``tau_x``), then up the involute.
+        Returns ``(tau_r, tau_x)`` or None when the fillet stays inside the root circle.
+        """
+        if self.tool.s > 0 or self._tangent_radius <= self.rf * (1 + 1e-12):
+            return None
+        tau = np.linspace(0.0, 1.0, 801)
+        rho, eta, _ = self.fillet(tau)
+        i_min = int(np.argmin(rho))
+        out = np.flatnonzero(rho[i_min:] >= self.rf)
+        j = i_min + int(out[0])
+
+        def fr(x):
+            return float(self.fillet(x)[0]) - self.rf
+
+        tau_r = float(brentq(fr, tau[j - 1], tau[j], xtol=1e-15, rtol=1e-15))
+        g = eta[: i_min + 1] - self.eta_involute(rho[: i_min + 1])
+        cross = np.flatnonzero((g[:-1] < 0) & (g[1:] >= 0))
+        if not cross.size:
+            raise GearError(
+                f"internal z = {self.z}, x = {self.gear.profile_shift:g}: the rack-limit fillet "
+                "does not meet the involute; use method='shaper'"
+            )
+        k = int(cross[-1])
+
+        def fx(x):
+            r_, e_, _ = self.fillet(x)
+            return float(e_ - self.eta_involute(r_))
+
+        tau_x = float(brentq(fx, tau[k], tau[k + 1], xtol=1e-15, rtol=1e-15))
+        return tau_r, tau_x
+
+    @cached_property
+    def form_radius(self) -> float:
+        """Radius where the involute starts (the fillet joins or cuts it)."""
+        if self.ring_fold is not None:
+            return float(self.fillet(self.ring_fold[1])[0])
+        if not self.undercut:
+            return self._tangent_radius
+        return float(self.fillet(self.tau_form)[0])
+
+    @cached_property
+    def tip_radius(self) -> float:
+        """Radius where the flank ends: the tip circle, or where the flanks meet (pointed)."""
+        half = math.pi / self.z
+        if self.tool.s * (half - self.eta_involute(self.ra)) >= 0 or self.tool.s < 0:
+            return self.ra
+        # external, pointed: eta_involute(r) = pi/z between the form and tip circles
+        return float(
+            brentq(
+                lambda r: float(self.eta_involute(r)) - half, self.form_radius, self.ra,
+                xtol=1e-14, rtol=1e-15,
+            )
+        )  # fmt: skip
+
+    def _validate(self) -> None:
+        g = self.gear
+        if self.ra <= self.rb:
+            raise GearError(
+                f"tip circle d_a = {2 * self.ra:.6g} mm lies inside the base circle "
+                f"d_b = {2 * self.rb:.6g} mm: no involute flank exists"
+                + (" (internal gear: use more teeth or a negative shift)" if g.internal else "")
+            )
+        if self.rf <= 0:
+            raise GearError(
+                f"root circle radius {self.rf:.6g} mm <= 0: z = {g.teeth} with x = "
+                f"{g.profile_shift:g} is too small for this tool"
+            )
+        half = math.pi / self.z
+        if self.tool.u_c / self.tool.r >= half:
+            raise GearError(f"z = {self.z}: the tool tip land is wider than the tooth pitch")
+        if self.tool.s < 0 and self.eta_involute(self.ra) >= half:
+            raise GearError(
+                f"internal gear teeth are pointed before the tip circle d_a = {2 * self.ra:.6g}"
+                " mm; use a smaller (or negative) profile shift or a larger tip diameter"
+            )
+        if self.tool.s > 0 and float(self.eta_involute(self.form_radius)) >= half:
+            raise GearError(
+                f"z = {self.z}, x = {g.profile_shift:g}: the tooth is pointed below its form "
+                "circle (no flank left); use a smaller profile shift"
+            )
+
+    # --- sampling --------------------------------------------------------------------------
+    def _involute_samples(self, r0: float, r1: float, tol: float) -> np.ndarray:
+        """Radii on the involute between r0 and r1 so that every chord sag <= tol.
+
+        Chord sag of a roll-angle step dt is r_b t dt^2 / 8 (rho = r_b t), so points are uniform
+        in w = t^(3/2): dw = 1.5 sqrt(8 tol / r_b).
+        """
+        t0 = math.sqrt(max(r0 * r0 - self.rb**2, 0.0)) / self.rb
+        t1 = math.sqrt(max(r1 * r1 - self.rb**2, 0.0)) / self.rb
+        w0, w1 = t0**1.5, t1**1.5
+        dw = 1.5 * math.sqrt(8.0 * _SAFETY * tol / self.rb)
+        n = max(1, math.ceil(abs(w1 - w0) / dw))
+        t = np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
+        rho = self.rb * np.sqrt(1.0 + t * t)
+        rho[0], rho[-1] = r0, r1
+        return rho
+
+    def _fillet_samples(self, tau0: float, tau1: float, tol: float):
+        """Fillet parameters with chord deviation <= tol: density from curvature, then bisect."""
+        if tau1 <= tau0:
+            return np.array([tau0])
+        dense = np.linspace(tau0, tau1, 257)
+        rho, eta, _ = self.fillet(dense)
+        x, y = rho * np.sin(eta), rho * np.cos(eta)
+        ds = np.hypot(np.diff(x), np.diff(y))
+        heading = np.unwrap(np.arctan2(np.diff(y), np.diff(x)))
+        # turning per segment ~ kappa ds; points needed per segment = sqrt(kappa/8e) ds
+        turn = np.abs(np.diff(heading))
+        turn = np.concatenate([turn[:1], 0.5 * (turn[:-1] + turn[1:]), turn[-1:]])
+        need = np.sqrt(turn * ds / (8.0 * _SAFETY * tol))
+        cum = np.concatenate([[0.0], np.cumsum(need)])
+        n = max(1, math.ceil(cum[-1]))
+        taus = np.interp(np.linspace(0.0, cum[-1], n + 1), cum, dense)
+        taus[0], taus[-1] = tau0, tau1
+        for _ in range(30):
+            mid = 0.5 * (taus[:-1] + taus[1:])
+            p = self._xy(*self.fillet(taus)[:2])
+            q = self._xy(*self.fillet(mid)[:2])
+            dev = _point_segment_distance(q, p[:-1], p[1:])
+            bad = dev > _SAFETY * tol
+            if not bad.any():
+                break
+            taus = np.sort(np.concatenate([taus, mid[bad]]))
+        return taus
+
+    @staticmethod
+    def _xy(rho, eta):
+        return np.stack([rho * np.sin(eta), rho * np.cos(eta)], axis=-1)
+
+    def half_space(self, tolerance: float = 0.001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Sampled boundary from the space centre (root) to the tooth centre (tip).
+
+        Returns
+        -------
+        rho, eta : ndarray
+            Polar points (radius, angle from the space centre line).
+        kind : ndarray of int
+            Curve each point starts: 0 root arc, 1 fillet, 2 involute, 3 tip arc.
+        """
+        tol = _check_tolerance(tolerance)
+        t = self.tool
+        rhos, etas, kinds = [], [], []
+        # root arc, from the space centre to the end of the tip land's image
+        eta_land = t.u_c / t.r
+        fold = self.ring_fold
+        if fold is not None:
+            eta_land = float(self.fillet(fold[0])[1])
+        if eta_land > 0:
+            n = arc_segments(self.rf, eta_land, tol)
+            rhos.append(np.full(n, self.rf))
+            etas.append(np.linspace(0.0, eta_land, n + 1)[:-1])
+            kinds.append(np.zeros(n, int))
+        if fold is not None:
+            taus = self._fillet_samples(fold[1], fold[0], tol)[::-1][:-1]
+            rho, eta, _ = self.fillet(taus)
+            rhos.append(rho)
+            etas.append(eta)
+            kinds.append(np.ones(len(taus), int))
+        elif self.has_round or self.undercut:
+            taus = self._fillet_samples(0.0, self.tau_form, tol)[:-1]
+            rho, eta, _ = self.fillet(taus)
+            rhos.append(rho)
+            etas.append(eta)
+            kinds.append(np.ones(len(taus), int))
+        r_top = self.tip_radius
+        rho = self._involute_samples(self.form_radius, r_top, tol)
+        half = math.pi / self.z
+        if r_top < self.ra:  # pointed: the flank ends on the tooth centre line
+            rhos.append(rho)
+            etas.append(self.eta_involute(rho))
+            kinds.append(np.full(len(rho), 2))
+        else:
+            rhos.append(rho[:-1])
+            etas.append(self.eta_involute(rho[:-1]))
+            kinds.append(np.full(len(rho) - 1, 2))
+            e0 = float(self.eta_involute(self.ra))
+            n = arc_segments(self.ra, half - e0, tol)
+            rhos.append(np.full(n + 1, self.ra))
+            etas.append(np.linspace(e0, half, n + 1))
+            kinds.append(np.full(n + 1, 3))
+        return np.concatenate(rhos), np.concatenate(etas), np.concatenate(kinds)
+
+    def tooth_points(self, tolerance: float = 0.001) -> np.ndarray:
+        """One tooth, centred on the +x axis, from the space centre at -pi/z to the space centre
+        at +pi/z, counter-clockwise (for an internal gear the 'tooth' is the ring's)."""
+        rho, eta, _ = self.half_space(tolerance)
+        half = math.pi / self.z
+        theta = half - eta  # angle from the tooth centre line, on the counter-clockwise flank
+        # counter-clockwise flank runs tip -> root when walking counter-clockwise
+        ccw = np.stack([rho * np.cos(theta), rho * np.sin(theta)], axis=-1)[::-1]
+        cw = ccw[::-1] * np.array([1.0, -1.0])
+        return np.concatenate([cw[:-1], ccw])
+
+    def ring(self, tolerance: float = 0.001, angle: float = 0.0) -> np.ndarray:
+        """The whole toothed boundary (closed ring without the repeated point), counter-clockwise,
+        with tooth 0 centred at ``angle`` radians."""
+        tooth = self.tooth_points(tolerance)[:-1]
+        step = 2 * math.pi / self.z
+        angles = angle + step * np.arange(self.z)
+        c, s = np.cos(angles)[:, None], np.sin(angles)[:, None]
+        x = c * tooth[None, :, 0] - s * tooth[None, :, 1]
+        y = s * tooth[None, :, 0] + c * tooth[None, :, 1]
+        return np.stack([x.ravel(), y.ravel()], axis=-1)
+
+
+def _point_segment_distance(q, a, b):
+    ab = b - a
+    den = np.einsum("ij,ij->i", ab, ab)
+    t = np.clip(np.einsum("ij,ij->i", q - a, ab) / np.where(den > 0, den, 1.0), 0.0, 1.0)
+    d = a + t[:, None] * ab - q
+    return np.hypot(d[:, 0], d[:, 1])
+
+
+def tooth_profile(gear, backlash: float = 0.0) -> ToothProfile:
+    """The exact profile of ``gear`` (see :class:`ToothProfile`)."""
+    return ToothProfile(gear, backlash)
+
+
+def undercut_form_diameter(gear) -> float:
+    """Diameter where the generated fillet meets (or cuts) the involute, in mm.
+
+    For an undercut gear this is where the trochoid offset crosses the involute (found by Brent's
+    method, not by sampling); otherwise it is the tangency point, equal to the closed form of
+    standards.md §1.7.
+
+    Examples
+    --------
+    >>> from gears import Gear
+    >>> round(undercut_form_diameter(Gear(20, 2)), 4)   # standards.md §1.7: 37.6401
+    37.6401
+    >>> d = undercut_form_diameter(Gear(8, 1))          # undercut: above the base circle
+    >>> round(d, 4) > round(Gear(8, 1).base_diameter, 4)
+    True
+    """
+    return 2.0 * ToothProfile(gear).form_radius
+
+
+def circle_points(radius: float, tolerance: float, ccw: bool = True) -> np.ndarray:
+    """A full circle sampled so that its sagitta stays below ``tolerance``."""
+    n = max(8, arc_segments(radius, 2 * math.pi, tolerance))
+    a = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+    if not ccw:
+        a = -a
+    return radius * np.stack([np.cos(a), np.sin(a)], axis=-1)
+
+
+def default_rim(gear) -> float:
+    """Default rim width of an internal gear: 3 m_n outside its root circle."""
+    return 3.0 * gear.module
+
+
+def outline(
+    gear, tolerance: float = 0.001, backlash: float = 0.0, bore: float | None = None,
+    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0),
+) -> shapely.Polygon:  # fmt: skip
+    """Analytic outline of ``gear`` as a shapely Polygon (transverse section, mm).
+
+    Parameters
+    ----------
+    gear : Gear
+    tolerance : float
+        Largest chordal deviation from the exact curves, mm.
+    backlash : float
+        Normal backlash of the pair, mm; this gear's teeth are thinned by half of it.
+    bore : float or None
+        Bore diameter of an external gear (a hole), mm.
+    rim : float or None
+        Rim width of an internal gear outside its root circle, mm (default 3 m_n).
+    angle : float
+        Rotation in degrees; at 0 tooth 0 is centred on the +x axis (a ring's tooth too).
+    center : (float, float)
+        Position of the gear axis.
+
+    Returns
+    -------
+    shapely.Polygon
+        External gear: the toothed disc (with the bore as a hole). Internal gear: the ring, its
+        outer circle at d_f + 2 rim, the toothed boundary as its hole.
+
+    Examples
+    --------
+    >>> from gears import Gear
+    >>> p = outline(Gear(20, 1), tolerance=0.01)
+    >>> p.is_valid, round(p.area / (math.pi * 10**2), 2)
+    (True, 1.0)
+    """
+    tol = _check_tolerance(tolerance)
+    prof = ToothProfile(gear, backlash)
+    pts = prof.ring(tol, math.radians(angle))
+    return assemble(gear, pts, tol, bore, rim, center, prof.rf)
+
+
+def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
+    """Build the gear polygon from its toothed boundary ``pts`` (external disc or ring)."""
+    cx, cy = center
+    pts = pts + np.array([cx, cy])
+    if gear.internal:
+        width = default_rim(gear) if rim is None else float(rim)
+        if not (math.isfinite(width) and width > 0):
+            raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
+        outer = circle_points(root_radius + width, tol) + np.array([cx, cy])
+        poly = shapely.Polygon(outer, holes=[pts[::-1]])
+    else:
+        holes = []
+        if bore is not None:
+            bd = float(bore)
+            if not (math.isfinite(bd) and 0 < bd < 2 * root_radius):
+                raise GearError(
+                    f"bore = {bore!r} mm; valid is 0 < bore < root diameter {2 * root_radius:.6g}"
+                )
+            holes.append(circle_points(bd / 2, tol, ccw=False) + np.array([cx, cy]))
+        poly = shapely.Polygon(pts, holes=holes)
+    if not poly.is_valid:
+        raise GearError(
+            f"the outline of z = {gear.teeth}, x = {gear.profile_shift:g} is not a valid polygon "
+            f"({shapely.is_valid_reason(poly)}); the teeth may be cut away by undercut"
+        )
+    return poly
