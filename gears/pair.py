@@ -92,26 +92,28 @@ def pair_geometry(
     args += [np.asarray(addendum, float), np.asarray(internal, bool)]
     shape = np.broadcast_shapes(*(v.shape for v in args))
     n = math.prod(shape)
-    workers = min(_THREADS, n // _PARALLEL_MIN)
-    if workers <= 1:
+    if n < 2 * _CHUNK:
         return PairGeometry(*_pair_geometry_block(*args, tip_shortening))
-    # Large arrays: evaluate contiguous chunks on threads (numpy ufuncs release the GIL).
+    # Large arrays: blocks of _CHUNK pairs, whose temporaries stay in cache, shared by _THREADS
+    # threads (numpy ufuncs release the GIL). Measured in docs/performance.md.
     flat = [v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in args]
     out = np.empty((len(PairGeometry._fields), n))
-    bounds = np.linspace(0, n, workers + 1).astype(int)
 
-    def work(i0: int, i1: int) -> None:
+    def work(bounds: tuple[int, int]) -> None:
+        i0, i1 = bounds
         part = [v if v.ndim == 0 else v[i0:i1] for v in flat]
         for row, value in zip(out, _pair_geometry_block(*part, tip_shortening), strict=True):
             row[i0:i1] = value
 
-    for future in [_pool().submit(work, i0, i1) for i0, i1 in itertools.pairwise(bounds)]:
-        future.result()  # re-raises a GearError from any chunk
+    blocks = list(itertools.pairwise([*range(0, n, _CHUNK), n]))
+    for _ in _pool().map(work, blocks):  # re-raises a GearError from any block
+        pass
     return PairGeometry(*(row.reshape(shape) for row in out))
 
 
-_THREADS = 2  # this machine's cores (standards.md §5); more threads only add overhead here
-_PARALLEL_MIN = 1 << 15  # pairs per thread below which one thread is faster
+_THREADS = 2  # this machine's cores (standards.md §5)
+_CHUNK = 1 << 15  # pairs per block: 32768 beat 16384 and 65536 (docs/performance.md)
+_PARALLEL_MIN = _CHUNK  # arrays of at least 2 blocks take the blocked, threaded path
 _POOL: ThreadPoolExecutor | None = None
 
 
