@@ -1,0 +1,16 @@
+"""Wolfrom (3K) train: high ratio from a stepped planet between two rings (Ozols Fig 7-9a).
+
+Design task: ratio and efficiency of sun 20 / planet 30-29 / rings 80 (fixed) and 77 (output);
+the carrier idles. Power circulates inside, so the efficiency is far below one mesh's.
+"""
+
+from fractions import Fraction
+
+from trains import wolfrom
+
+t = wolfrom(sun=20, planet=30, ring1=80, planet2=29, ring2=77)
+i = t.ratio("sun", "ring2", fixed=["ring1"])
+print(t.name, "| i_sun,ring2 =", i, f"= {float(i):.2f}")
+assert i == (1 + Fraction(80, 20)) / (1 - Fraction(29 * 80, 77 * 30))  # Ozols §2.2
+pf = t.power_flow("sun", "ring2", fixed=["ring1"], mesh_efficiency=0.98)
+print(f"efficiency {pf.efficiency:.4f}, circulating power {pf.circulating_power:.3f}")
