@@ -19,7 +19,6 @@ angles = t.solve(H=np.ones_like(time), **{"3": 0}).integrate(time)
 arms = [("H", r[60] + r[20]), ("2", r[10] + r[5]), ("1", 4.0)]
 x, y = point_path(angles, arms)
 np.savetxt("biplanetary_path.csv", np.column_stack([x, y]), delimiter=",", header="x,y")
-print(
-    f"path of {len(x)} points, radius from {np.hypot(x, y).min():.2f} to {np.hypot(x, y).max():.2f} mm"
-)
+rho = np.hypot(x, y)
+print(f"path of {len(x)} points, radius from {rho.min():.2f} to {rho.max():.2f} mm")
 assert abs(rho.max() - (80 + 15 + 4)) < 1e-3
