@@ -105,7 +105,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     pf = t.power_flow(
         list(inputs), output, fixed=fixed, mesh_efficiency=1.0 if eta is None else eta,
-        input_torque=args.torque, input_speed={k: float(v) for k, v in inputs.items()},
+        input_torque=args.torque if inputs[first] >= 0 else -args.torque,  # input supplies power
+        input_speed={k: float(v) for k, v in inputs.items()},
     )  # fmt: skip
     print(f"\npower flow: input {', '.join(inputs)} -> output {output}, mesh efficiency "
           f"{1.0 if eta is None else eta}")  # fmt: skip
