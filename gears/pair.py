@@ -141,6 +141,15 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
     inv_wt = xs / zs
     inv_wt *= 2.0 * tan_an
     inv_wt += inv(at)
+    if not np.all(inv_wt >= 0.0):
+        bad = ~(inv_wt >= 0.0)
+        lowest = -np.broadcast_to(inv(at) * np.abs(zs) / (2.0 * tan_an), bad.shape)[bad]
+        given = np.broadcast_to(s * xs, bad.shape)[bad][:3].tolist()
+        raise GearError(
+            f"shift sum x1 + x2 (internal: x2 - x1) = {given} "
+            f"is too negative: a working pressure angle exists only above "
+            f"{np.ravel(lowest)[:3].tolist()} (inv alpha_wt >= 0)"
+        )
     awt = inv_inverse(inv_wt)
     cos_wt = np.cos(awt)
     tan_wt = np.tan(awt)
