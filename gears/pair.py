@@ -470,6 +470,17 @@ class GearPair:
     @cached_property
     def _geometry(self) -> PairGeometry:
         g1, g2 = self.g1, self.g2
+        s = self._sigma
+        at = math.radians(g1.transverse_pressure_angle)
+        total = g2.profile_shift + s * g1.profile_shift  # x1 + x2, internal x2 - x1
+        dz = g2.teeth + s * g1.teeth
+        if 2 * math.tan(math.radians(g1.pressure_angle)) * total / dz + float(inv(at)) < 0:
+            name = "x2 - x1" if self.internal else "x1 + x2"
+            lowest = -dz * float(inv(at)) / (2 * math.tan(math.radians(g1.pressure_angle)))
+            raise GearError(
+                f"{name} = {total:g} is too negative for {dz} teeth: no working pressure angle "
+                f"exists (inv alpha_wt < 0); valid is {name} > {lowest:.4f}"
+            )
         return pair_geometry(
             g1.teeth, g2.teeth, g1.module, g1.profile_shift, g2.profile_shift,
             g1.pressure_angle, g1.helix_angle, g2.internal, g1.rack.addendum,
@@ -716,26 +727,30 @@ class GearPair:
         # trochoid interference: theta1 z1/z2 + inv alpha_wt - inv alpha_a2 >= theta2
         c1 = (ra2 * ra2 - ra1 * ra1 - a * a) / (2 * a * ra1)
         c2 = (a * a + ra2 * ra2 - ra1 * ra1) / (2 * a * ra2)
-        if abs(c1) <= 1 and abs(c2) <= 1:
-            th1 = math.acos(c1) + inv_a1 - inv_w
-            th2 = math.acos(c2)
+        if ra2 >= a + ra1:  # the ring's tip circle encloses the pinion's: the tips never meet
+            m_tro = math.pi / z2
+            msg = "tip circles do not cross: no trochoid interference possible"
+        else:
+            th1 = math.acos(min(max(c1, -1.0), 1.0)) + inv_a1 - inv_w
+            th2 = math.acos(min(max(c2, -1.0), 1.0))
             m_tro = th1 * z1 / z2 + inv_w - inv_a2 - th2
             msg = "tips clear each other while leaving mesh"
-        else:
-            m_tro = math.pi / z2  # tip circles do not intersect: the tips cannot foul
-            msg = "tip circles do not cross: no trochoid interference possible"
+            if ra1 >= a + ra2:  # the ring's tip circle lies inside the pinion's: teeth overlap
+                m_tro = min(m_tro, (a + ra2 - ra1) / ra2)
+                msg = "the ring's tip circle lies inside the pinion's: the tips foul"
         out.append(Finding("trochoid_interference", m_tro, msg + " (margin in rad)", unit="rad"))
         # radial (trimming) interference: the pinion can be inserted radially
         q1 = (1 - (math.cos(aa1) / math.cos(aa2)) ** 2) / (1 - (z1 / z2) ** 2)
         q2 = ((math.cos(aa2) / math.cos(aa1)) ** 2 - 1) / ((z2 / z1) ** 2 - 1)
-        if 0 <= q1 <= 1 and 0 <= q2 <= 1:
-            t1 = math.asin(math.sqrt(q1))
-            t2 = math.asin(math.sqrt(q2))
-            m_rad = (t1 + inv_a1 - inv_w) - (z2 / z1) * (t2 + inv_a2 - inv_w)
-            msg = "pinion can be moved in radially (trimming)"
-        else:
-            m_rad = math.pi / z1
-            msg = "no radial (trimming) interference possible for these tip circles"
+        # q > 1 exactly when r_a1 > r_a2 and q < 0 when r_a1/z1 < r_a2/z2; clamping keeps the
+        # margin continuous across both edges of the formula's domain
+        t1 = math.asin(math.sqrt(min(max(q1, 0.0), 1.0)))
+        t2 = math.asin(math.sqrt(min(max(q2, 0.0), 1.0)))
+        m_rad = (t1 + inv_a1 - inv_w) - (z2 / z1) * (t2 + inv_a2 - inv_w)
+        msg = "pinion can be moved in radially (trimming)"
+        if ra1 > ra2:  # the pinion's tips reach beyond the ring's tip circle: no radial entry
+            m_rad = min(m_rad, (ra2 - ra1) / ra1)
+            msg = "the pinion's tip circle exceeds the ring's: it cannot be moved in radially"
         out.append(Finding("radial_interference", m_rad, msg + " (margin in rad)", unit="rad"))
         return out
 
