@@ -739,11 +739,10 @@ class Planetary:
     ) -> float:
         """Efficiency input -> output by the relative-power (Kreines/Müller) method.
 
-        In the carrier frame the stage is an ordinary train of efficiency eta0, the product of
-        its mesh efficiencies (``mesh_efficiency`` for every mesh, or each GearPair's Ozols
-        (14.25) value with ``friction``). Whichever central gear drives in relative motion loses
-        the factor eta0 (standards.md §4; Ozols (14.26)). A negative value means self-locking in
-        that direction.
+        Solved by :meth:`trains.Train.power_flow` on :attr:`train`: in the carrier frame each
+        mesh has efficiency ``mesh_efficiency`` (or its GearPair's Ozols (14.25) value with
+        ``friction``), lost at whichever end drives in relative motion (standards.md §4; Ozols
+        (14.26)). A negative value means self-locking in that direction.
 
         Examples
         --------
@@ -759,39 +758,14 @@ class Planetary:
             None if output is None else self._member(output),
         )
         if mesh_efficiency is None:
-            eta0 = math.prod(p.mesh_efficiency(friction) for p in self._pairs.values())
+            etas = {n: p.mesh_efficiency(friction) for n, p in self._pairs.items()}
         else:
-            eta0 = float(mesh_efficiency) ** len(self._pairs)
-        if not (0 < eta0 <= 1):
-            raise TrainError(f"mesh efficiency product {eta0:g} must be in (0, 1]")
-        i0 = float(self.basic_ratio)
-        w = {fixed: 0.0, input: 1.0}
-        c = _coefficients(*basic_ratio(self.scheme, *self._z()))
-        w[output] = -float(c[input]) / float(c[output]) if c[output] != 0 else math.nan
-        if not math.isfinite(w[output]):
-            raise TrainError(f"{output} cannot turn with {fixed} fixed: no efficiency")
-        rel1 = w["sun"] - w["carrier"]
-        rel3 = w["ring"] - w["carrier"]
-        # torques T1, T3, TH with T1 + T3 + TH = 0 and the relative-power rule, T_input = 1
-        # ideal: T3 = -i0 T1; decide who drives in relative motion from the ideal torques
-        torque = {}
-        if abs(rel1) < 1e-300 and abs(rel3) < 1e-300:
-            return 1.0  # the stage turns as a block: no relative motion, no mesh loss
-        for factor in (eta0, 1 / eta0):
-            # T3 = -i0 * factor * T1  (factor eta0 when gear 1 drives in relative motion)
-            ratio31 = -i0 * factor
-            # express all torques through T1: T3 = ratio31 T1, TH = -(1 + ratio31) T1
-            per_t1 = {"sun": 1.0, "ring": ratio31, "carrier": -(1 + ratio31)}
-            if per_t1[input] == 0:
-                continue
-            t1 = 1.0 / per_t1[input]
-            torque = {k: v * t1 for k, v in per_t1.items()}
-            sun_drives = torque["sun"] * rel1 > 0
-            if sun_drives == (factor == eta0):
-                break
-        p_in = torque[input] * w[input]
-        p_out = torque[output] * w[output]
-        return -p_out / p_in
+            etas = {n: float(mesh_efficiency) for n in self._pairs}
+        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        flow = self.train.power_flow(
+            name[input], name[output], fixed=[name[fixed]], mesh_efficiency=etas
+        )
+        return float(flow.efficiency)
 
     # ---- conditions ------------------------------------------------------------------------
     def _planet_tips(self) -> tuple[float, ...]:
