@@ -21,6 +21,7 @@ from trains.catalog import (
 )
 from trains.errors import TrainError
 from trains.inertia import reduced_inertia
+from trains.planetary import Assembly, Placement, Planetary
 from trains.power import (
     PowerFlow,
     RelationPower,
@@ -29,13 +30,19 @@ from trains.power import (
     self_locking_range,
     series_efficiency,
 )
+from trains.synthesis import Candidate, Candidates, synthesize
 from trains.trajectory import point_path
 from trains.willis import IllConditionedTrainWarning, Motion, Relation, Structure, Train
 
 # Kinematics and statics (issue 3). Planetary design and synthesis (issue 4) add their names here.
 __all__ = [
+    "Assembly",
+    "Candidate",
+    "Candidates",
     "IllConditionedTrainWarning",
     "Motion",
+    "Placement",
+    "Planetary",
     "PowerFlow",
     "Relation",
     "RelationPower",
@@ -56,5 +63,6 @@ __all__ = [
     "simple_planetary",
     "stepped_planetary",
     "strain_wave",
+    "synthesize",
     "wolfrom",
 ]

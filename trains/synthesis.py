@@ -313,8 +313,14 @@ def synthesize(
     >>> best = synthesize(7, 3)[0]
     >>> best.teeth, best.ratio
     ((18, 45, 45, 108), Fraction(7, 1))
-    >>> synthesize(16, 3, scheme="stepped", z_max=120)[0].teeth   # lectures §4.4, scheme B
+    >>> synthesize(16, 3, scheme="stepped", z_max=120, mesh_checks="textbook")[0].teeth
     (18, 54, 18, 90)
+
+    That lectures §4.4 scheme B answer has a planet 18 in ring 90 whose ring tip passes the
+    planet's base tangent point; on the real geometry the next set is the first:
+
+    >>> synthesize(16, 3, scheme="stepped", z_max=120)[0].teeth
+    (21, 63, 21, 105)
     """
     scheme = canonical_scheme(scheme)
     target = _as_ratio(ratio)
