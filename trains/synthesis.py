@@ -134,15 +134,24 @@ class Candidates(list):
 
     @property
     def reason(self) -> str:
-        """Why the result is empty (or a summary of the filtering)."""
+        """Why the result is empty (or a summary of the filtering).
+
+        Names the condition that removed the most sets (the enumeration's tooth range only when
+        nothing else removed any) and the last condition that removed any, i.e. the one that
+        emptied the result.
+        """
         if not self.removed:
             return "nothing was examined"
-        worst = max(self.removed, key=self.removed.get)
+        conditions = {k: v for k, v in self.removed.items() if k != "tooth range" and v}
+        pool = conditions or self.removed
+        worst = max(pool, key=pool.get)
+        last = [k for k, v in self.removed.items() if v]
         head = "no candidate meets the request" if not self else f"{len(self)} candidates"
         counts = ", ".join(f"{k} {v}" for k, v in self.removed.items())
+        tail = f"; the last sets were removed by '{last[-1]}'" if last and not self else ""
         return (
             f"{head}: of {self.examined} tooth-number sets the '{worst}' condition removed the "
-            f"most ({self.removed[worst]}); removed per condition: {counts}"
+            f"most ({pool[worst]}){tail}; removed per condition: {counts}"
         )
 
     def table(self) -> str:
