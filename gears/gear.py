@@ -618,6 +618,22 @@ class Gear:
         b = math.radians(self.helix_angle)
         return math.degrees(math.atan(math.tan(b) * self.tip_diameter / self.reference_diameter))
 
+    def outline(
+        self, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
+        bore: float | None = None, rim: float | None = None, angle: float = 0.0,
+        center=(0.0, 0.0),
+    ):  # fmt: skip
+        """Transverse tooth outline as a shapely Polygon (see :func:`gears.profile.outline`,
+        :func:`gears.generate.rack_outline`, :func:`gears.generate.shaper_outline`).
+
+        ``method`` is ``"analytic"``, ``"rack"`` or ``"shaper"``; ``tolerance`` is the largest
+        deviation from the exact curves in mm; ``backlash`` the pair's normal backlash (this
+        gear takes half); ``bore`` a hole (external); ``rim`` the ring width (internal).
+        """
+        from gears.profile import gear_outline
+
+        return gear_outline(self, tolerance, method, backlash, bore, rim, angle, center)
+
     def with_(self, **changes) -> Gear:
         """A copy with some fields changed (validated again)."""
         from dataclasses import replace
