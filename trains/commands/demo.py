@@ -22,8 +22,20 @@ def shifted_pair() -> str:
     return pair_report(pair)
 
 
+def planetary_stage() -> str:
+    """Design a three-planet stage for ratio 7 (lectures §4.3) and validate it."""
+    from trains.synthesis import synthesize
+
+    found = synthesize(7, n_planets=3, module=2.0, limit=3)
+    return "\n".join([found.table(), "", found[0].stage.describe()])
+
+
 SECTIONS: list[tuple[str, Callable[[], str]]] = [
     ("Profile-shifted spur pair 12/24, m_n = 3 mm, x = 0.6 / 0.36", shifted_pair),
+    (
+        "Planetary stage for ratio 7, three planets, m = 2 mm (synthesized, then checked)",
+        planetary_stage,
+    ),
 ]
 """(title, report function) of each part of the default design, printed in order."""
 
