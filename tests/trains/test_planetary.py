@@ -333,3 +333,14 @@ def test_large_planet_count_is_finite():
     assert r["assembly"].ok and not r["neighbour"].ok
     assert math.isfinite(r["neighbour"].margin)
     assert p.max_planets < 440
+
+
+def test_figure_script_runs(tmp_path):
+    # docs/make_planetary_figures.py makes the docs figure of the three conditions
+    pytest.importorskip("matplotlib")
+    import runpy
+
+    mod = runpy.run_path(str(__import__("pathlib").Path(__file__).parents[2] / "docs"
+                             / "make_planetary_figures.py"))  # fmt: skip
+    (path,) = mod["main"](tmp_path)
+    assert path.stat().st_size > 10_000
