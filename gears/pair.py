@@ -524,18 +524,25 @@ class GearPair:
 
     @cached_property
     def gears(self) -> tuple[Gear, Gear | Rack]:
-        """``(g1, g2)`` as mounted in this pair: with the tip alteration applied."""
+        """``(g1, g2)`` as mounted in this pair: the pair's tip shortening k added to each gear's
+        own ``tip_alteration`` (e.g. a ring tip shortened against fillet interference)."""
         k = self.tip_alteration
         if k == 0.0:
             return self.g1, self.g2
-        return self.g1.with_(tip_alteration=k), self.g2.with_(tip_alteration=k)
+        g1, g2 = self.g1, self.g2
+        return (
+            g1.with_(tip_alteration=g1.tip_alteration + k),
+            g2.with_(tip_alteration=g2.tip_alteration + k),
+        )
 
     @property
     def tip_diameters(self) -> tuple[float, float]:
-        """Tip diameters of the pair (after tip shortening); a rack's is ``inf``."""
+        """Tip diameters of the gears as mounted (after tip shortening and each gear's own tip
+        alteration); a rack's is ``inf``."""
+        m1, m2 = self.gears
         if self.is_rack:
-            return self.g1.tip_diameter, math.inf
-        return float(self._geometry.tip_diameter_1), float(self._geometry.tip_diameter_2)
+            return m1.tip_diameter, math.inf
+        return m1.tip_diameter, m2.tip_diameter
 
     @property
     def working_diameters(self) -> tuple[float, float]:
@@ -682,24 +689,42 @@ class GearPair:
         # gear 2's tip must meet gear 1's flank at or above gear 1's form circle
         u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
         margin1 = p.start - u_f1
+        if self.is_rack:
+            # the rack's tip line cuts the line of action (u_C - u) sin(alpha) above the pitch line
+            clear = (p.pitch_point - u_f1) * math.sin(math.radians(self.working_pressure_angle))
+            remedy = f"a rack addendum of at most {clear:.4f} mm clears it"
+        else:
+            rb2 = g2.base_diameter / 2
+            # mate tip radius whose circle cuts the line of action exactly at u_f1 (both kinds)
+            clear = 2 * math.sqrt(rb2 * rb2 + (p.n2 - u_f1) ** 2)
+            bound = "at least" if self.internal else "at most"
+            remedy = f"a mate tip diameter of {bound} {clear:.4f} mm clears it"
         out = [
             Finding(
                 "tip_interference", margin1,
                 f"mate's tip meets gear 1's flank {margin1:+.4f} mm along the line of action from "
-                f"its form circle (d_Ff1 = {g1.form_diameter:.4f} mm; N1 at {-u_f1:+.4f} mm)",
+                f"its form circle d_Ff1 = {g1.form_diameter:.4f} mm"
+                + ("" if margin1 >= 0 else f" (it reaches the fillet; {remedy})"),
             )
         ]  # fmt: skip
         if self.is_rack:
             return out
-        rb2 = g2.base_diameter / 2
         l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
         # external: gear 1's tip point must stay at least l2 before N2; internal: within l2 of N2
         margin2 = (p.n2 - p.end) - l2 if not self.internal else l2 - (p.end - p.n2)
+        sigma = self._sigma
+        clear1 = 2 * math.sqrt(rb1 * rb1 + (p.n2 - sigma * l2) ** 2)
         out.append(
             Finding(
                 "tip_interference_2", margin2,
                 f"gear 1's tip meets gear 2's flank {margin2:+.4f} mm along the line of action "
-                f"inside its usable involute (d_Ff2 = {g2.form_diameter:.4f} mm)",
+                f"from its form circle d_Ff2 = {g2.form_diameter:.4f} mm"
+                + (
+                    ""
+                    if margin2 >= 0
+                    else f" (it reaches the fillet; a tip diameter of at most {clear1:.4f} mm "
+                    "on gear 1 clears it)"
+                ),
             )
         )  # fmt: skip
         if self.internal:

@@ -621,3 +621,23 @@ def test_check_marginally_undercut_pinion():
     r = _pair(10, 30, 0.4118, -0.4118).check(min_tip_land=0.3)
     assert set(r.failed()) <= {"g1.pointed_tip", "g1.undercut", "tip_interference"}
     assert "g1.pointed_tip" in r.failed()
+
+
+def test_ring_tip_reaching_the_planet_fillet_and_its_remedy():
+    # 45/108 internal, m = 2, zero shifts (the 18/45/108 planetary course example): the ring's
+    # tip circle cuts the line of action deeper than a rack's tip line would (independent
+    # derivation: u_A = u_N2 + sqrt(r_a2^2 - r_b2^2) = 9.054 mm < u_Ff1 = 9.544 mm from N1), so it
+    # reaches the planet's fillet. The finding names the ring tip diameter that clears it.
+    pair = GearPair(Gear(45, 2), Gear(108, 2, internal=True))
+    finding = pair.check()["tip_interference"]
+    assert not finding.ok
+    assert finding.margin == pytest.approx(-0.4896, abs=1e-4)
+    clear = float(finding.message.split("at least ")[1].split(" mm")[0])
+    assert clear == pytest.approx(212.2848, abs=1e-4)
+    # a ring whose own tip alteration brings d_a2 just above that diameter clears it: the pair
+    # honours each gear's own tip alteration
+    k = (216.0 - (clear + 0.01)) / (2 * 2) - 1.0  # d_a2 = d2 - 2 m (h_a - x + k)
+    ring = Gear(108, 2, internal=True, tip_alteration=k)
+    fixed = GearPair(Gear(45, 2), ring)
+    assert fixed.tip_diameters[1] == pytest.approx(clear + 0.01)
+    assert fixed.check()["tip_interference"].ok
