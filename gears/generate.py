@@ -172,7 +172,7 @@ def rack_outline(
     Raises
     ------
     GearError
-        For an internal gear (a rack cannot cut a ring: use :func:`shaper_outline`).
+        For an internal gear (a rack cannot cut a ring).
 
     Examples
     --------
@@ -183,7 +183,10 @@ def rack_outline(
     """
     tol = _check_tolerance(tolerance)
     if gear.internal:
-        raise GearError("a rack cutter cannot generate an internal gear; use method='shaper'")
+        raise GearError(
+            "a rack cutter cannot generate an internal gear; use method='analytic' (the "
+            "rack-limit outline of a shaper-cut ring)"
+        )
     prof = ToothProfile(gear, backlash)
     space = _space(prof, tol)
     if space.geom_type != "Polygon":

@@ -1,0 +1,122 @@
+"""2D export of outlines: plain SVG (no dependency), DXF (ezdxf, the ``dxf`` extra), point arrays.
+
+Export picks the format from the file extension (:func:`save`), the way trimesh does.
+"""
+
+from __future__ import annotations
+
+import pathlib
+
+import numpy as np
+import shapely
+
+from gears.errors import GearError
+
+__all__ = ["points", "save", "to_dxf", "to_svg"]
+
+
+def _polygons(outlines) -> list[shapely.Polygon]:
+    out = []
+    for o in outlines:
+        if isinstance(o, shapely.MultiPolygon):
+            out.extend(o.geoms)
+        elif isinstance(o, shapely.Polygon):
+            out.append(o)
+        else:
+            raise GearError(f"expected shapely Polygons; got {type(o).__name__}")
+    if not out:
+        raise GearError("nothing to export: pass at least one outline")
+    return out
+
+
+def points(outline) -> list[np.ndarray]:
+    """The rings of ``outline`` as ``(n, 2)`` float arrays in mm (exterior first, then holes;
+    the closing point is not repeated)."""
+    (p,) = _polygons([outline])
+    return [np.asarray(r.coords)[:-1] for r in (p.exterior, *p.interiors)]
+
+
+def to_svg(path, *outlines, margin: float = 1.0, stroke: float = 0.05) -> pathlib.Path:
+    """Write ``outlines`` as a plain SVG whose user unit is 1 mm (y up, as in the drawings).
+
+    Each polygon is one ``<path>`` with ``fill-rule="evenodd"`` (holes stay open).
+
+    Examples
+    --------
+    >>> import tempfile, os
+    >>> from gears import Gear
+    >>> f = to_svg(os.path.join(tempfile.mkdtemp(), "g.svg"), Gear(12, 1).outline(0.01))
+    >>> f.read_text().startswith("<?xml")
+    True
+    """
+    polys = _polygons(outlines)
+    x0, y0, x1, y1 = shapely.total_bounds(polys)
+    x0, y0, x1, y1 = x0 - margin, y0 - margin, x1 + margin, y1 + margin
+    w, h = x1 - x0, y1 - y0
+    body = []
+    for p in polys:
+        d = []
+        for ring in points(p):
+            xs, ys = ring[:, 0], y0 + y1 - ring[:, 1]  # flip y: SVG's y runs down
+            coords = " L".join(f"{x:.6f},{y:.6f}" for x, y in zip(xs, ys, strict=True))
+            d.append(f"M{coords} Z")
+        body.append(
+            f'<path d="{" ".join(d)}" fill="none" stroke="black" '
+            f'stroke-width="{stroke}" fill-rule="evenodd"/>'
+        )
+    text = (
+        '<?xml version="1.0" encoding="UTF-8"?>\n'
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.6f}mm" height="{h:.6f}mm" '
+        f'viewBox="{x0:.6f} {y0:.6f} {w:.6f} {h:.6f}">\n' + "\n".join(body) + "\n</svg>\n"
+    )
+    path = pathlib.Path(path)
+    path.write_text(text)
+    return path
+
+
+def to_dxf(path, *outlines) -> pathlib.Path:
+    """Write ``outlines`` as closed LWPOLYLINEs in a DXF (mm units). Needs ezdxf
+    (``pip install geartrain[dxf]``)."""
+    try:
+        import ezdxf
+        from ezdxf import units
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise GearError("DXF export needs ezdxf: pip install 'geartrain[dxf]'") from exc
+    doc = ezdxf.new("R2010")
+    doc.units = units.MM
+    msp = doc.modelspace()
+    for p in _polygons(outlines):
+        for ring in points(p):
+            msp.add_lwpolyline(ring.tolist(), close=True)
+    path = pathlib.Path(path)
+    doc.saveas(path)
+    return path
+
+
+def save(path, *outlines) -> pathlib.Path:
+    """Write by extension: ``.svg``, ``.dxf``, ``.png`` (matplotlib, the ``plot`` extra) or
+    ``.npz`` (point arrays)."""
+    path = pathlib.Path(path)
+    ext = path.suffix.lower()
+    if ext == ".svg":
+        return to_svg(path, *outlines)
+    if ext == ".dxf":
+        return to_dxf(path, *outlines)
+    if ext == ".png":
+        from gears.plot import outlines_figure
+
+        fig = outlines_figure(*outlines)
+        fig.savefig(path, dpi=150)
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+        return path
+    if ext == ".npz":
+        arrays = {
+            f"outline{i}_ring{j}": r
+            for i, p in enumerate(_polygons(outlines))
+            for j, r in enumerate(points(p))
+        }
+        np.savez(path, **arrays)
+        return path
+    raise GearError(f"unknown export format {ext!r}; valid are .svg, .dxf, .png, .npz")

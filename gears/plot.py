@@ -1,0 +1,138 @@
+"""Figures (matplotlib, the ``plot`` extra): outlines, one tooth with its construction, a
+meshing pair with its line of action, and the generation process with fading tool positions."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from gears.errors import GearError
+
+__all__ = ["generation_figure", "outlines_figure", "pair_figure", "tooth_figure"]
+
+
+def _plt():
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg", force=False)
+        import matplotlib.pyplot as plt
+    except ImportError as exc:  # pragma: no cover
+        raise GearError("plots need matplotlib: pip install 'geartrain[plot]'") from exc
+    return plt
+
+
+def _draw(ax, poly, **kw):
+    for ring in (poly.exterior, *poly.interiors):
+        x, y = ring.xy
+        ax.plot(x, y, **kw)
+
+
+def _circle(ax, r, center=(0, 0), **kw):
+    t = np.linspace(0, 2 * math.pi, 721)
+    ax.plot(center[0] + r * np.cos(t), center[1] + r * np.sin(t), **kw)
+
+
+def outlines_figure(*outlines, ax=None):
+    """All outlines, filled, equal axes, in mm."""
+    plt = _plt()
+    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 7))
+    for i, p in enumerate(outlines):
+        polys = getattr(p, "geoms", [p])
+        for q in polys:
+            x, y = q.exterior.xy
+            ax.fill(x, y, alpha=0.35, color=f"C{i}", lw=0)
+            _draw(ax, q, color=f"C{i}", lw=0.6)
+    ax.set_aspect("equal")
+    ax.set_xlabel("mm")
+    return fig
+
+
+def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
+    """One tooth with base, form, reference, tip and root circles; involute and fillet coloured."""
+    from gears.profile import ToothProfile
+
+    plt = _plt()
+    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(6, 6))
+    prof = ToothProfile(gear)
+    rho, eta, kind = prof.half_space(tolerance)
+    half = math.pi / gear.teeth
+    names = {0: ("root arc", "0.4"), 1: ("fillet (trochoid offset)", "C3"),
+             2: ("involute", "C0"), 3: ("tip arc", "0.4")}  # fmt: skip
+    for side in (1, -1):
+        th = side * (half - eta) + math.pi / 2
+        x, y = rho * np.cos(th), rho * np.sin(th)
+        for k, (label, colour) in names.items():
+            sel = np.flatnonzero(kind == k)
+            if sel.size:
+                sel = np.append(sel, min(sel[-1] + 1, len(x) - 1))
+                ax.plot(x[sel], y[sel], color=colour, lw=2, label=label if side == 1 else None)
+    for name, d, style in [
+        ("base", gear.base_diameter, ":"), ("form", gear.form_diameter, "-."),
+        ("reference", gear.reference_diameter, "--"), ("tip", gear.tip_diameter, "-"),
+        ("root", gear.root_diameter, "-"),
+    ]:  # fmt: skip
+        t = np.linspace(math.pi / 2 - 1.6 * half, math.pi / 2 + 1.6 * half, 100)
+        ax.plot(d / 2 * np.cos(t), d / 2 * np.sin(t), style, color="0.6", lw=0.8)
+        ax.annotate(f"{name} d = {d:.3f}", (d / 2 * math.cos(t[0]), d / 2 * math.sin(t[0])),
+                    fontsize=7, color="0.3")  # fmt: skip
+    ax.set_aspect("equal")
+    ax.legend(loc="lower center", fontsize=8)
+    ax.set_title(f"z = {gear.teeth}, x = {gear.profile_shift:g}, m = {gear.module:g}")
+    return fig
+
+
+def pair_figure(pair, angle: float = 0.0, tolerance: float = 1e-3, ax=None):
+    """Both gears in mesh with the line of action and the path of contact."""
+    plt = _plt()
+    p1, p2 = pair.outlines(angle, tolerance)
+    fig = outlines_figure(p1, p2, ax=ax)
+    ax = fig.axes[0]
+    g1 = pair.gears[0]
+    rb1 = g1.base_diameter / 2
+    aw = math.radians(pair.working_pressure_angle)
+    s = -1.0 if pair.internal else 1.0
+    # N1: tangent point on gear 1's base circle; the line of action through the pitch point
+    n1 = np.array([rb1 * math.cos(aw), s * rb1 * math.sin(aw)])
+    direction = np.array([math.sin(aw), -s * math.cos(aw)])
+    path = pair.path_of_contact
+    a, e = n1 + path.start * direction, n1 + path.end * direction
+    far = n1 + (path.end + 0.3 * path.length) * direction
+    ax.plot(*zip(n1, far, strict=True), color="k", lw=0.6, label="line of action")
+    ax.plot(*zip(a, e, strict=True), color="C3", lw=2.5, label="path of contact")
+    _circle(ax, pair.working_diameters[0] / 2, color="0.5", lw=0.5, ls="--")
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title(f"contact ratio {pair.contact_ratio:.3f}")
+    plt.tight_layout()
+    return fig
+
+
+def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None):
+    """The rack cutter's positions (fading away from the centre) over the cut tooth space."""
+    from gears.generate import rack_positions, rack_tool_polygon
+    from gears.profile import ToothProfile
+
+    plt = _plt()
+    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 6))
+    prof = ToothProfile(gear)
+    t = prof.tool
+    tool = rack_tool_polygon(prof, tolerance)
+    phis = rack_positions(prof, tolerance)[::every]
+    big = float(np.max(np.abs(phis)))
+    for phi in phis:
+        c, s_ = math.cos(phi), math.sin(phi)
+        x0 = tool[:, 0] + t.r * phi
+        y0 = t.r + t.xm + tool[:, 1]
+        x, y = c * x0 - s_ * y0, s_ * x0 + c * y0
+        alpha = 0.08 + 0.6 * (1 - abs(phi) / big)
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="C1", lw=0.5, alpha=alpha)
+    p = gear.outline(tolerance / 10, angle=90 - 180 / gear.teeth)
+    _draw(ax, p, color="k", lw=1.2)
+    ra = prof.ra
+    ax.set_xlim(-0.45 * ra, 0.45 * ra)
+    ax.set_ylim(prof.rf - 2 * gear.module, ra + gear.module)
+    ax.set_aspect("equal")
+    ax.set_title(f"rack generation, z = {gear.teeth}, x = {gear.profile_shift:g}: "
+                 f"{len(phis)} tool positions")  # fmt: skip
+    return fig
