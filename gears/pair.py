@@ -682,6 +682,29 @@ class GearPair:
         findings.extend(self._interference_findings())
         return Report(findings)
 
+    @cached_property
+    def tip_diameter_limits(self) -> tuple[float, float]:
+        """Tip diameters at which each gear's tip meets its mate's flank exactly at the mate's
+        form circle: ``(largest d_a1, limit of d_a2)``. The limit of d_a2 is a largest diameter
+        for an external gear 2 and a smallest one for a ring (a ring tip reaches deeper than a
+        rack's tip line and is relieved by enlarging d_a2); for a rack it is the largest rack
+        addendum in mm. A tip beyond its limit reaches the mate's fillet (``tip_interference``).
+        """
+        p = self.path_of_contact
+        g1, g2 = self.gears
+        rb1 = g1.base_diameter / 2
+        u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
+        if self.is_rack:
+            # the rack's tip line cuts the line of action (u_C - u) sin(alpha) above the pitch line
+            angle = math.radians(self.working_pressure_angle)
+            return math.inf, (p.pitch_point - u_f1) * math.sin(angle)
+        rb2 = g2.base_diameter / 2
+        l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
+        # a tip circle of radius sqrt(r_b^2 + (u - u_N)^2) cuts the line of action at u
+        limit1 = 2 * math.sqrt(rb1 * rb1 + (p.n2 - self._sigma * l2) ** 2)
+        limit2 = 2 * math.sqrt(rb2 * rb2 + (p.n2 - u_f1) ** 2)
+        return limit1, limit2
+
     def _interference_findings(self) -> list[Finding]:
         p = self.path_of_contact
         g1, g2 = self.gears
@@ -689,14 +712,10 @@ class GearPair:
         # gear 2's tip must meet gear 1's flank at or above gear 1's form circle
         u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
         margin1 = p.start - u_f1
+        clear = self.tip_diameter_limits[1]
         if self.is_rack:
-            # the rack's tip line cuts the line of action (u_C - u) sin(alpha) above the pitch line
-            clear = (p.pitch_point - u_f1) * math.sin(math.radians(self.working_pressure_angle))
             remedy = f"a rack addendum of at most {clear:.4f} mm clears it"
         else:
-            rb2 = g2.base_diameter / 2
-            # mate tip radius whose circle cuts the line of action exactly at u_f1 (both kinds)
-            clear = 2 * math.sqrt(rb2 * rb2 + (p.n2 - u_f1) ** 2)
             bound = "at least" if self.internal else "at most"
             remedy = f"a mate tip diameter of {bound} {clear:.4f} mm clears it"
         out = [
@@ -709,11 +728,11 @@ class GearPair:
         ]  # fmt: skip
         if self.is_rack:
             return out
+        rb2 = g2.base_diameter / 2
         l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
         # external: gear 1's tip point must stay at least l2 before N2; internal: within l2 of N2
         margin2 = (p.n2 - p.end) - l2 if not self.internal else l2 - (p.end - p.n2)
-        sigma = self._sigma
-        clear1 = 2 * math.sqrt(rb1 * rb1 + (p.n2 - sigma * l2) ** 2)
+        clear1 = self.tip_diameter_limits[0]
         out.append(
             Finding(
                 "tip_interference_2", margin2,

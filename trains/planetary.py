@@ -396,6 +396,15 @@ class Planetary:
         For tooth-count input (degrees; helix is the sun's, the mates get the matching hands).
     tip_shortening : bool
         Apply DIN 3960 tip shortening on external meshes (see :class:`gears.GearPair`).
+    ring_tip_relief : bool
+        Relieve the tip of a ring whose nominal tip (d_a2 = d2 - 2 m (h_a - x)) would reach below
+        its planet's form circle, i.e. onto the planet's fillet: a ring tip circle cuts the line
+        of action deeper than a rack's tip line, so with an ISO 53 A tool every zero-shift
+        internal mesh does this (by about 0.25 m at 45/108). The ring's tip diameter is enlarged
+        to :attr:`gears.GearPair.tip_diameter_limits` (rounded up to 1 um), which DIN 3960 style
+        checks require (active root diameter >= form diameter); the amount is reported as the
+        ``ring_tip_relief`` finding. Rings given as Gears with their own ``tip_alteration`` are
+        left as they are.
 
     Raises
     ------
@@ -427,6 +436,7 @@ class Planetary:
         pressure_angle: float | None = None,
         helix_angle: float = 0.0,
         tip_shortening: bool = True,
+        ring_tip_relief: bool = True,
     ) -> None:
         self.scheme = canonical_scheme(scheme)
         self.n_planets = _count(n_planets)
@@ -440,6 +450,7 @@ class Planetary:
             raise TrainError(f"clearance = {clearance!r}; valid is a number >= 0 (modules)")
         self.clearance = c
         self.tip_shortening = bool(tip_shortening)
+        self.ring_tip_relief = bool(ring_tip_relief)
         two_planets = self.scheme != "simple"
         if _is_pair(planet):
             p1, p2 = planet
@@ -505,7 +516,29 @@ class Planetary:
                 pairs[name] = GearPair(gears[k1], gears[k2], self.tip_shortening)
             except GearError as exc:
                 raise TrainError(f"mesh {name}: {exc}") from None
+            if ring_tip_relief and pairs[name].internal:
+                pairs[name] = self._relieve_ring_tip(pairs[name], gears, k2)
         self._pairs = pairs
+
+    def _relieve_ring_tip(self, pair: GearPair, gears: dict[str, Gear], key: str) -> GearPair:
+        """The pair with its ring's tip enlarged to clear the planet's fillet (if it reaches it)."""
+        ring = pair.g2
+        if ring.tip_alteration != 0.0:
+            return pair
+        try:
+            limit = pair.tip_diameter_limits[1]
+        except GearError:
+            return pair  # no contact geometry: the pair's own findings report why
+        if ring.tip_diameter >= limit:
+            return pair
+        target = math.ceil(limit * 1000.0) / 1000.0
+        # internal: d_a2 = d2 - 2 m_n (h_a - x + k)  ->  k for d_a2 = target
+        k = (ring.reference_diameter - target) / (2 * ring.module) - ring.rack.addendum
+        k += ring.profile_shift
+        relieved = ring.with_(tip_alteration=k)
+        gears[key] = relieved
+        self._relief = {**getattr(self, "_relief", {}), key: (ring.tip_diameter, target)}
+        return GearPair(pair.g1, relieved, self.tip_shortening)
 
     # ---- construction by centre distance --------------------------------------------------
     @classmethod
@@ -957,6 +990,15 @@ class Planetary:
                 unit="", ok=True,
             )
         )  # fmt: skip
+        for key, (nominal, relieved) in getattr(self, "_relief", {}).items():
+            findings.append(
+                Finding(
+                    f"{key}_tip_relief", (relieved - nominal) / 2,
+                    f"{key} tip diameter enlarged from {nominal:.4f} to {relieved:.4f} mm so its "
+                    "tip stays on the planet's involute (above the planet's form circle); make the "
+                    "ring blank to this diameter", ok=True,
+                )
+            )  # fmt: skip
         for name, pair in self._pairs.items():
             findings.extend(pair.check(min_contact_ratio, min_tip_land).prefixed(name).values())
         return Report(findings)

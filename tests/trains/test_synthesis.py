@@ -56,7 +56,14 @@ def test_lectures_scheme_b_16_order():
 def test_real_geometry_rejects_textbook_answer_with_interference():
     # lectures §4.4 gives (18, 18, 54) for i = 4; its planet-ring mesh has involute
     # interference (KHK condition z1/z2 >= 1 - tan alpha_a2 / tan alpha_w; standards.md §1.8)
-    assert not Planetary(18, 18, 54, 3).check()["planet-ring.involute_interference"].ok
+    # with the nominal ring tip d_a2 = d2 - 2 m; synthesis keeps nominal tips (conservative)
+    nominal = Planetary(18, 18, 54, 3, ring_tip_relief=False)
+    assert not nominal.check()["planet-ring.involute_interference"].ok
+    # relieving the ring tip to the planet's form circle (0.145 m larger radius, derived by
+    # GearPair.tip_diameter_limits) also clears N1, so the relieved stage passes
+    relieved = Planetary(18, 18, 54, 3).check()
+    assert relieved["planet-ring.involute_interference"].ok
+    assert relieved["ring_tip_relief"].margin == pytest.approx(0.145, abs=1e-3)
     best = synthesize(4, 3)[0]
     assert best.teeth != (18, 18, 18, 54)
     r = best.stage.check()
