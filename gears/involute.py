@@ -16,8 +16,8 @@ Numerics (standards.md §2):
   asymptotic seed (which lies right of the root) converges monotonically and never leaves the
   interval. Fast path: when ``y <= 0.5`` (alpha <= 55.6 deg, every practical working pressure
   angle) the seed is followed by a single Newton step (see ``_inv_inverse_fast``; ~10 ns/value
-  instead of ~60). The test suite proves 1e-12 relative accuracy over 0 <= y <= inv(89.9 deg) against an
-  independent 40-digit computation.
+  instead of ~60). The test suite proves 1e-12 relative accuracy over 0 <= y <= inv(89.9 deg)
+  against an independent 40-digit computation.
 """
 
 from __future__ import annotations
