@@ -78,7 +78,7 @@ def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
         ax.annotate(f"{name} d = {d:.3f}", (d / 2 * math.cos(t[0]), d / 2 * math.sin(t[0])),
                     fontsize=7, color="0.3")  # fmt: skip
     ax.set_aspect("equal")
-    ax.legend(loc="lower center", fontsize=8)
+    ax.legend(loc="upper right", fontsize=7)
     ax.set_title(f"z = {gear.teeth}, x = {gear.profile_shift:g}, m = {gear.module:g}")
     return fig
 
