@@ -156,7 +156,7 @@ def min_profile_shift(z, pressure_angle=20.0, helix_angle=0.0, flank_depth=1.0):
 
 def form_diameter(
     z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0, flank_depth=1.0,
-    internal=False,
+    internal=False, dedendum=1.25,
 ):  # fmt: skip
     """Form-circle diameter d_Ff: where the generated involute begins (standards.md §1.7).
 
@@ -166,7 +166,8 @@ def form_diameter(
     fillet cuts it (see :func:`gears.profile.undercut_form_diameter` for that exact point; here
     the base diameter is returned as the limit of the involute). Internal gears are modelled as
     cut by a rack-type (infinitely large) tool; the form circle then lies outside the reference
-    circle: d_Ff = 2 sqrt(r_b^2 + (r sin alpha_t + (h*_eff + x) m_n / sin alpha_t)^2).
+    circle: d_Ff = 2 sqrt(r_b^2 + (r sin alpha_t + (h*_eff + x) m_n / sin alpha_t)^2), at most
+    the root diameter (the rack limit overshoots it on small rings, e.g. z = 40, x = 0.3).
     """
     alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
     r = reference_diameter(z, module, helix_angle) / 2.0
@@ -175,7 +176,9 @@ def form_diameter(
     x = np.asarray(profile_shift)
     along = r * np.sin(alpha_t) - s * (flank_depth - s * x) * np.asarray(module) / np.sin(alpha_t)
     along = np.where(s > 0, np.maximum(along, 0.0), along)
-    return _out(2.0 * np.sqrt(rb * rb + along * along))
+    d_ff = 2.0 * np.sqrt(rb * rb + along * along)
+    d_f = root_diameter(z, module, profile_shift, helix_angle, dedendum, True)
+    return _out(np.where(s > 0, d_ff, np.minimum(d_ff, d_f)))
 
 
 def span_teeth(z, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0):
@@ -505,6 +508,7 @@ class Gear:
             form_diameter(
                 self.teeth, self.module, self.profile_shift, self.pressure_angle,
                 self.helix_angle, self.rack.straight_flank_depth, self.internal,
+                self.rack.dedendum,
             )
         )  # fmt: skip
 

@@ -467,3 +467,21 @@ def test_form_diameter_of_marginally_undercut_gear(z, x):
     g = Gear(z, 1, profile_shift=x)
     assert g.undercut
     assert g.base_diameter <= g.form_diameter < g.reference_diameter
+
+
+def test_internal_form_circle_stays_inside_the_root_circle():
+    # the rack-limit form circle of a small shifted ring (z = 40, x = 0.3, m = 1) would lie at
+    # 43.1947 mm, beyond the root circle d_f = d + 2 (h_fP + x) m = 43.1 mm (ISO 53 A; found by
+    # the profile tests); a usable involute cannot end outside the root, so it is clamped there
+    ring = Gear(40, 1, internal=True, profile_shift=0.3)
+    assert ring.root_diameter == pytest.approx(43.1)
+    assert ring.form_diameter == pytest.approx(43.1)
+    # a large ring keeps its rack-limit value, independent derivation: 2 sqrt(r_b^2 + L^2),
+    # L = r sin(a) + (h_eff + x) m / sin(a), h_eff = 1.25 - 0.38 (1 - sin a) (standards.md §1.1)
+    big = Gear(80, 2, internal=True)
+    a = math.radians(20)
+    h_eff = 1.25 - 0.38 * (1 - math.sin(a))
+    along = 80 * math.sin(a) + h_eff * 2 / math.sin(a)
+    expected = 2 * math.sqrt((80 * math.cos(a)) ** 2 + along**2)
+    assert big.form_diameter == pytest.approx(expected, rel=1e-12)
+    assert big.form_diameter < big.root_diameter
