@@ -241,6 +241,9 @@ class ToothProfile:
         tau = np.linspace(0.0, 2.0, 801)[:-1]
         rho, eta, _ = self.fillet(tau)
         above = rho >= self.rb
+        # below the base circle there is no involute: count the fillet as outside it (g = 1).
+        # f below uses the same rule, so every bracket found is valid; in a marginal undercut the
+        # fillet meets the involute right at the base circle, and the root is that jump.
         g = np.where(above, eta - self.eta_involute(np.maximum(rho, self.rb)), 1.0)
         idx = np.flatnonzero((g[:-1] > 0) & (g[1:] <= 0))
         if idx.size == 0:
@@ -252,7 +255,9 @@ class ToothProfile:
 
         def f(x):
             r_, e_, _ = self.fillet(x)
-            return float(e_ - self.eta_involute(max(float(r_), self.rb)))
+            if float(r_) < self.rb:
+                return 1.0
+            return float(e_ - self.eta_involute(float(r_)))
 
         return float(brentq(f, tau[i], tau[i + 1], xtol=1e-15, rtol=1e-15))
 

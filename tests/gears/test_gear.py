@@ -454,12 +454,6 @@ def test_whole_float_and_numpy_teeth_accepted():
         Gear(20, 1, pressure_angle=44.9)
 
 
-@pytest.mark.xfail(
-    raises=ValueError,
-    strict=False,
-    reason="gears.profile.tau_form: the sampled sign test sets g = 1 where rho < r_b but the "
-    "brentq function uses max(rho, r_b), so the bracket can have equal signs",
-)
 @pytest.mark.parametrize(("z", "x"), [(17, 0.0), (10, 0.4118), (16, 0.06)])
 def test_form_diameter_of_marginally_undercut_gear(z, x):
     # a standard 17-tooth gear is undercut by 0.0057 m (x_min = 0.0057, standards.md §1.6); its

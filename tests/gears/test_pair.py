@@ -609,12 +609,6 @@ def test_pair_geometry_vectorised_matches_pairs():
         assert g.contact_ratio[i] == pytest.approx(p.contact_ratio, rel=1e-14)
 
 
-@pytest.mark.xfail(
-    raises=ValueError,
-    strict=False,
-    reason="gears.profile.undercut_form_diameter: brentq bracket fails for a marginally "
-    "undercut pinion (z = 10, x = 0.4118 vs x_min = 0.4151); owned by the profile work",
-)
 def test_check_marginally_undercut_pinion():
     # Joldasbekov §5.4 last row through the full pair check: only the tip land (0.3 m rule) and
     # the (marginal) undercut may fail; check() must not crash
