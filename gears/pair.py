@@ -683,6 +683,19 @@ class GearPair:
         return Report(findings)
 
     @cached_property
+    def _form_lengths(self) -> tuple[float, float]:
+        """Distances along the line of action from N1 to gear 1's form circle and from N2 to
+        gear 2's (0 for a rack): sqrt(r_Ff^2 - r_b^2)."""
+        lengths = []
+        for g in self.gears:
+            if isinstance(g, Rack):
+                lengths.append(0.0)
+                continue
+            rb = g.base_diameter / 2
+            lengths.append(math.sqrt(max((g.form_diameter / 2) ** 2 - rb * rb, 0.0)))
+        return lengths[0], lengths[1]
+
+    @cached_property
     def tip_diameter_limits(self) -> tuple[float, float]:
         """Tip diameters at which each gear's tip meets its mate's flank exactly at the mate's
         form circle: ``(largest d_a1, limit of d_a2)``. The limit of d_a2 is a largest diameter
@@ -692,14 +705,12 @@ class GearPair:
         """
         p = self.path_of_contact
         g1, g2 = self.gears
-        rb1 = g1.base_diameter / 2
-        u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
+        u_f1, l2 = self._form_lengths
         if self.is_rack:
             # the rack's tip line cuts the line of action (u_C - u) sin(alpha) above the pitch line
             angle = math.radians(self.working_pressure_angle)
             return math.inf, (p.pitch_point - u_f1) * math.sin(angle)
-        rb2 = g2.base_diameter / 2
-        l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
+        rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
         # a tip circle of radius sqrt(r_b^2 + (u - u_N)^2) cuts the line of action at u
         limit1 = 2 * math.sqrt(rb1 * rb1 + (p.n2 - self._sigma * l2) ** 2)
         limit2 = 2 * math.sqrt(rb2 * rb2 + (p.n2 - u_f1) ** 2)
@@ -708,9 +719,8 @@ class GearPair:
     def _interference_findings(self) -> list[Finding]:
         p = self.path_of_contact
         g1, g2 = self.gears
-        rb1 = g1.base_diameter / 2
         # gear 2's tip must meet gear 1's flank at or above gear 1's form circle
-        u_f1 = math.sqrt(max((g1.form_diameter / 2) ** 2 - rb1 * rb1, 0.0))
+        u_f1, l2 = self._form_lengths
         margin1 = p.start - u_f1
         clear = self.tip_diameter_limits[1]
         if self.is_rack:
@@ -728,8 +738,6 @@ class GearPair:
         ]  # fmt: skip
         if self.is_rack:
             return out
-        rb2 = g2.base_diameter / 2
-        l2 = math.sqrt(max((g2.form_diameter / 2) ** 2 - rb2 * rb2, 0.0))
         # external: gear 1's tip point must stay at least l2 before N2; internal: within l2 of N2
         margin2 = (p.n2 - p.end) - l2 if not self.internal else l2 - (p.end - p.n2)
         clear1 = self.tip_diameter_limits[0]
