@@ -451,6 +451,7 @@ class Planetary:
         self.clearance = c
         self.tip_shortening = bool(tip_shortening)
         self.ring_tip_relief = bool(ring_tip_relief)
+        self._relief: dict[str, tuple[float, float]] = {}  # ring key -> (nominal, relieved d_a)
         two_planets = self.scheme != "simple"
         if _is_pair(planet):
             p1, p2 = planet
@@ -537,7 +538,7 @@ class Planetary:
         k += ring.profile_shift
         relieved = ring.with_(tip_alteration=k)
         gears[key] = relieved
-        self._relief = {**getattr(self, "_relief", {}), key: (ring.tip_diameter, target)}
+        self._relief[key] = (ring.tip_diameter, target)
         return GearPair(pair.g1, relieved, self.tip_shortening)
 
     # ---- construction by centre distance --------------------------------------------------
@@ -990,7 +991,7 @@ class Planetary:
                 unit="", ok=True,
             )
         )  # fmt: skip
-        for key, (nominal, relieved) in getattr(self, "_relief", {}).items():
+        for key, (nominal, relieved) in self._relief.items():
             findings.append(
                 Finding(
                     f"{key}_tip_relief", (relieved - nominal) / 2,
