@@ -38,9 +38,17 @@ from gears.profile import (
     arc_segments,
     assemble,
     circle_points,
+    default_rim,
 )
 
-__all__ = ["rack_outline", "rack_positions", "rack_tool_polygon", "shaper_outline"]
+__all__ = [
+    "rack_outline",
+    "rack_positions",
+    "rack_tool_polygon",
+    "shaper_outline",
+    "shaper_positions",
+    "shaper_tool_polygon",
+]
 
 
 def rack_tool_polygon(prof: ToothProfile, tolerance: float) -> np.ndarray:
@@ -119,17 +127,42 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     land = 2.0 * t.u_c / t.r
     if land > 0:
         need = np.where(grid <= 2.0 * land + t.u_c / t.r, np.minimum(need, land), need)
-    finite = np.isfinite(need)
-    need = np.interp(grid, grid[finite], need[finite])
-    # a requirement holds over the step around it: take the running min over one step
-    need = np.minimum(need, np.concatenate([need[1:], need[-1:]]))
-    density = 1.0 / need
-    cum = np.concatenate([[0.0], np.cumsum(0.5 * (density[1:] + density[:-1]) * np.diff(grid))])
-    n = max(1, math.ceil(cum[-1]))
-    half = np.interp(np.linspace(0.0, cum[-1], n + 1), cum, grid)
+    half, step = _spread(grid, need)
     # one step past the last contact sample so the tip corner is cut completely
-    half = np.append(half, phi_max + need[-1])
+    half = np.append(half, phi_max + step)
     return np.concatenate([-half[:0:-1], half])
+
+
+def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
+    """Angles from 0 to ``grid[-1]`` whose spacing stays below ``need`` (given on ``grid``; inf
+    where nothing constrains it) everywhere within each step, and the spacing needed at the end.
+
+    Greedy: from each angle take the largest step that does not exceed the requirement anywhere
+    inside it (a requirement that dips within a step shortens it).
+    """
+    finite = np.isfinite(need)
+    if not finite.any():
+        return np.array([0.0, grid[-1]]), float(grid[-1])
+    need = np.interp(grid, grid[finite], need[finite])
+    # the requirement between grid points: the smaller neighbour
+    need = np.minimum(need, np.concatenate([need[1:], need[-1:]]))
+    end = float(grid[-1])
+    out = [0.0]
+    phi = 0.0
+    while phi < end:
+        i = min(int(np.searchsorted(grid, phi, side="right")) - 1, len(grid) - 1)
+        step = float(need[i])
+        for _ in range(50):
+            j = int(np.searchsorted(grid, phi + step, side="right"))
+            m = float(need[i : max(j, i + 1)].min())
+            if m >= step * (1 - 1e-12):
+                break
+            step = m
+        phi = min(phi + step, end)
+        if end - phi < 1e-3 * step:
+            phi = end
+        out.append(phi)
+    return np.array(out), float(need[-1])
 
 
 def _space(prof: ToothProfile, tolerance: float) -> shapely.Polygon:
@@ -207,16 +240,196 @@ def rack_outline(
     return assemble(gear, pts, tol, bore, None, center, prof.rf)
 
 
-def shaper_outline(gear, tolerance: float = 0.001, backlash: float = 0.0, **kwargs):
-    """Pinion-type (Fellows) cutter simulation - not available in this version.
+# --- shaper (pinion-type) cutter ---------------------------------------------------------------
+def _involute_rolls(rb: float, t0: float, t1: float, tol: float) -> np.ndarray:
+    """Roll angles from t0 to t1 with chord sag r_b t dt^2 / 8 <= tol (uniform in t^1.5)."""
+    w0, w1 = t0**1.5, t1**1.5
+    dw = 1.5 * math.sqrt(8.0 * tol / rb)
+    n = max(1, math.ceil(abs(w1 - w0) / dw))
+    return np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
+
+
+def shaper_tool_polygon(prof, tolerance: float) -> np.ndarray:
+    """One shaper-cutter tooth in the cutter frame (cutter centre at the origin, the tooth
+    pointing at the work), closed counter-clockwise without the repeated point.
+
+    Tip land and rounds are sampled with chord sag <= ``tolerance / 4``, the involute flanks
+    likewise; the flanks run down to a radius that never enters the work blank (or radially
+    below the cutter's base circle), where the tooth is closed by a chord.
+    """
+    t = prof.tool
+    e = tolerance / 4
+    g = prof.gear
+    # cutter points inside this radius stay outside the work blank in every position
+    if t.s > 0:
+        r_low = t.a0 - prof.ra - 0.05 * g.module
+    else:
+        r_low = prof.ra - t.a0 - 0.05 * g.module
+    r_low = min(max(r_low, 0.05 * t.r0), t.ra0 - t.rho - 1e-3 * g.module)
+    parts = []
+    n = arc_segments(t.ra0, t.gamma_tip, e)
+    ang = np.linspace(0.0, t.gamma_tip, n + 1)
+    parts.append(np.stack([t.ra0 * np.sin(ang), t.ra0 * np.cos(ang)], -1))
+    if t.rho > 0:
+        n = arc_segments(t.rho, abs(t.gamma_flank - t.gamma_tip), e)
+        gam = np.linspace(t.gamma_tip, t.gamma_flank, n + 1)[1:]
+        parts.append(t.center_up + t.rho * np.stack([np.sin(gam), np.cos(gam)], -1))
+    t_low = math.sqrt(max(r_low * r_low - t.rb0 * t.rb0, 0.0)) / t.rb0
+    rolls = _involute_rolls(t.rb0, t.t_f, t_low, e)[1:]
+    parts.append(t._flank_xy(rolls))
+    if r_low < t.rb0:
+        parts.append(np.array([[r_low * math.sin(t.psi_b), r_low * math.cos(t.psi_b)]]))
+    right = np.concatenate(parts)  # up frame, tip centre -> flank bottom (clockwise side)
+    left = right[::-1] * np.array([-1.0, 1.0])
+    tooth = np.concatenate([left[:-1], right])  # from the left bottom over the tip to the right
+    tooth = t._frame(tooth)
+    if not shapely.LinearRing(tooth).is_ccw:
+        tooth = tooth[::-1]
+    return tooth
+
+
+def shaper_positions(prof, tolerance: float) -> np.ndarray:
+    """Work rotations (rad) of the cutter positions: symmetric, including 0, spaced locally.
+
+    Requirements (standards.md §3.2, generalised to a cutter of finite teeth): on the flank the
+    scallop between two positions is dphi^2 rho_w L / (8 rho_t) (rho_w, rho_t the work and
+    cutter involute curvature radii at contact, L = N1 N2; the rack limit rho_t -> inf gives
+    rho_w dphi^2 / 8); on the fillet d^2 / (8 rho_a0) with d the generated fillet point's travel
+    (it bounds the round's scallop d_C^2 (1/rho_a0 + 1/R_c) / 8, R_c the curvature radius of the
+    round centre's trochoid; near a cusp of the envelope, where the fillet point stops, the
+    centre's own travel |C - I| omega_rel dphi is used); on the root the tip land must overlap
+    (cutter turn <= its land) and the tip circle's scallop a0^2 dphi^2 (1/r_a0 + s/r_f) / 8
+    stays small. The steps are chosen greedily so no requirement inside a step is broken. Each
+    is held at ``0.35 tolerance``. Past the last contact the cutter keeps turning until its
+    tooth has left the blank, so secondary cutting (trimming of a ring's tips) is reproduced.
+    """
+    t = prof.tool
+    g = prof.gear
+    m = g.module
+    e = 0.35 * tolerance
+    phis, dphis = [], []
+    # involute flank (right flank of the space), from the form circle to the tip circle
+    rho_a = math.sqrt(max(prof.ra**2 - prof.rb**2, 0.0))
+    if t.s > 0:
+        lo, hi = max(t.length - t.rho_t_flank, 0.0), rho_a
+    else:
+        lo, hi = rho_a, t.length + t.rho_t_flank
+    rho_w = np.linspace(lo, hi, 400)
+    phi_f, rho_t = prof.flank_contact(rho_w)
+    rho_t = np.maximum(rho_t, 0.01 * m)
+    phis.append(phi_f)
+    dphis.append(np.sqrt(8 * e * rho_t / (np.maximum(rho_w, 0.01 * m) * t.length)))
+    # tip round (and, when undercut, the cutter flank beyond N1)
+    # the speed of the generated fillet point bounds the round's scallop: with the round's
+    # centre path of curvature radius R_c, h = d_C^2 (1/rho + 1/R_c) / 8 <= d_E^2 / (8 rho)
+    tau = np.linspace(0.0, 2.0 if prof.undercut else 1.0, 300)
+    rho_r, eta_r, phi_r = prof.fillet(tau)
+    xy = np.stack([rho_r * np.sin(eta_r), rho_r * np.cos(eta_r)], axis=-1)
+    ds = np.hypot(*np.gradient(xy, axis=0).T)
+    dphi = np.abs(np.gradient(phi_r))
+    speed = ds / np.where(dphi > 0, dphi, np.inf)
+    # near a cusp of the envelope (undercut) the fillet point stops while the centre moves on
+    gam = t.gamma_tip + np.clip(tau, 0.0, 1.0) * (t.gamma_flank - t.gamma_tip)
+    p, n = t.round_points(gam)
+    speed_c = np.abs(t.contact_lambda(p, n) + t.rho) * t.omega_rel
+    speed = np.maximum(np.maximum(speed, np.where(tau <= 1.0, speed_c, 0.0)), 1e-9 * m)
+    phis.append(phi_r)
+    dphis.append(np.sqrt(8 * e * max(t.rho, 0.02 * m)) / speed)
+    phi_all = np.abs(np.concatenate(phis))
+    dphi_all = np.concatenate(dphis)
+    dphi_all = np.minimum(dphi_all, math.pi / (4 * prof.z))
+    phi_max = float(phi_all.max())
+    grid = np.linspace(0.0, phi_max, 1025)
+    need = np.full(grid.shape, np.inf)
+    idx = np.clip(np.searchsorted(grid, phi_all), 0, len(grid) - 1)
+    np.minimum.at(need, idx, dphi_all)
+    # root: land overlap and tip-circle scallop while the land is on the line of centres
+    land_phi = t.land_half_angle * t.ratio
+    root_sag = math.sqrt(8 * e / (1 / t.ra0 + t.s / prof.rf)) / t.a0
+    land = min(2 * land_phi, root_sag) if land_phi > 0 else root_sag
+    need = np.where(grid <= 2 * land_phi + land, np.minimum(need, land), need)
+    half, step = _spread(grid, need)
+    # keep turning until the tooth has left the blank (trimming, exit of the tip corner)
+    tooth = shaper_tool_polygon(prof, tolerance)
+    extra = phi_max + step * np.arange(1, 2001)
+    extra = extra[extra < phi_max + 2 * math.pi / prof.z]
+    r = np.hypot(*np.moveaxis(t.place(tooth, extra), -1, 0))
+    inside = (r.min(axis=1) < prof.ra) if t.s > 0 else (r.max(axis=1) > prof.ra)
+    out = np.flatnonzero(~inside)
+    k = int(out[0]) + 1 if out.size else len(extra)
+    half = np.concatenate([half, extra[:k]])
+    return np.concatenate([-half[:0:-1], half])
+
+
+def _shaper_space(prof, tolerance: float) -> shapely.Polygon:
+    """Union of all shaper-cutter positions: one tooth space, centred on +y."""
+    tooth = shaper_tool_polygon(prof, tolerance)
+    phis = shaper_positions(prof, tolerance)
+    return shapely.union_all(shapely.polygons(prof.tool.place(tooth, phis)))
+
+
+def shaper_outline(
+    gear, tolerance: float = 0.001, backlash: float = 0.0, bore: float | None = None,
+    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0), cutter=None,
+) -> shapely.Polygon:  # fmt: skip
+    """Outline of ``gear`` cut by a shaper (pinion-type) cutter, simulated.
+
+    The cutter (:class:`gears.cutter.ShaperCutter`; default
+    :meth:`~gears.cutter.ShaperCutter.default_for`) turns with the work at the cutting centre
+    distance; one cutter tooth's positions (:func:`shaper_positions`) are united into one tooth
+    space, patterned ``z`` times and subtracted from the blank (tip disc, or for an internal
+    gear the ring between its tip circle and ``rim`` outside the root circle). The result
+    reproduces the shaper's own root circle and fillet, undercut, pointed tips and any trimming
+    of a ring's tips by the cutter on its way out; it agrees with the analytic shaper outline
+    (:class:`gears.cutter.ShaperProfile`) within the tolerance (tests/gears/test_shaper.py).
 
     Raises
     ------
     GearError
-        Always; use ``method='analytic'`` (internal gears: the rack-limit outline of
-        :mod:`gears.profile`) or ``method='rack'`` for external gears.
+        When the cutter does not fit the gear or the cut falls apart.
+
+    Examples
+    --------
+    >>> from gears import Gear
+    >>> p = shaper_outline(Gear(60, 1, internal=True), tolerance=0.01)
+    >>> p.is_valid, len(p.interiors)
+    (True, 1)
     """
-    raise GearError(
-        "shaper-cutter simulation is not implemented yet; use method='analytic' (internal "
-        "gears: the rack-limit outline) or method='rack' (external gears)"
-    )
+    from gears.cutter import ShaperProfile
+
+    tol = _check_tolerance(tolerance)
+    prof = ShaperProfile(gear, cutter, backlash)
+    t = prof.tool
+    m = gear.module
+    space = _shaper_space(prof, tol)
+    if space.geom_type != "Polygon":
+        raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
+    if t.s > 0:
+        blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
+        space = space.intersection(shapely.Polygon(circle_points(prof.ra + 0.1 * m, tol)))
+    else:
+        width = default_rim(gear) if rim is None else float(rim)
+        if not (math.isfinite(width) and width > 0):
+            raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
+        outer = circle_points(prof.rf + width, tol / 2)
+        blank = shapely.Polygon(outer, holes=[circle_points(prof.ra, tol / 2, ccw=False)])
+        clip = shapely.Polygon(
+            circle_points(prof.rf + 0.5 * width, tol),
+            holes=[circle_points(max(prof.ra - 0.1 * m, 1e-3 * m), tol, ccw=False)],
+        )
+        space = space.intersection(clip)
+    if space.geom_type != "Polygon":
+        raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
+    spaces = _pattern(space, gear.teeth, math.radians(angle))
+    cut = blank.difference(shapely.union_all(spaces))
+    holes = 0 if t.s > 0 else 1
+    if cut.geom_type != "Polygon" or len(cut.interiors) != holes:
+        raise GearError(
+            f"z = {gear.teeth}, x = {gear.profile_shift:g}: the cut gear falls apart "
+            f"({cut.geom_type}); the teeth are cut away"
+        )
+    ring = cut.exterior if t.s > 0 else cut.interiors[0]
+    pts = np.asarray(ring.coords)[:-1]
+    if not shapely.LinearRing(pts).is_ccw:
+        pts = pts[::-1]
+    return assemble(gear, pts, tol, bore, rim, center, prof.rf)

@@ -261,6 +261,10 @@ class ToothProfile:
 
         return float(brentq(f, tau[i], tau[i + 1], xtol=1e-15, rtol=1e-15))
 
+    def _land_angle(self) -> float:
+        """Angle from the space centre where the root arc (the tool tip's image) ends."""
+        return self.tool.u_c / self.tool.r
+
     @cached_property
     def _tangent_radius(self) -> float:
         t = self.tool
@@ -367,7 +371,7 @@ class ToothProfile:
                 f"{g.profile_shift:g} is too small for this tool"
             )
         half = math.pi / self.z
-        if self.tool.u_c / self.tool.r >= half:
+        if self._land_angle() >= half:
             raise GearError(f"z = {self.z}: the tool tip land is wider than the tooth pitch")
         if self.tool.s < 0 and self.eta_involute(self.ra) >= half:
             raise GearError(
@@ -440,10 +444,9 @@ class ToothProfile:
             Curve each point starts: 0 root arc, 1 fillet, 2 involute, 3 tip arc.
         """
         tol = _check_tolerance(tolerance)
-        t = self.tool
         rhos, etas, kinds = [], [], []
         # root arc, from the space centre to the end of the tip land's image
-        eta_land = t.u_c / t.r
+        eta_land = self._land_angle()
         fold = self.ring_fold
         if fold is not None:
             eta_land = float(self.fillet(fold[0])[1])
@@ -553,7 +556,7 @@ def default_rim(gear) -> float:
 
 def outline(
     gear, tolerance: float = 0.001, backlash: float = 0.0, bore: float | None = None,
-    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0),
+    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0), cutter=None,
 ) -> shapely.Polygon:  # fmt: skip
     """Analytic outline of ``gear`` as a shapely Polygon (transverse section, mm).
 
@@ -572,6 +575,10 @@ def outline(
         Rotation in degrees; at 0 tooth 0 is centred on the +x axis (a ring's tooth too).
     center : (float, float)
         Position of the gear axis.
+    cutter : ShaperCutter or None
+        None: the gear's rack tool (for an internal gear its rack limit). A
+        :class:`gears.cutter.ShaperCutter`: the outline that shaper leaves (its fillet and root
+        circle).
 
     Returns
     -------
@@ -587,7 +594,12 @@ def outline(
     (True, 0.98)
     """
     tol = _check_tolerance(tolerance)
-    prof = ToothProfile(gear, backlash)
+    if cutter is None:
+        prof = ToothProfile(gear, backlash)
+    else:
+        from gears.cutter import ShaperProfile
+
+        prof = ShaperProfile(gear, cutter, backlash)
     pts = prof.ring(tol, math.radians(angle))
     return assemble(gear, pts, tol, bore, rim, center, prof.rf)
 
