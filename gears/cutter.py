@@ -366,7 +366,9 @@ class ShaperProfile(ToothProfile):
         if not (math.isfinite(b) and b >= 0):
             raise GearError(f"backlash = {backlash!r} mm; valid is a finite number >= 0")
         self.backlash = b
-        self.cutter = ShaperCutter.default_for(gear) if cutter is None else cutter
+        if cutter is None:
+            cutter = getattr(gear, "cutter", None) or ShaperCutter.default_for(gear)
+        self.cutter = cutter
         if not isinstance(self.cutter, ShaperCutter):
             raise GearError(f"cutter = {cutter!r}; valid is a ShaperCutter or None")
         self.tool = ShaperTool(gear, self.cutter, b)

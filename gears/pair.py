@@ -652,13 +652,14 @@ class GearPair:
     # --- checks ----------------------------------------------------------------------------------
     def outlines(
         self, angle: float = 0.0, tolerance: float = 0.001, method: str = "analytic",
-        backlash: float = 0.0,
+        backlash: float = 0.0, cutter=None,
     ):  # fmt: skip
         """Both outlines in mesh: gear 1 at the origin turned by ``angle`` degrees, gear 2 at the
-        working centre distance (see :func:`gears.profile.pair_outlines`)."""
+        working centre distance (see :func:`gears.profile.pair_outlines`; ``cutter`` is a
+        shaper cutter for both gears or a pair of them)."""
         from gears.profile import pair_outlines
 
-        return pair_outlines(self, angle, tolerance, method, backlash)
+        return pair_outlines(self, angle, tolerance, method, backlash, cutter)
 
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
         """Both gears' findings (prefixed ``g1.``/``g2.``) plus ``contact_ratio``,

@@ -576,9 +576,9 @@ def outline(
     center : (float, float)
         Position of the gear axis.
     cutter : ShaperCutter or None
-        None: the gear's rack tool (for an internal gear its rack limit). A
-        :class:`gears.cutter.ShaperCutter`: the outline that shaper leaves (its fillet and root
-        circle).
+        None: the gear's own ``cutter`` if it has one, else its rack tool (for an internal gear
+        the rack limit). A :class:`gears.cutter.ShaperCutter`: the outline that shaper leaves
+        (its fillet and root circle).
 
     Returns
     -------
@@ -594,6 +594,8 @@ def outline(
     (True, 0.98)
     """
     tol = _check_tolerance(tolerance)
+    if cutter is None:
+        cutter = getattr(gear, "cutter", None)
     if cutter is None:
         prof = ToothProfile(gear, backlash)
     else:
@@ -635,29 +637,39 @@ def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
 def gear_outline(
     gear, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
     bore: float | None = None, rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0),
+    cutter=None,
 ) -> shapely.Polygon:  # fmt: skip
     """Dispatch :meth:`Gear.outline` to the analytic outline or a simulated cutter.
+
+    ``cutter`` (a :class:`gears.cutter.ShaperCutter`) selects the shaper for
+    ``method='analytic'`` (its exact envelope) and ``method='shaper'`` (default: the cutter of
+    :meth:`ShaperCutter.default_for`).
 
     Raises
     ------
     GearError
-        For an unknown ``method``.
+        For an unknown ``method``, or a cutter given with ``method='rack'``.
     """
     if method == "analytic":
-        return outline(gear, tolerance, backlash, bore, rim, angle, center)
+        return outline(gear, tolerance, backlash, bore, rim, angle, center, cutter)
     from gears import generate
 
     if method == "rack":
+        if cutter is not None or getattr(gear, "cutter", None) is not None:
+            raise GearError(
+                "this gear is cut by a shaper cutter; use method='shaper' or 'analytic', not 'rack'"
+            )
         return generate.rack_outline(gear, tolerance, backlash, bore, angle, center)
     if method == "shaper":
         return generate.shaper_outline(
-            gear, tolerance, backlash, bore=bore, rim=rim, angle=angle, center=center
-        )
+            gear, tolerance, backlash, bore=bore, rim=rim, angle=angle, center=center,
+            cutter=cutter,
+        )  # fmt: skip
     raise GearError(f"method = {method!r}; valid are 'analytic', 'rack', 'shaper'")
 
 
 def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: str = "analytic",
-                  backlash: float = 0.0):  # fmt: skip
+                  backlash: float = 0.0, cutter=None):  # fmt: skip
     """Outlines of a :class:`GearPair` in mesh, as mounted (tip shortening applied).
 
     Gear 1 is centred at the origin and turned by ``angle`` degrees (at 0 its tooth 0 points
@@ -666,7 +678,9 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     mesh touch (its tooth fills the mating space on the working circle exactly).
     ``backlash`` is the pair's normal backlash; each gear's teeth are thinned by half of it.
     ``method`` applies to both gears; a rack cannot cut a ring, so with ``method='rack'`` the
-    ring is drawn analytically (its rack-limit outline).
+    ring is cut by its default shaper (simulated). ``cutter`` is a
+    :class:`gears.cutter.ShaperCutter` for both gears or a pair ``(cutter1, cutter2)`` (None
+    entries: the gear's default), used with ``method='shaper'`` or ``'analytic'``.
 
     Returns
     -------
@@ -677,12 +691,13 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     g1, g2 = pair.gears
     a = pair.center_distance
     z1, z2 = g1.teeth, g2.teeth
-    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle)
-    m2 = "analytic" if (g2.internal and method == "rack") else method
+    c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
+    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1)
+    m2 = "shaper" if (g2.internal and method == "rack") else method
     if g2.internal:
         a2 = 180.0 / z2 + angle * z1 / z2
-        p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=(-a, 0.0))
+        p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=(-a, 0.0), cutter=c2)
     else:
         a2 = 180.0 + 180.0 / z2 - angle * z1 / z2
-        p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=(a, 0.0))
+        p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=(a, 0.0), cutter=c2)
     return p1, p2
