@@ -180,6 +180,64 @@ class ShaperCutter:
         rb = gear.base_diameter / 2
         return 2 * math.sqrt(rb * rb + max(rho_w, 0.0) ** 2)
 
+    def as_gear(self, gear):
+        """The cutter as a :class:`gears.Gear` meshing with ``gear`` (same module, angles; tip
+        at ``d_a0``; a sharp rack so no fillet is implied)."""
+        from gears.gear import Gear
+        from gears.rack import BasicRack
+
+        h, _ = self._h(gear)
+        rack = BasicRack(gear.rack.pressure_angle, h, h, 0.0, name="shaper cutter")
+        return Gear(
+            self.teeth, gear.module, gear.pressure_angle, gear.helix_angle, self.shift,
+            rack=rack,
+        )  # fmt: skip
+
+    def check(self, gear):
+        """Can this cutter cut ``gear``? A :class:`gears.Report` with
+
+        * ``undercut`` (external gear): the cutter's involute must end before the interference
+          point N1 (margin in mm along the cutting line of action);
+        * ``trimming`` (internal gear): on its way out of a space the cutter tooth must clear
+          the ring's tips (KHK trochoid-interference condition, standards.md §1.8, with the
+          cutter as the pinion at the cutting centre distance; margin in rad). A failing margin
+          beyond about -0.005 rad shows as cut-off ring tips in ``method='shaper'``;
+        * ``radial_infeed`` (internal gear): the cutter can be fed in radially to full depth
+          without cutting the ring's tips (KHK trimming condition; margin in rad). The
+          simulation models generation at full depth only, so it does not show this one.
+
+        >>> from gears import Gear
+        >>> ring = Gear(40, 1, internal=True, profile_shift=0.3)
+        >>> ShaperCutter(20).check(ring).ok, ShaperCutter(37).check(ring).failed()
+        (True, ['trimming', 'radial_infeed'])
+        """
+        from gears.pair import GearPair
+        from gears.report import Finding, Report
+
+        if not gear.internal:
+            t = ShaperTool(gear, self)
+            margin = t.length - t.rho_t_flank
+            return Report(
+                [
+                    Finding(
+                        "undercut", margin,
+                        f"cutter z0 = {self.teeth}: its involute ends {margin:+.4f} mm before N1 "
+                        "on the cutting line of action"
+                        + ("" if margin >= 0 else " (it undercuts the flank)"),
+                    )
+                ]
+            )  # fmt: skip
+        pair = GearPair(self.as_gear(gear), gear, tip_shortening=False)
+        found = pair.check()
+        out = []
+        for src, name, what in [
+            ("trochoid_interference", "trimming", "the cutter clears the ring's tips leaving"),
+            ("radial_interference", "radial_infeed", "the cutter can be fed in radially"),
+        ]:
+            f = found[src]
+            out.append(Finding(name, f.margin, f"cutter z0 = {self.teeth}: {what}", unit="rad"))
+        return Report(out)
+
     def outline(self, gear, tolerance: float = 0.001, **kwargs):
         """Analytic outline of ``gear`` cut by this cutter (see :func:`gears.profile.outline`)."""
         from gears.profile import outline

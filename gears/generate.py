@@ -93,15 +93,14 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     # analytic contact points of the right tool half: fillet (round) and flank up to the tip
     tau = np.linspace(0.0, 1.0, 200)
     samples_phi, samples_dphi = [], []
-    if t.a > 0:
-        rho_f, eta_f, phi_f = prof.fillet(tau)
-        xy = np.stack([rho_f * np.sin(eta_f), rho_f * np.cos(eta_f)], axis=-1)
-        ds = np.hypot(*np.gradient(xy, axis=0).T)
-        dphi = np.abs(np.gradient(phi_f))
-        speed = np.maximum(ds / np.where(dphi > 0, dphi, np.inf), 1e-300)
-        rho_tool = t.b * t.b / t.a if t.a >= t.b else t.a * t.a / t.b
-        samples_phi.append(phi_f)
-        samples_dphi.append(np.sqrt(8.0 * e * rho_tool) / speed)
+    rho_f, eta_f, phi_f = prof.fillet(tau)
+    xy = np.stack([rho_f * np.sin(eta_f), rho_f * np.cos(eta_f)], axis=-1)
+    ds = np.hypot(*np.gradient(xy, axis=0).T)
+    dphi = np.abs(np.gradient(phi_f))
+    speed = np.maximum(ds / np.where(dphi > 0, dphi, np.inf), 1e-300)
+    rho_tool = 0.0 if t.a == 0 else (t.b * t.b / t.a if t.a >= t.b else t.a * t.a / t.b)
+    samples_phi.append(phi_f)
+    samples_dphi.append(_fillet_step(e, rho_tool) / speed)
     v_lo = min(t.v_f, prof.v_limit) if t.s > 0 else t.v_f
     # flank heights up to the tip (the flank maps monotonically to the involute)
     v_hi = t.s * 3.0 * prof.gear.module
@@ -131,6 +130,14 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     # one step past the last contact sample so the tip corner is cut completely
     half = np.append(half, phi_max + step)
     return np.concatenate([-half[:0:-1], half])
+
+
+def _fillet_step(e: float, rho: float) -> float:
+    """Largest travel of the generated fillet point between two tool positions for a scallop
+    <= e: sqrt(8 e rho) for a tip round of radius rho; a sharp tool corner leaves a notch of up
+    to half its travel (two edges meeting at <= 90 deg beside the chord), so 2 e - the notch
+    error falls only as 1/N there."""
+    return max(math.sqrt(8.0 * e * rho), 2.0 * e)
 
 
 def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
@@ -182,14 +189,17 @@ def _pattern(space, z: int, angle: float):
     then repeat it around the gear."""
     step = 2 * math.pi / z
     first = angle + step / 2 - math.pi / 2
-    coords = shapely.get_coordinates(space.exterior)
-    rings = []
-    for k in range(z):
-        a = first + k * step
-        c, s = math.cos(a), math.sin(a)
-        x = c * coords[:, 0] - s * coords[:, 1]
-        rings.append(np.stack([x, s * coords[:, 0] + c * coords[:, 1]], -1))
-    return shapely.polygons(rings)
+    out = []
+    for part in shapely.get_parts(space):  # a shaper's tooth may also cut beside its space
+        coords = shapely.get_coordinates(part.exterior)
+        rings = []
+        for k in range(z):
+            a = first + k * step
+            c, s = math.cos(a), math.sin(a)
+            x = c * coords[:, 0] - s * coords[:, 1]
+            rings.append(np.stack([x, s * coords[:, 0] + c * coords[:, 1]], -1))
+        out.append(shapely.polygons(rings))
+    return np.concatenate(out)
 
 
 def rack_outline(
@@ -247,6 +257,9 @@ def _involute_rolls(rb: float, t0: float, t1: float, tol: float) -> np.ndarray:
     dw = 1.5 * math.sqrt(8.0 * tol / rb)
     n = max(1, math.ceil(abs(w1 - w0) / dw))
     return np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
+
+
+_MAX_EXTRA_POSITIONS = 20000
 
 
 def shaper_tool_polygon(prof, tolerance: float) -> np.ndarray:
@@ -334,7 +347,7 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     speed_c = np.abs(t.contact_lambda(p, n) + t.rho) * t.omega_rel
     speed = np.maximum(np.maximum(speed, np.where(tau <= 1.0, speed_c, 0.0)), 1e-9 * m)
     phis.append(phi_r)
-    dphis.append(np.sqrt(8 * e * max(t.rho, 0.02 * m)) / speed)
+    dphis.append(_fillet_step(e, t.rho) / speed)
     phi_all = np.abs(np.concatenate(phis))
     dphi_all = np.concatenate(dphis)
     dphi_all = np.minimum(dphi_all, math.pi / (4 * prof.z))
@@ -349,15 +362,28 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     land = min(2 * land_phi, root_sag) if land_phi > 0 else root_sag
     need = np.where(grid <= 2 * land_phi + land, np.minimum(need, land), need)
     half, step = _spread(grid, need)
-    # keep turning until the tooth has left the blank (trimming, exit of the tip corner)
+    # keep turning until the tooth leaves the blank (it may trim a ring's tips on its way out);
+    # its next visit, a relative cutter turn later, repeats this one a whole number of pitches on
+    # and is covered by patterning, so half a relative turn is the most that is needed
     tooth = shaper_tool_polygon(prof, tolerance)
-    extra = phi_max + step * np.arange(1, 2001)
-    extra = extra[extra < phi_max + 2 * math.pi / prof.z]
+    span = math.pi / t.omega_rel
+    count = math.ceil(span / step)
+    if count > _MAX_EXTRA_POSITIONS:
+        raise GearError(
+            f"cutter z0 = {t.z0} for z = {t.z}: the cutter turns so slowly against the work "
+            f"(relative speed {t.omega_rel:.3g}) that its teeth linger in the blank; use a "
+            "cutter with fewer teeth"
+        )
+    extra = phi_max + step * np.arange(1, count + 1)
     r = np.hypot(*np.moveaxis(t.place(tooth, extra), -1, 0))
     inside = (r.min(axis=1) < prof.ra) if t.s > 0 else (r.max(axis=1) > prof.ra)
     out = np.flatnonzero(~inside)
-    k = int(out[0]) + 1 if out.size else len(extra)
-    half = np.concatenate([half, extra[:k]])
+    if not out.size:
+        raise GearError(
+            f"cutter z0 = {t.z0} for z = {t.z}: the cutter tooth never leaves the blank; use a "
+            "cutter with fewer teeth"
+        )
+    half = np.concatenate([half, extra[: int(out[0]) + 1]])
     return np.concatenate([-half[:0:-1], half])
 
 
@@ -402,8 +428,6 @@ def shaper_outline(
     t = prof.tool
     m = gear.module
     space = _shaper_space(prof, tol)
-    if space.geom_type != "Polygon":
-        raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
     if t.s > 0:
         blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
         space = space.intersection(shapely.Polygon(circle_points(prof.ra + 0.1 * m, tol)))
@@ -418,8 +442,6 @@ def shaper_outline(
             holes=[circle_points(max(prof.ra - 0.1 * m, 1e-3 * m), tol, ccw=False)],
         )
         space = space.intersection(clip)
-    if space.geom_type != "Polygon":
-        raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
     spaces = _pattern(space, gear.teeth, math.radians(angle))
     cut = blank.difference(shapely.union_all(spaces))
     holes = 0 if t.s > 0 else 1
@@ -427,6 +449,13 @@ def shaper_outline(
         raise GearError(
             f"z = {gear.teeth}, x = {gear.profile_shift:g}: the cut gear falls apart "
             f"({cut.geom_type}); the teeth are cut away"
+        )
+    from gears.measure import thickness_on
+
+    if len(thickness_on(cut, gear.reference_diameter)) != gear.teeth:
+        raise GearError(
+            f"z = {gear.teeth}, cutter z0 = {t.z0}: the cutter cuts the teeth away (see "
+            "ShaperCutter.check for trimming)"
         )
     ring = cut.exterior if t.s > 0 else cut.interiors[0]
     pts = np.asarray(ring.coords)[:-1]

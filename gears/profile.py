@@ -150,6 +150,8 @@ class RackTool:
         t = np.asarray(t, float)
         u = self.u_c + self.a * np.cos(t)
         v = self.v_c + self.s * self.b * np.sin(t)
+        if self.a == 0:  # sharp tool corner: its normals fan from the tip land to the flank
+            return u, v, np.cos(t), self.s * np.sin(t)
         return u, v, self.b * np.cos(t), self.s * self.a * np.sin(t)
 
     def flank_points(self, v):
