@@ -60,6 +60,12 @@ def test_cli_profile_writes_files(tmp_path, capsys):
     assert png.stat().st_size > 1000
     assert main(["profile", "80", "--internal", "--method", "rack", "-o", str(out)]) == 2
     assert "cannot generate an internal gear" in capsys.readouterr().err
+    # a ring cut by a 30-tooth shaper (simulated): one outer circle and one toothed hole
+    args = ["profile", "80", "-m", "2", "--internal", "--method", "shaper", "--cutter-teeth", "30"]
+    assert main([*args, "--tolerance", "0.01", "-o", str(out)]) == 0
+    assert out.read_text().count("<path") == 1 and "shaper" in capsys.readouterr().out
+    assert main(["profile", "40", "--internal", "--cutter-teeth", "40", "-o", str(out)]) == 2
+    assert "z0 < z" in capsys.readouterr().err
 
 
 def test_plots_render(tmp_path):
