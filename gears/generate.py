@@ -3,7 +3,7 @@
 Two tools (standards.md §3.2; Ozols §21-6: Maag and Fellows methods; Joldasbekov §2.8):
 
 * :func:`rack_outline` - the rack cutter (the basic rack's mirror image: straight flanks, tip
-  land, tip rounds; optional protuberance) rolled on the reference circle of an external gear;
+  land, tip rounds) rolled on the reference circle of an external gear;
 * :func:`shaper_outline` - a pinion-type (Fellows) cutter of ``cutter_teeth`` teeth, for internal
   gears and for external gears cut by a shaper.
 
@@ -35,6 +35,7 @@ from gears.errors import GearError
 from gears.profile import (
     ToothProfile,
     _check_tolerance,
+    _refuse_protuberance,
     arc_segments,
     assemble,
     circle_points,
@@ -225,6 +226,7 @@ def rack_outline(
     (True, 0.98)
     """
     tol = _check_tolerance(tolerance)
+    _refuse_protuberance(gear)
     if gear.internal:
         raise GearError(
             "a rack cutter cannot generate an internal gear; use method='analytic' (the "
@@ -424,6 +426,7 @@ def shaper_outline(
     from gears.cutter import ShaperProfile
 
     tol = _check_tolerance(tolerance)
+    _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
     t = prof.tool
     m = gear.module

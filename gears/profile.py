@@ -65,6 +65,14 @@ __all__ = [
 _SAFETY = 0.5
 
 
+def _refuse_protuberance(gear) -> None:
+    if gear.rack.protuberance > 0:
+        raise GearError(
+            f"rack protuberance = {gear.rack.protuberance:g} m: protuberance tools are not "
+            "modelled in the outlines; use a rack without protuberance"
+        )
+
+
 def _check_tolerance(tolerance: float) -> float:
     t = float(tolerance)
     if not (math.isfinite(t) and t > 0):
@@ -596,6 +604,7 @@ def outline(
     (True, 0.98)
     """
     tol = _check_tolerance(tolerance)
+    _refuse_protuberance(gear)
     if cutter is None:
         cutter = getattr(gear, "cutter", None)
     if cutter is None:

@@ -46,8 +46,9 @@ class BasicRack:
     name : str
         Label shown in reports.
     protuberance : float
-        Protuberance of the tool flank near its tip, in module units (0 = none); used by the
-        simulated cutting of :mod:`gears.generate`.
+        Protuberance of the tool flank near its tip, in module units (0 = none). Recorded only:
+        the outlines of :mod:`gears.profile` and :mod:`gears.generate` do not model it yet and
+        refuse a rack with a protuberance rather than draw it without one.
 
     Raises
     ------

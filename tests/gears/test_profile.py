@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import shapely
 
-from gears import Gear, GearError, GearPair
+from gears import BasicRack, Gear, GearError, GearPair
 from gears.measure import thickness_on
 from gears.profile import ToothProfile, outline, undercut_form_diameter
 
@@ -192,6 +192,15 @@ def test_pointed_tooth_ends_at_pointed_diameter():
     assert g.pointed_tip_diameter < g.tip_diameter
     r = np.hypot(*np.asarray(outline(g, 1e-5).exterior.coords).T)
     assert r.max() == pytest.approx(g.pointed_tip_diameter / 2, abs=1e-9)
+
+
+def test_protuberance_is_refused_not_ignored():
+    # source: the BasicRack docstring: a protuberance tool is not modelled; drawing it without
+    # its protuberance would be silently wrong
+    g = Gear(20, 1, rack=BasicRack(20, 1.0, 1.25, 0.3, protuberance=0.02))
+    for method in ("analytic", "rack", "shaper"):
+        with pytest.raises(GearError, match="protuberance"):
+            g.outline(tolerance=0.01, method=method)
 
 
 def test_bad_arguments():
