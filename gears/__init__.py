@@ -2,9 +2,10 @@
 
 The public surface (see ``docs/``)::
 
-    from gears import BasicRack, Gear, GearPair
+    from gears import BasicRack, Gear, GearPair, ShaperCutter
 """
 
+from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
 from gears.pair import GearPair, PairGeometry, Rack, pair_geometry
@@ -20,5 +21,6 @@ __all__ = [
     "PairGeometry",
     "Rack",
     "Report",
+    "ShaperCutter",
     "pair_geometry",
 ]
