@@ -1,9 +1,18 @@
 """Benchmark: tooth outlines, speed versus accuracy (issue 5; standards.md §3.2, §5 (b)-(c)).
 
-z = 20, m = 1, ISO 53 A, full outline (all teeth, shapely Polygon). For tolerances 1e-1 ...
-1e-4 mm, both methods: best-of-N wall time and the *achieved* deviation, measured as the
-Hausdorff distance to the analytic outline at tolerance / 1000 (for the analytic method this
-measures the chord sag; for the rack simulation the scallops, tool polygon and tip circle).
+Full outlines (all teeth, shapely Polygon), ISO 53 A, m = 1, tolerances 1e-1 ... 1e-4 mm, for
+each method the best-of-N wall time and the *achieved* deviation, measured as the Hausdorff
+distance to the exact outline of the same tool at tolerance / 1000:
+
+* ``analytic``: z = 20, the rack envelope (`gears.profile.outline`); against itself at
+  tolerance / 1000, so this measures the chord sag;
+* ``rack``: z = 20, the simulated rack cutting (`rack_outline`), against the analytic outline
+  (scallops, tool polygon, tip circle);
+* ``shaper``: z = 20, the simulated shaper cutting (`shaper_outline`) with the default cutter
+  (z0 = 76), against the analytic shaper envelope (``outline(gear, tol / 1000, cutter=c)``);
+* ``shaper internal``: a ring z = 80 with its default cutter (z0 = 40), the toothed boundary
+  (``interiors[0]``) against that of the analytic shaper envelope.
+
 Writes the log-log chart ``docs/images/profile_speed_accuracy.png``. Run:
 ``python tests/benchmarks/bench_profile.py``. Not collected by pytest.
 """
@@ -18,12 +27,14 @@ import time
 import numpy as np
 
 from gears import Gear
-from gears.generate import rack_outline
+from gears.cutter import ShaperCutter
+from gears.generate import rack_outline, shaper_outline
 from gears.profile import outline
 
 HERE = pathlib.Path(__file__).resolve().parent
 CHART = HERE.parent.parent / "docs" / "images" / "profile_speed_accuracy.png"
 TOLERANCES = [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4]
+METHODS = ["analytic", "rack", "shaper", "shaper internal"]
 
 
 def best_of(fn, repeat):
@@ -35,16 +46,32 @@ def best_of(fn, repeat):
     return best
 
 
-def measure(gear):
+def _ring(poly, internal):
+    """The toothed boundary: the exterior of a disc, the hole of a ring."""
+    return poly.interiors[0] if internal else poly.exterior
+
+
+def cases():
+    """(name, gear, outline function (gear, tolerance) -> Polygon, reference cutter, repeats)."""
+    ext, ring = Gear(20, 1), Gear(80, 1, internal=True)
+    c_ext, c_ring = ShaperCutter.default_for(ext), ShaperCutter.default_for(ring)
+    return [
+        ("analytic", ext, outline, None, 30),
+        ("rack", ext, rack_outline, None, 7),
+        ("shaper", ext, lambda g, tol: shaper_outline(g, tol, cutter=c_ext), c_ext, 7),
+        ("shaper internal", ring, lambda g, tol: shaper_outline(g, tol, cutter=c_ring), c_ring, 5),
+    ]
+
+
+def measure():
     rows = []
-    for tol in TOLERANCES:
-        ref = outline(gear, tol / 1000).exterior
-        for name, fn, rep in [("analytic", outline, 30), ("rack", rack_outline, 7)]:
-            poly = fn(gear, tol)
-            dev = poly.exterior.hausdorff_distance(ref)
-            t = best_of(lambda fn=fn, tol=tol: fn(gear, tol), rep)
-            n = len(poly.exterior.coords) - 1
-            rows.append((name, tol, t, dev, n))
+    for name, gear, fn, cutter, rep in cases():
+        for tol in TOLERANCES:
+            ref = _ring(outline(gear, tol / 1000, cutter=cutter), gear.internal)
+            ring = _ring(fn(gear, tol), gear.internal)
+            dev = ring.hausdorff_distance(ref)
+            t = best_of(lambda fn=fn, gear=gear, tol=tol: fn(gear, tol), rep)
+            rows.append((name, tol, t, dev, len(ring.coords) - 1))
     return rows
 
 
@@ -54,23 +81,28 @@ def chart(rows, path=CHART):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.2))
-    for i, name in enumerate(["analytic", "rack"]):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.4))
+    labels = {"analytic": "analytic, z = 20", "rack": "rack simulation, z = 20",
+              "shaper": "shaper simulation, z = 20 (z0 = 76)",
+              "shaper internal": "shaper simulation, ring z = 80 (z0 = 40)"}  # fmt: skip
+    for i, name in enumerate(METHODS):
         r = np.array([(tol, t, dev) for n, tol, t, dev, _ in rows if n == name])
-        a1.loglog(r[:, 2] * 1e3, r[:, 1] * 1e3, "o-", color=f"C{i}", label=name)
-        a2.loglog(r[:, 0] * 1e3, r[:, 2] * 1e3, "o-", color=f"C{i}", label=name)
+        kw = dict(color=f"C{i}", label=labels[name], ls="--" if "internal" in name else "-")
+        a1.loglog(r[:, 2] * 1e3, r[:, 1] * 1e3, "o", **kw)
+        a2.loglog(r[:, 0] * 1e3, r[:, 2] * 1e3, "o", **kw)
     a1.set_xlabel("achieved deviation, um")
     a1.set_ylabel("time per full outline, ms")
     a1.axhline(5, color="C0", ls=":", lw=0.8)
     a1.axhline(150, color="C1", ls=":", lw=0.8)
-    a1.set_title("z = 20, m = 1: speed vs accuracy (targets dotted)")
+    a1.set_title("m = 1: speed vs accuracy (targets dotted)")
     a2.loglog([0.1, 100], [0.1, 100], "k:", lw=0.8, label="deviation = tolerance")
     a2.set_xlabel("requested tolerance, um")
     a2.set_ylabel("achieved deviation, um")
     a2.set_title("tolerance honoured")
     for a in (a1, a2):
         a.grid(True, which="both", lw=0.3)
-        a.legend()
+    a1.legend(fontsize=7, loc="upper right")
+    a2.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=120)
@@ -80,7 +112,7 @@ def chart(rows, path=CHART):
 
 def main():
     print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs")
-    rows = measure(Gear(20, 1))
+    rows = measure()
     print("| method | tolerance, mm | time, ms | achieved deviation, um | vertices |")
     print("|---|---|---|---|---|")
     for name, tol, t, dev, n in rows:
