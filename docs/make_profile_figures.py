@@ -11,6 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 from gears import Gear, GearPair
+from gears.cutter import ShaperCutter
 from gears.plot import generation_figure, pair_figure, tooth_figure
 
 OUT = pathlib.Path(__file__).resolve().parent / "images"
@@ -27,6 +28,12 @@ def main():
         ),
         "profile_internal_pair.png": pair_figure(
             GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=0.5))
+        ),
+        "profile_shaper_internal.png": generation_figure(
+            Gear(40, 1, internal=True, profile_shift=0.3),
+            1e-2,
+            method="shaper",
+            cutter=ShaperCutter(20),
         ),
     }
     for name, fig in figures.items():

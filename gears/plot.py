@@ -108,31 +108,71 @@ def pair_figure(pair, angle: float = 0.0, tolerance: float = 1e-3, ax=None):
     return fig
 
 
-def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None):
-    """The rack cutter's positions (fading away from the centre) over the cut tooth space."""
-    from gears.generate import rack_positions, rack_tool_polygon
-    from gears.profile import ToothProfile
+def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None,
+                      method: str = "rack", cutter=None):  # fmt: skip
+    """The cutter's positions (fading away from the centre) over the cut tooth space.
 
+    ``method='rack'``: the rack cutter over an external gear. ``method='shaper'``: the teeth of a
+    shaper cutter (``cutter``, default the gear's own or
+    :meth:`gears.cutter.ShaperCutter.default_for`) at their positions
+    (:func:`gears.generate.shaper_positions`), for an external or an internal gear, over the
+    outline that cutter leaves. ``every`` draws every n-th position.
+    """
     plt = _plt()
-    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 6))
-    prof = ToothProfile(gear)
-    t = prof.tool
-    tool = rack_tool_polygon(prof, tolerance)
-    phis = rack_positions(prof, tolerance)[::every]
-    big = float(np.max(np.abs(phis)))
-    for phi in phis:
-        c, s_ = math.cos(phi), math.sin(phi)
-        x0 = tool[:, 0] + t.r * phi
-        y0 = t.r + t.xm + tool[:, 1]
-        x, y = c * x0 - s_ * y0, s_ * x0 + c * y0
+    if method == "rack":
+        if gear.internal:
+            raise GearError("a rack cutter cannot generate an internal gear; use method='shaper'")
+        if cutter is not None or getattr(gear, "cutter", None) is not None:
+            raise GearError("this gear is cut by a shaper cutter; use method='shaper'")
+    elif method != "shaper":
+        raise GearError(f"method = {method!r}; valid are 'rack', 'shaper'")
+    size = (8, 5) if gear.internal else (7, 6)
+    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=size)
+    m = gear.module
+    if method == "rack":
+        from gears.generate import rack_positions, rack_tool_polygon
+        from gears.profile import ToothProfile
+
+        prof = ToothProfile(gear)
+        t = prof.tool
+        tool = rack_tool_polygon(prof, tolerance)
+        phis = rack_positions(prof, tolerance)[::every]
+        c, s_ = np.cos(phis)[:, None], np.sin(phis)[:, None]
+        x0 = tool[None, :, 0] + t.r * phis[:, None]
+        y0 = t.r + t.xm + tool[None, :, 1]
+        placed = np.stack([c * x0 - s_ * y0, s_ * x0 + c * y0], axis=-1)
+        name = "rack generation"
+    else:
+        from gears.cutter import ShaperProfile
+        from gears.generate import shaper_positions, shaper_tool_polygon
+
+        prof = ShaperProfile(gear, cutter)
+        phis = shaper_positions(prof, tolerance)[::every]
+        placed = prof.tool.place(shaper_tool_polygon(prof, tolerance), phis)
+        c0 = prof.cutter
+        name = f"shaper generation (z0 = {c0.teeth}, x0 = {c0.shift:g})"
+    big = float(np.max(np.abs(phis))) or 1.0
+    for phi, xy in zip(phis, placed, strict=True):
+        # the tooth polygon is closed by a chord outside the blank: left open, it is not drawn
         alpha = 0.08 + 0.6 * (1 - abs(phi) / big)
-        ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="C1", lw=0.5, alpha=alpha)
-    p = gear.outline(tolerance / 10, angle=90 - 180 / gear.teeth)
+        ax.plot(xy[:, 0], xy[:, 1], color="C1", lw=0.5, alpha=alpha)
+    if method == "shaper":  # the working circles of the cutting mesh, touching at the pitch point
+        t = prof.tool
+        _circle(ax, t.rw0, center=(0.0, t.a0), color="0.5", lw=0.6, ls="--")
+        _circle(ax, t.rw, color="0.5", lw=0.6, ls="--")
+    cut = prof.cutter if method == "shaper" else None
+    p = gear.outline(tolerance / 10, angle=90 - 180 / gear.teeth, cutter=cut)
     _draw(ax, p, color="k", lw=1.2)
-    ra = prof.ra
-    ax.set_xlim(-0.45 * ra, 0.45 * ra)
-    ax.set_ylim(prof.rf - 2 * gear.module, ra + gear.module)
+    ra, rf = prof.ra, prof.rf
+    if gear.internal:
+        half = min(0.45 * ra, 1.7 * math.pi * gear.transverse_module)
+        ax.set_xlim(-half, half)
+        ax.set_ylim(ra - 2 * m, rf + 1.5 * m)
+    else:
+        ax.set_xlim(-0.45 * ra, 0.45 * ra)
+        ax.set_ylim(rf - 2 * m, ra + m)
     ax.set_aspect("equal")
-    ax.set_title(f"rack generation, z = {gear.teeth}, x = {gear.profile_shift:g}: "
+    kind = "internal z" if gear.internal else "z"
+    ax.set_title(f"{name}, {kind} = {gear.teeth}, x = {gear.profile_shift:g}: "
                  f"{len(phis)} tool positions")  # fmt: skip
     return fig

@@ -84,3 +84,25 @@ def test_plots_render(tmp_path):
     ):
         fig.savefig(tmp_path / "f.png")
         plt.close(fig)
+
+
+def test_shaper_generation_figure(tmp_path):
+    # the shaper's teeth over an internal and an external gear; a rack cannot cut a ring
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from gears.cutter import ShaperCutter
+    from gears.plot import generation_figure
+
+    ring = Gear(40, 1, internal=True, profile_shift=0.3)
+    for fig in (
+        generation_figure(ring, 1e-2, method="shaper", cutter=ShaperCutter(20)),
+        generation_figure(Gear(8, 1), 1e-2, every=2, method="shaper"),
+    ):
+        assert "shaper generation" in fig.axes[0].get_title()
+        fig.savefig(tmp_path / "f.png")
+        plt.close(fig)
+    with pytest.raises(GearError, match="rack cutter cannot"):
+        generation_figure(ring)
+    with pytest.raises(GearError, match="method"):
+        generation_figure(Gear(8, 1), method="hob")
