@@ -25,6 +25,7 @@ import platform
 import time
 
 import numpy as np
+import shapely
 
 from gears import Gear
 from gears.cutter import ShaperCutter
@@ -44,6 +45,20 @@ def best_of(fn, repeat):
         fn()
         best = min(best, time.perf_counter() - t)
     return best
+
+
+def _directed(a, b):
+    """Largest distance from a vertex of ring ``a`` to ring ``b`` (its segments, indexed)."""
+    pb = shapely.get_coordinates(b)
+    tree = shapely.STRtree(shapely.linestrings(np.stack([pb[:-1], pb[1:]], axis=1)))
+    _, d = tree.query_nearest(shapely.points(shapely.get_coordinates(a)), return_distance=True)
+    return float(d.max())
+
+
+def hausdorff(a, b):
+    """The (discrete, vertex-to-segment) Hausdorff distance of GEOS, ``a.hausdorff_distance(b)``,
+    with a segment index: GEOS compares every vertex with every segment, minutes at 1e-4 mm."""
+    return max(_directed(a, b), _directed(b, a))
 
 
 def _ring(poly, internal):
@@ -69,7 +84,7 @@ def measure():
         for tol in TOLERANCES:
             ref = _ring(outline(gear, tol / 1000, cutter=cutter), gear.internal)
             ring = _ring(fn(gear, tol), gear.internal)
-            dev = ring.hausdorff_distance(ref)
+            dev = hausdorff(ring, ref)
             t = best_of(lambda fn=fn, gear=gear, tol=tol: fn(gear, tol), rep)
             rows.append((name, tol, t, dev, len(ring.coords) - 1))
     return rows
@@ -81,7 +96,7 @@ def chart(rows, path=CHART):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.4))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 5))
     labels = {"analytic": "analytic, z = 20", "rack": "rack simulation, z = 20",
               "shaper": "shaper simulation, z = 20 (z0 = 76)",
               "shaper internal": "shaper simulation, ring z = 80 (z0 = 40)"}  # fmt: skip
@@ -101,9 +116,8 @@ def chart(rows, path=CHART):
     a2.set_title("tolerance honoured")
     for a in (a1, a2):
         a.grid(True, which="both", lw=0.3)
-    a1.legend(fontsize=7, loc="upper right")
-    a2.legend(fontsize=7, loc="upper left")
-    fig.tight_layout()
+    fig.legend(*a2.get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8)
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=120)
     plt.close(fig)
