@@ -11,8 +11,9 @@ generates an involute"), on the cutting centre distance
 
 (standards.md §1.2 with the cutter as the mating gear). Hence the shaper-cut root circle
 ``d_f = 2 (a0 - r_a0)`` (external) or ``2 (a0 + r_a0)`` (internal), which differs from the rack
-formula whenever ``x != x0`` (:meth:`ShaperCutter.root_diameter`), and the form circle where the
-cutter's involute ends (:meth:`ShaperCutter.form_diameter`).
+formula unless ``x +- x0 = 0`` (``x = -x0`` external, ``x = x0`` internal)
+(:meth:`ShaperCutter.root_diameter`), and the form circle where the cutter's involute ends
+(:meth:`ShaperCutter.form_diameter`).
 
 **Envelope in closed form** (the same meshing condition as for the rack, standards.md §3.1): a
 cutter point ``p`` with outward normal ``n`` touches the work when its normal passes through the
@@ -202,6 +203,10 @@ class ShaperCutter:
           the ring's tips (KHK trochoid-interference condition, standards.md §1.8, with the
           cutter as the pinion at the cutting centre distance; margin in rad). A failing margin
           beyond about -0.005 rad shows as cut-off ring tips in ``method='shaper'``;
+        * ``tip_past_n1`` (internal gear): the ring's tip must not pass the cutter's
+          interference point N1 (KHK involute-interference condition), else the cutter's
+          non-involute root rounds the ring's tip corners (the simulation draws the cutter
+          radial below its base circle, so it shows this only approximately);
         * ``radial_infeed`` (internal gear): the cutter can be fed in radially to full depth
           without cutting the ring's tips (KHK trimming condition; margin in rad). The
           simulation models generation at full depth only, so it does not show this one.
@@ -231,6 +236,7 @@ class ShaperCutter:
         found = pair.check()
         out = []
         for src, name, what in [
+            ("involute_interference", "tip_past_n1", "the ring's tip stays before the cutter's N1"),
             ("trochoid_interference", "trimming", "the cutter clears the ring's tips leaving"),
             ("radial_interference", "radial_infeed", "the cutter can be fed in radially"),
         ]:

@@ -164,6 +164,15 @@ def test_positions_follow_the_error_law():
     assert central.max() <= 2 * land
 
 
+def test_ring_tip_past_the_cutters_n1_is_reported():
+    # source: KHK involute-interference condition (standards.md §1.8) with the cutter as the
+    # pinion: a standard ring z = 40 (x = 0) passes the default 20-tooth cutter's N1, x = 0.3
+    # keeps its tip before it
+    c = ShaperCutter(20)
+    assert c.check(Gear(40, 1, internal=True)).failed() == ["tip_past_n1"]
+    assert c.check(Gear(40, 1, internal=True, profile_shift=0.3)).ok
+
+
 def test_trimming_of_ring_tips():
     # source: KHK trochoid-interference condition (standards.md §1.8) with the cutter as the
     # pinion: a 37-tooth cutter on a 40-tooth ring fails it, a 20-tooth cutter passes; the
