@@ -39,8 +39,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 from gears.errors import GearError
-from gears.involute import inv, inv_inverse
-from gears.profile import ToothProfile
+from gears.gear import _half_angle_at_reference, tip_diameter
+from gears.involute import inv
+from gears.profile import ToothProfile, space_half_angle
 
 __all__ = ["ShaperCutter", "ShaperProfile", "ShaperTool"]
 
@@ -125,37 +126,32 @@ class ShaperCutter:
         rho = gear.rack.tool_tip_radius if self.tip_radius is None else self.tip_radius
         return h, rho
 
+    def _mesh(self, gear):
+        """The cutting mesh as a pair (cutter = gear 1): :func:`gears.pair.pair_geometry`."""
+        from gears.pair import pair_geometry
+
+        if gear.internal and gear.teeth - self.teeth < 1:
+            raise GearError(
+                f"cutter teeth = {self.teeth} for an internal gear of z = {gear.teeth}; valid is "
+                "z0 < z"
+            )
+        return pair_geometry(
+            self.teeth, gear.teeth, gear.module, self.shift, gear.profile_shift,
+            gear.pressure_angle, gear.helix_angle, gear.internal, tip_shortening=False,
+        )  # fmt: skip
+
     def working_pressure_angle(self, gear) -> float:
         """alpha_w0 of the cutting mesh, degrees (transverse)."""
-        z, z0 = gear.teeth, self.teeth
-        at = math.radians(gear.transverse_pressure_angle)
-        tan_an = math.tan(math.radians(gear.pressure_angle))
-        if gear.internal:
-            if z - z0 < 1:
-                raise GearError(
-                    f"cutter teeth = {z0} for an internal gear of z = {z}; valid is z0 < z"
-                )
-            y = 2 * tan_an * (gear.profile_shift - self.shift) / (z - z0) + inv(at)
-        else:
-            y = 2 * tan_an * (gear.profile_shift + self.shift) / (z + z0) + inv(at)
-        if not y > 0:
-            raise GearError(
-                f"cutter x0 = {self.shift:g} with z = {z}, x = {gear.profile_shift:g}: the cutting "
-                f"mesh has no working pressure angle (inv alpha_w0 = {y:.4g} <= 0)"
-            )
-        return math.degrees(float(inv_inverse(y)))
+        return float(self._mesh(gear).working_pressure_angle)
 
     def center_distance(self, gear) -> float:
         """Cutting centre distance a0 in mm."""
-        at = math.radians(gear.transverse_pressure_angle)
-        aw = math.radians(self.working_pressure_angle(gear))
-        zz = gear.teeth - self.teeth if gear.internal else gear.teeth + self.teeth
-        return gear.transverse_module * zz / 2 * math.cos(at) / math.cos(aw)
+        return float(self._mesh(gear).center_distance)
 
     def tip_diameter_of_cutter(self, gear) -> float:
-        """d_a0 = m_t z0 + 2 (h_a0* + x0) m_n."""
+        """d_a0 = m_t z0 + 2 (h_a0* + x0) m_n (:func:`gears.gear.tip_diameter`)."""
         h, _ = self._h(gear)
-        return gear.transverse_module * self.teeth + 2 * (h + self.shift) * gear.module
+        return float(tip_diameter(self.teeth, gear.module, self.shift, gear.helix_angle, h))
 
     def root_diameter(self, gear) -> float:
         """Root diameter the cutter leaves on ``gear``: 2 (a0 -+ r_a0) (- external, + internal).
@@ -176,8 +172,7 @@ class ShaperCutter:
         is undercut and the form circle comes from the undercut crossing
         (:attr:`ShaperProfile.form_radius`); this method then returns the base diameter.
         """
-        tool = ShaperTool(gear, self)
-        rho_w = tool.length - tool.rho_t_flank if tool.s > 0 else tool.length + tool.rho_t_flank
+        rho_w = ShaperTool(gear, self).form_roll_length
         rb = gear.base_diameter / 2
         return 2 * math.sqrt(rb * rb + max(rho_w, 0.0) ** 2)
 
@@ -220,8 +215,7 @@ class ShaperCutter:
         from gears.report import Finding, Report
 
         if not gear.internal:
-            t = ShaperTool(gear, self)
-            margin = t.length - t.rho_t_flank
+            margin = ShaperTool(gear, self).form_roll_length
             return Report(
                 [
                     Finding(
@@ -241,7 +235,7 @@ class ShaperCutter:
             ("radial_interference", "radial_infeed", "the cutter can be fed in radially"),
         ]:
             f = found[src]
-            out.append(Finding(name, f.margin, f"cutter z0 = {self.teeth}: {what}", unit="rad"))
+            out.append(Finding(name, f.margin, f"cutter z0 = {self.teeth}: {what}", unit=f.unit))
         return Report(out)
 
     def outline(self, gear, tolerance: float = 0.001, **kwargs):
@@ -267,11 +261,11 @@ class ShaperTool:
         mt, mn = gear.transverse_module, gear.module
         self.z, self.z0 = gear.teeth, cutter.teeth
         at = math.radians(gear.transverse_pressure_angle)
-        h, rho = cutter._h(gear)
+        _, rho = cutter._h(gear)
         self.alpha_t = at
         self.r0 = mt * self.z0 / 2
         self.rb0 = self.r0 * math.cos(at)
-        self.ra0 = self.r0 + (h + cutter.shift) * mn
+        self.ra0 = cutter.tip_diameter_of_cutter(gear) / 2
         self.rho = rho * mn
         self.a0 = cutter.center_distance(gear)
         aw = math.radians(cutter.working_pressure_angle(gear))
@@ -280,8 +274,10 @@ class ShaperTool:
         self.rw = (gear.base_diameter / 2) / math.cos(aw)
         self.length = self.a0 * math.sin(aw)  # N1 N2 on the line of action
         # half tooth angle on the cutter's base circle (flanks moved j/4 out for the backlash)
-        s0 = mt * (math.pi / 2 + 2 * cutter.shift * math.tan(math.radians(gear.pressure_angle)))
-        self.psi_b = s0 / (2 * self.r0) + inv(at) + backlash / (4 * self.rb0)
+        psi = _half_angle_at_reference(
+            self.z0, cutter.shift, gear.pressure_angle, gear.helix_angle, False
+        )
+        self.psi_b = float(psi) + inv(at) + backlash / (4 * self.rb0)
         self.ratio = self.z0 / self.z
         # relative angular speed of cutter against work, per unit work rotation
         self.omega_rel = 1 + self.z / self.z0 if self.s > 0 else self.z / self.z0 - 1
@@ -293,36 +289,36 @@ class ShaperTool:
                 self.rho = brentq(lambda r: self._land(r) - 0.02 * free, 0.0, self.rho)
         self._round()
 
-    def _land(self, rho: float) -> float:
-        """Clockwise angle of the tip-round centre (> 0: the rounds leave a tip land)."""
+    # --- the cutter tooth (right half, 'up' frame: tooth on +y, clockwise angles from +y) -----
+    def _round_at(self, rho: float):
+        """Tip round of radius ``rho`` tangent to the tip circle and the right flank:
+        ``(t_f, n_in, centre)`` (flank roll angle at the tangency, inward flank normal there),
+        or None when the round would reach below the base circle."""
         rc = self.ra0 - rho
         if rc <= self.rb0:
-            return -1.0
+            return None
         t_f = (rho + math.sqrt(rc * rc - self.rb0 * self.rb0)) / self.rb0
-        ang = self.psi_b - (t_f - math.atan(t_f))  # flank tangency point
-        r_f = self.rb0 * math.sqrt(1 + t_f * t_f)
-        # centre: rho along the inward normal (towards the base tangent point at psi_b - t_f)
-        pf = np.array([r_f * math.sin(ang), r_f * math.cos(ang)])
-        tt = self.rb0 * np.array([math.sin(self.psi_b - t_f), math.cos(self.psi_b - t_f)])
-        c = pf + rho * (tt - pf) / np.hypot(*(tt - pf))
-        return math.atan2(c[0], c[1])
+        pf = self._flank_xy(t_f)
+        tt = self._base_xy(t_f)  # the flank's centre of curvature lies inside the tooth
+        n_in = (tt - pf) / np.hypot(*(tt - pf))
+        return t_f, n_in, pf + rho * n_in
 
-    # --- the cutter tooth (right half, 'up' frame: tooth on +y, clockwise angles from +y) -----
+    def _land(self, rho: float) -> float:
+        """Clockwise angle of the tip-round centre (> 0: the rounds leave a tip land)."""
+        found = self._round_at(rho)
+        return -1.0 if found is None else math.atan2(found[2][0], found[2][1])
+
     def _round(self) -> None:
-        rb0, rho, ra0 = self.rb0, self.rho, self.ra0
-        rc = ra0 - rho
-        if rc <= rb0:
+        rho = self.rho
+        found = self._round_at(rho)
+        if found is None:
             raise GearError(
                 f"shaper cutter z0 = {self.z0}: its tip round (rho = {rho:.4g} mm) would reach "
                 f"below the cutter's base circle; use a smaller tip_radius or a larger addendum"
             )
-        t_f = (rho + math.sqrt(rc * rc - rb0 * rb0)) / rb0  # roll angle of the flank tangency
-        self.t_f = t_f
-        self.rho_t_flank = rb0 * t_f  # cutter involute curvature radius at the tangency
-        pf = self._flank_xy(t_f)
-        tt = self._base_xy(t_f)
-        n_in = (tt - pf) / np.hypot(*(tt - pf))
-        c = pf + rho * n_in
+        t_f, n_in, c = found
+        self.t_f = t_f  # roll angle of the flank tangency
+        self.rho_t_flank = self.rb0 * t_f  # cutter involute curvature radius at the tangency
         self.center_up = c
         self.gamma_tip = math.atan2(c[0], c[1])  # clockwise angle of the radial normal
         self.gamma_flank = math.atan2(-n_in[0], -n_in[1])
@@ -404,7 +400,18 @@ class ShaperTool:
 
     @property
     def root_radius(self) -> float:
-        return self.a0 - self.s * self.ra0
+        return self.cutter.root_diameter(self.gear) / 2
+
+    @property
+    def form_roll_length(self) -> float:
+        """Distance from N1 along the line of action to the work point conjugate to the end of
+        the cutter's involute (its tangency with the tip round); negative past N1 (undercut)."""
+        return self.length - self.s * self.rho_t_flank
+
+    @property
+    def undercuts(self) -> bool:
+        """True when the cutter's involute reaches past N1 of an external work gear."""
+        return self.s > 0 and self.form_roll_length < -1e-12 * self.length
 
     @property
     def undercut_roll(self) -> float:
@@ -441,19 +448,12 @@ class ShaperProfile(ToothProfile):
         self.ra = gear.tip_diameter / 2
         self.rf = self.tool.root_radius
         self.alpha_t = math.radians(gear.transverse_pressure_angle)
-        at, an = self.alpha_t, math.radians(gear.pressure_angle)
-        r = gear.reference_diameter / 2
-        mt = gear.transverse_module
-        s = self.tool.s
-        # space half-angle on the reference circle (the tooth-thickness formula), backlash added
-        self.eta_p = (
-            mt * (math.pi / 4 - s * gear.profile_shift * math.tan(an)) + b / (4 * math.cos(at))
-        ) / r
+        self.eta_p = space_half_angle(gear, b)
         self._validate()
 
     @property
     def undercut(self) -> bool:
-        return self.tool.s > 0 and self.tool.t_f > self.tool.undercut_roll * (1 + 1e-12)
+        return self.tool.undercuts
 
     @property
     def v_limit(self) -> float:  # pragma: no cover - rack-only notion

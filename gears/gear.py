@@ -19,14 +19,17 @@ import math
 import numbers
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse, pressure_angle_at
 from gears.rack import BasicRack
 from gears.report import Finding, Report
+
+if TYPE_CHECKING:
+    from gears.cutter import ShaperCutter
 
 __all__ = [
     "Gear",
@@ -355,6 +358,8 @@ class Gear:
             set_(self, "face_width", _check_finite("face_width", self.face_width, 0.0))
         set_(self, "internal", bool(self.internal))
         if self.cutter is not None:
+            from gears.cutter import ShaperCutter
+
             if not isinstance(self.cutter, ShaperCutter):
                 raise GearError(f"cutter must be a ShaperCutter or None; got {self.cutter!r}")
             _ = self._shaper_tool  # the cutter must fit this gear: a clear error now
@@ -508,8 +513,7 @@ class Gear:
         """True when the rack-type tool (or the gear's shaper ``cutter``) undercuts this
         (external) gear."""
         if self.cutter is not None:
-            t = self._shaper_tool
-            return t.s > 0 and t.t_f > t.undercut_roll * (1 + 1e-12)
+            return self._shaper_tool.undercuts
         return (not self.internal) and self.profile_shift < self.min_profile_shift - 1e-12
 
     @cached_property
@@ -609,16 +613,7 @@ class Gear:
         out = []
         m = self.module
         if not self.internal and self.cutter is not None:
-            t = self._shaper_tool
-            margin = t.length - t.rho_t_flank
-            out.append(
-                Finding(
-                    "undercut", margin,
-                    f"the shaper's (z0 = {self.cutter.teeth}) involute ends {margin:+.4f} mm "
-                    "before the interference point N1 on the cutting line of action"
-                    + ("" if margin >= 0 else " (it undercuts the flank)"),
-                )
-            )  # fmt: skip
+            out.extend(self.cutter.check(self).values())
         elif not self.internal:  # rings: cutter interference is checked on the pair
             margin = self.profile_shift - self.min_profile_shift
             out.append(

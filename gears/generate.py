@@ -39,7 +39,8 @@ from gears.profile import (
     arc_segments,
     assemble,
     circle_points,
-    default_rim,
+    involute_rolls,
+    rim_width,
 )
 
 __all__ = [
@@ -94,11 +95,8 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     # analytic contact points of the right tool half: fillet (round) and flank up to the tip
     tau = np.linspace(0.0, 1.0, 200)
     samples_phi, samples_dphi = [], []
-    rho_f, eta_f, phi_f = prof.fillet(tau)
-    xy = np.stack([rho_f * np.sin(eta_f), rho_f * np.cos(eta_f)], axis=-1)
-    ds = np.hypot(*np.gradient(xy, axis=0).T)
-    dphi = np.abs(np.gradient(phi_f))
-    speed = np.maximum(ds / np.where(dphi > 0, dphi, np.inf), 1e-300)
+    phi_f, speed = _fillet_speed(prof, tau)
+    speed = np.maximum(speed, 1e-300)
     rho_tool = 0.0 if t.a == 0 else (t.b * t.b / t.a if t.a >= t.b else t.a * t.a / t.b)
     samples_phi.append(phi_f)
     samples_dphi.append(_fillet_step(e, rho_tool) / speed)
@@ -131,6 +129,16 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     # one step past the last contact sample so the tip corner is cut completely
     half = np.append(half, phi_max + step)
     return np.concatenate([-half[:0:-1], half])
+
+
+def _fillet_speed(prof, tau):
+    """Roll angles of the fillet points at ``tau`` and the speed ds/dphi of the generated point
+    (finite differences; 0 where the roll angle stands still)."""
+    rho, eta, phi = prof.fillet(tau)
+    xy = np.stack([rho * np.sin(eta), rho * np.cos(eta)], axis=-1)
+    ds = np.hypot(*np.gradient(xy, axis=0).T)
+    dphi = np.abs(np.gradient(phi))
+    return phi, ds / np.where(dphi > 0, dphi, np.inf)
 
 
 def _fillet_step(e: float, rho: float) -> float:
@@ -175,13 +183,8 @@ def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
 
 def _space(prof: ToothProfile, tolerance: float) -> shapely.Polygon:
     """Union of all rack-tool positions: one tooth space, centred on +y."""
-    t = prof.tool
     tool = rack_tool_polygon(prof, tolerance)
-    phis = rack_positions(prof, tolerance)
-    c, s = np.cos(phis)[:, None], np.sin(phis)[:, None]
-    x0 = tool[None, :, 0] + t.r * phis[:, None]
-    y0 = t.r + t.xm + tool[None, :, 1]
-    rings = np.stack([c * x0 - s * y0, s * x0 + c * y0], axis=-1)
+    rings = prof.tool.place(tool, rack_positions(prof, tolerance))
     return shapely.union_all(shapely.polygons(rings))
 
 
@@ -253,14 +256,6 @@ def rack_outline(
 
 
 # --- shaper (pinion-type) cutter ---------------------------------------------------------------
-def _involute_rolls(rb: float, t0: float, t1: float, tol: float) -> np.ndarray:
-    """Roll angles from t0 to t1 with chord sag r_b t dt^2 / 8 <= tol (uniform in t^1.5)."""
-    w0, w1 = t0**1.5, t1**1.5
-    dw = 1.5 * math.sqrt(8.0 * tol / rb)
-    n = max(1, math.ceil(abs(w1 - w0) / dw))
-    return np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
-
-
 _MAX_EXTRA_POSITIONS = 20000
 
 
@@ -290,7 +285,7 @@ def shaper_tool_polygon(prof, tolerance: float) -> np.ndarray:
         gam = np.linspace(t.gamma_tip, t.gamma_flank, n + 1)[1:]
         parts.append(t.center_up + t.rho * np.stack([np.sin(gam), np.cos(gam)], -1))
     t_low = math.sqrt(max(r_low * r_low - t.rb0 * t.rb0, 0.0)) / t.rb0
-    rolls = _involute_rolls(t.rb0, t.t_f, t_low, e)[1:]
+    rolls = involute_rolls(t.rb0, t.t_f, t_low, e)[1:]
     parts.append(t._flank_xy(rolls))
     if r_low < t.rb0:
         parts.append(np.array([[r_low * math.sin(t.psi_b), r_low * math.cos(t.psi_b)]]))
@@ -338,11 +333,7 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     # the speed of the generated fillet point bounds the round's scallop: with the round's
     # centre path of curvature radius R_c, h = d_C^2 (1/rho + 1/R_c) / 8 <= d_E^2 / (8 rho)
     tau = np.linspace(0.0, 2.0 if prof.undercut else 1.0, 300)
-    rho_r, eta_r, phi_r = prof.fillet(tau)
-    xy = np.stack([rho_r * np.sin(eta_r), rho_r * np.cos(eta_r)], axis=-1)
-    ds = np.hypot(*np.gradient(xy, axis=0).T)
-    dphi = np.abs(np.gradient(phi_r))
-    speed = ds / np.where(dphi > 0, dphi, np.inf)
+    phi_r, speed = _fillet_speed(prof, tau)
     # near a cusp of the envelope (undercut) the fillet point stops while the centre moves on
     gam = t.gamma_tip + np.clip(tau, 0.0, 1.0) * (t.gamma_flank - t.gamma_tip)
     p, n = t.round_points(gam)
@@ -435,9 +426,7 @@ def shaper_outline(
         blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
         space = space.intersection(shapely.Polygon(circle_points(prof.ra + 0.1 * m, tol)))
     else:
-        width = default_rim(gear) if rim is None else float(rim)
-        if not (math.isfinite(width) and width > 0):
-            raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
+        width = rim_width(gear, rim)
         outer = circle_points(prof.rf + width, tol / 2)
         blank = shapely.Polygon(outer, holes=[circle_points(prof.ra, tol / 2, ccw=False)])
         clip = shapely.Polygon(

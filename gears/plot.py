@@ -134,13 +134,8 @@ def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None,
         from gears.profile import ToothProfile
 
         prof = ToothProfile(gear)
-        t = prof.tool
-        tool = rack_tool_polygon(prof, tolerance)
         phis = rack_positions(prof, tolerance)[::every]
-        c, s_ = np.cos(phis)[:, None], np.sin(phis)[:, None]
-        x0 = tool[None, :, 0] + t.r * phis[:, None]
-        y0 = t.r + t.xm + tool[None, :, 1]
-        placed = np.stack([c * x0 - s_ * y0, s_ * x0 + c * y0], axis=-1)
+        placed = prof.tool.place(rack_tool_polygon(prof, tolerance), phis)
         name = "rack generation"
     else:
         from gears.cutter import ShaperProfile

@@ -73,6 +73,38 @@ def _refuse_protuberance(gear) -> None:
         )
 
 
+def space_half_angle(gear, backlash: float = 0.0) -> float:
+    """Half the angular space width on the reference circle, radians: pi/z - s_t/d (the
+    tooth-thickness formula, :func:`gears.gear._half_angle_at_reference`), widened by the
+    backlash allowance j/4 along each flank normal (j / (4 r cos alpha_t))."""
+    from gears.gear import _half_angle_at_reference
+
+    psi = _half_angle_at_reference(
+        gear.teeth, gear.profile_shift, gear.pressure_angle, gear.helix_angle, gear.internal
+    )
+    at = math.radians(gear.transverse_pressure_angle)
+    r = gear.reference_diameter / 2
+    return math.pi / gear.teeth - float(psi) + backlash / (4.0 * r * math.cos(at))
+
+
+def involute_rolls(rb: float, t0: float, t1: float, sag: float) -> np.ndarray:
+    """Roll angles from t0 to t1 on an involute of base radius ``rb`` whose chords sag at most
+    ``sag``: the sag of a roll step dt is r_b t dt^2 / 8 (rho = r_b t), so the points are uniform
+    in w = t^(3/2) with dw = 1.5 sqrt(8 sag / r_b) (standards.md §3.2, "points per flank")."""
+    w0, w1 = t0**1.5, t1**1.5
+    dw = 1.5 * math.sqrt(8.0 * sag / rb)
+    n = max(1, math.ceil(abs(w1 - w0) / dw))
+    return np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
+
+
+def rim_width(gear, rim: float | None) -> float:
+    """Rim width of an internal gear outside its root circle, mm (default 3 m_n), checked."""
+    width = default_rim(gear) if rim is None else float(rim)
+    if not (math.isfinite(width) and width > 0):
+        raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
+    return width
+
+
 def _check_tolerance(tolerance: float) -> float:
     t = float(tolerance)
     if not (math.isfinite(t) and t > 0):
@@ -154,6 +186,15 @@ class RackTool:
         px, py = c * x0 - s_ * y0, s_ * x0 + c * y0
         return np.hypot(px, py), np.arctan2(px, py), phi
 
+    def place(self, pts, phi):
+        """Tool points ``pts`` (n, 2) rolled to angles ``phi`` (k,) in the gear frame: (k, n, 2)
+        (standards.md §3.1: Q(phi) = Rot(phi) (u + r phi, r + x m + v))."""
+        phi = np.asarray(phi, float)[:, None]
+        c, s_ = np.cos(phi), np.sin(phi)
+        x0 = pts[None, :, 0] + self.r * phi
+        y0 = self.r + self.xm + pts[None, :, 1]
+        return np.stack([c * x0 - s_ * y0, s_ * x0 + c * y0], axis=-1)
+
     def round_points(self, t):
         t = np.asarray(t, float)
         u = self.u_c + self.a * np.cos(t)
@@ -197,9 +238,7 @@ class ToothProfile:
         self.ra = gear.tip_diameter / 2
         self.rf = self.tool.r + self.tool.xm - self.tool.s * self.tool.h
         self.alpha_t = math.radians(gear.transverse_pressure_angle)
-        t = self.tool
-        # space half-angle on the reference circle (tool half-width on the rolling line)
-        self.eta_p = (t.c - t.s * t.xm * t.tan_a) / t.r
+        self.eta_p = space_half_angle(gear, b)
         self._validate()
 
     # --- exact curves ----------------------------------------------------------------------
@@ -396,17 +435,11 @@ class ToothProfile:
 
     # --- sampling --------------------------------------------------------------------------
     def _involute_samples(self, r0: float, r1: float, tol: float) -> np.ndarray:
-        """Radii on the involute between r0 and r1 so that every chord sag <= tol.
-
-        Chord sag of a roll-angle step dt is r_b t dt^2 / 8 (rho = r_b t), so points are uniform
-        in w = t^(3/2): dw = 1.5 sqrt(8 tol / r_b).
-        """
+        """Radii on the involute between r0 and r1 so that every chord sag <= tol
+        (:func:`involute_rolls`, with the safety factor)."""
         t0 = math.sqrt(max(r0 * r0 - self.rb**2, 0.0)) / self.rb
         t1 = math.sqrt(max(r1 * r1 - self.rb**2, 0.0)) / self.rb
-        w0, w1 = t0**1.5, t1**1.5
-        dw = 1.5 * math.sqrt(8.0 * _SAFETY * tol / self.rb)
-        n = max(1, math.ceil(abs(w1 - w0) / dw))
-        t = np.linspace(w0, w1, n + 1) ** (2.0 / 3.0)
+        t = involute_rolls(self.rb, t0, t1, _SAFETY * tol)
         rho = self.rb * np.sqrt(1.0 + t * t)
         rho[0], rho[-1] = r0, r1
         return rho
@@ -622,10 +655,7 @@ def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
     cx, cy = center
     pts = pts + np.array([cx, cy])
     if gear.internal:
-        width = default_rim(gear) if rim is None else float(rim)
-        if not (math.isfinite(width) and width > 0):
-            raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
-        outer = circle_points(root_radius + width, tol) + np.array([cx, cy])
+        outer = circle_points(root_radius + rim_width(gear, rim), tol) + np.array([cx, cy])
         poly = shapely.Polygon(outer, holes=[pts[::-1]])
     else:
         holes = []
