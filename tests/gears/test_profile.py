@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import shapely
 
-from gears import BasicRack, Gear, GearError, GearPair
+from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter
 from gears.measure import thickness_on
 from gears.profile import ToothProfile, outline, undercut_form_diameter
 
@@ -171,10 +171,16 @@ def test_backlash_thins_teeth():
         Gear(30, 1, internal=True),  # tip inside base circle: clear error
         Gear(40, 1, internal=True, profile_shift=0.8),
         Gear(3, 1, profile_shift=-1.0),
+        Gear(200, 1, internal=True),
+        # a 38-tooth shaper on a 40-tooth ring trims its tips (ShaperCutter.check)
+        Gear(40, 1, internal=True, profile_shift=0.3, cutter=ShaperCutter(38)),
     ],
-    ids=lambda g: f"z{g.teeth}_m{g.module}_x{g.profile_shift}_{'int' if g.internal else 'ext'}",
+    ids=lambda g: (
+        f"z{g.teeth}_m{g.module}_x{g.profile_shift}_{'int' if g.internal else 'ext'}"
+        + ("_cutter" if g.cutter else "")
+    ),
 )
-@pytest.mark.parametrize("method", ["analytic", "rack"])
+@pytest.mark.parametrize("method", ["analytic", "rack", "shaper"])
 def test_stability_valid_or_clear_error(gear, method):
     # source: standards.md §6 items 2-4, 7: a valid polygon or a GearError, never NaN
     try:

@@ -272,34 +272,6 @@ def test_sharp_cornered_tools_converge():
     assert sim.exterior.hausdorff_distance(outline(g, tol / 20, cutter=c).exterior) <= 2 * tol
 
 
-@pytest.mark.parametrize(
-    "gear",
-    [
-        Gear(8, 1, profile_shift=0.6),  # pointed
-        Gear(5, 1, profile_shift=0.5),
-        Gear(400, 1),
-        Gear(12, 0.1),
-        Gear(12, 50, profile_shift=0.3),
-        Gear(30, 1, internal=True),  # tip inside the base circle
-        Gear(40, 1, internal=True, profile_shift=0.8),
-        Gear(200, 1, internal=True),
-        Gear(40, 1, internal=True, profile_shift=0.3, cutter=ShaperCutter(38)),  # trimmed
-    ],
-    ids=lambda g: f"z{g.teeth}_m{g.module}_x{g.profile_shift}_{'int' if g.internal else 'ext'}",
-)
-def test_stability_valid_or_clear_error(gear):
-    # source: standards.md §6 items 2-4, 7: a valid polygon or a GearError, never NaN
-    for method in ("shaper", "analytic"):
-        try:
-            p = gear.outline(tolerance=1e-3, method=method, cutter=ShaperCutter.default_for(gear)
-                             if gear.cutter is None else None)  # fmt: skip
-        except GearError as exc:
-            assert str(exc)
-            continue
-        assert p.is_valid and p.area > 0
-        assert np.isfinite(shapely.get_coordinates(p)).all()
-
-
 def test_bad_cutters():
     g = Gear(40, 1, internal=True)
     for bad, match in [(4, "teeth"), (True, "teeth"), (12.5, "teeth")]:
