@@ -6,7 +6,7 @@ file examples/train_bevel_differential.toml describes the same train for `geartr
 
 from pathlib import Path
 
-from trains import Train, bevel_differential
+from trains import bevel_differential, read_train
 
 t = bevel_differential(side=16, pinion=10, drive=(11, 41))
 m = t.solve(input=3000, left=float(3000 * 11 / 41 * 0.9))
@@ -14,5 +14,5 @@ print(t.name)
 print(f"case {float(m['carrier']):.2f} rpm, left {m['left']:.2f}, right {m['right']:.2f},"
       f" pinions spin {float(m.relative('pinion', 'carrier')):.2f} rpm")  # fmt: skip
 assert abs(m["left"] + m["right"] - 2 * m["carrier"]) < 1e-9
-toml = Train.from_toml(Path(__file__).with_name("train_bevel_differential.toml"))
+toml = read_train(Path(__file__).with_name("train_bevel_differential.toml"))
 assert toml.solve(carrier=100, left=90)["right"] == 110

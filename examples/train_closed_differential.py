@@ -8,19 +8,19 @@ closing gear pair carries twice the input power (power circulation).
 from fractions import Fraction
 from pathlib import Path
 
-from trains import Train, simple_planetary
+from trains import power_flow, read_train, simple_planetary
 
-t = Train.from_toml(Path(__file__).with_name("train_closed_differential.toml"))
+t = read_train(Path(__file__).with_name("train_closed_differential.toml"))
 i = t.ratio("1", "4")
 m = t.solve({"1": 880})
 print(f"i_14 = {i} = {float(i):.4f}; drum n4 = {float(m['4']):.3f} rpm")
-pf = t.power_flow("1", "4", mesh_efficiency=0.98, input_speed=880)
+pf = power_flow(t, "1", "4", mesh_efficiency=0.98, input_speed=880)
 print(f"efficiency {pf.efficiency:.4f}")
 assert i == Fraction(2767, 63)
 
 k3 = simple_planetary(18, 45, 108)
 k3.mesh("sun", "ring", teeth=(20, 60), name="closing")
-flow = k3.power_flow("sun", "carrier", mesh_efficiency=0.98)
+flow = power_flow(k3, "sun", "carrier", mesh_efficiency=0.98)
 print(f"K3: i = {k3.ratio('sun', 'carrier')}, closing mesh carries"
       f" {flow.relations['closing'].power / flow.input_power:.2f} x input power,"
       f" efficiency {flow.efficiency:.4f}")  # fmt: skip

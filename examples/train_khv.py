@@ -4,11 +4,11 @@ Design task: reduction of an internal pair 49/50 with a W-coupling output (Ozols
 -49), and of a two-wave strain-wave drive 200/202 (Joldasbekov E8: -z1/(z2 - z1) = -100).
 """
 
-from trains import khv, strain_wave
+from trains import khv, power_flow, strain_wave
 
 t = khv(planet=49, ring=50)
 i = t.ratio("carrier", "output", fixed=["ring"])
-pf = t.power_flow("carrier", "output", fixed=["ring"], mesh_efficiency=0.99)
+pf = power_flow(t, "carrier", "output", fixed=["ring"], mesh_efficiency=0.99)
 print(f"K-H-V: i = {i}, efficiency {pf.efficiency:.4f}")
 w = strain_wave(flexspline=200, rigid=202)
 j = w.ratio("generator", "flexspline", fixed=["rigid"])

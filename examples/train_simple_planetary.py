@@ -4,7 +4,7 @@ Design task: the speeds of a motor-driven reducer (sun at 1500 rpm, ring held), 
 bearing speed, the torques and the efficiency with 98 % meshes (Kreines' rule).
 """
 
-from trains import simple_planetary
+from trains import power_flow, simple_planetary
 
 t = simple_planetary(sun=20, planet=30, ring=80, n_planets=3)
 print(t.name, "| mobility", t.mobility, "| redundant constraints", t.structure.redundant)
@@ -12,7 +12,7 @@ i = t.ratio("sun", "carrier", fixed=["ring"])
 m = t.solve(sun=1500, ring=0)
 print(f"ratio sun/carrier = {i}; carrier {m['carrier']} rpm;"
       f" planet bearing {m.relative('planet', 'carrier')} rpm")  # fmt: skip
-pf = t.power_flow("sun", "carrier", fixed=["ring"], mesh_efficiency=0.98, input_speed=1500)
+pf = power_flow(t, "sun", "carrier", fixed=["ring"], mesh_efficiency=0.98, input_speed=1500)
 print(pf)
 assert i == 5 and m["carrier"] == 300
 assert abs(pf.efficiency - (1 + 4 * 0.98**2) / 5) < 1e-12

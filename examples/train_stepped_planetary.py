@@ -4,7 +4,7 @@ Design task: compare the three schemes of lectures §4.2 for the same tooth coun
 David mechanism of Ozols example 7-4 (1/10000, exact) and its efficiency both ways (ex. 14-3).
 """
 
-from trains import stepped_planetary
+from trains import power_flow, stepped_planetary
 
 for kinds in [("external", "internal"), ("external", "external"), ("internal", "internal")]:
     t = stepped_planetary(30, 45, 20, 81, meshes=kinds)
@@ -13,8 +13,8 @@ for kinds in [("external", "internal"), ("external", "external"), ("internal", "
 david = stepped_planetary(100, 101, 100, 99, meshes=("external", "external"))
 i = david.ratio("1", "H", fixed=["3"])
 print("David mechanism i_1H =", i)
-fwd = david.power_flow("1", "H", fixed=["3"], mesh_efficiency={"1-2": 0.98})
-back = david.power_flow("H", "1", fixed=["3"], mesh_efficiency={"1-2": 0.98})
+fwd = power_flow(david, "1", "H", fixed=["3"], mesh_efficiency={"1-2": 0.98})
+back = power_flow(david, "H", "1", fixed=["3"], mesh_efficiency={"1-2": 0.98})
 print(f"gear 1 driving: efficiency {fwd.efficiency:.2f}, self-locking {fwd.self_locking}")
 print(f"carrier driving: efficiency {back.efficiency:.5f}")
 assert i.denominator == 10000 and fwd.self_locking and abs(back.efficiency - 0.004976) < 1e-6

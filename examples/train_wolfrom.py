@@ -6,11 +6,11 @@ the carrier idles. Power circulates inside, so the efficiency is far below one m
 
 from fractions import Fraction
 
-from trains import wolfrom
+from trains import power_flow, wolfrom
 
 t = wolfrom(sun=20, planet=30, ring1=80, planet2=29, ring2=77)
 i = t.ratio("sun", "ring2", fixed=["ring1"])
 print(t.name, "| i_sun,ring2 =", i, f"= {float(i):.2f}")
 assert i == (1 + Fraction(80, 20)) / (1 - Fraction(29 * 80, 77 * 30))  # Ozols §2.2
-pf = t.power_flow("sun", "ring2", fixed=["ring1"], mesh_efficiency=0.98)
+pf = power_flow(t, "sun", "ring2", fixed=["ring1"], mesh_efficiency=0.98)
 print(f"efficiency {pf.efficiency:.4f}, circulating power {pf.circulating_power:.3f}")

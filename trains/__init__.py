@@ -27,10 +27,12 @@ from trains.power import (
     RelationPower,
     parallel_efficiency,
     planetary_efficiency,
+    power_flow,
     self_locking_range,
     series_efficiency,
 )
 from trains.synthesis import Candidate, Candidates, synthesize
+from trains.toml_format import read_train
 from trains.trajectory import point_path
 from trains.willis import IllConditionedTrainWarning, Motion, Relation, Structure, Train
 
@@ -57,6 +59,8 @@ __all__ = [
     "parallel_efficiency",
     "planetary_efficiency",
     "point_path",
+    "power_flow",
+    "read_train",
     "reduced_inertia",
     "self_locking_range",
     "series_efficiency",

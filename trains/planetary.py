@@ -50,6 +50,8 @@ from gears import Gear, GearPair
 from gears.errors import GearError
 from gears.report import Finding, Report
 from trains.errors import TrainError
+from trains.power import power_flow
+from trains.willis import Train
 
 __all__ = [
     "SCHEMES",
@@ -689,8 +691,6 @@ class Planetary:
     @cached_property
     def train(self):
         """The stage as a :class:`trains.Train` (members sun, planet[, planet2], ring, carrier)."""
-        from trains.willis import Train
-
         t = Train()
         internal_keys = {k for k, internal, _ in _GEARS[self.scheme] if internal}
         for name, k1, k2 in _MESHES[self.scheme]:
@@ -773,7 +773,7 @@ class Planetary:
     ) -> float:
         """Efficiency input -> output by the relative-power (Kreines/Müller) method.
 
-        Solved by :meth:`trains.Train.power_flow` on :attr:`train`: in the carrier frame each
+        Solved by :func:`trains.power_flow` on :attr:`train`: in the carrier frame each
         mesh has efficiency ``mesh_efficiency`` (or its GearPair's Ozols (14.25) value with
         ``friction``), lost at whichever end drives in relative motion (standards.md §4; Ozols
         (14.26)). A negative value means self-locking in that direction.
@@ -796,8 +796,8 @@ class Planetary:
         else:
             etas = {n: float(mesh_efficiency) for n in self._pairs}
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
-        flow = self.train.power_flow(
-            name[input], name[output], fixed=[name[fixed]], mesh_efficiency=etas
+        flow = power_flow(
+            self.train, name[input], name[output], fixed=[name[fixed]], mesh_efficiency=etas
         )
         return float(flow.efficiency)
 

@@ -16,9 +16,9 @@ for a fixed-axis train, the product of the mesh efficiencies (Ozols (14.10)).
 
 Examples
 --------
->>> from trains import simple_planetary
->>> pf = simple_planetary(20, 30, 80).power_flow("sun", "carrier", fixed=["ring"],
-...                                              mesh_efficiency=0.98)
+>>> from trains import power_flow, simple_planetary
+>>> pf = power_flow(simple_planetary(20, 30, 80), "sun", "carrier", fixed=["ring"],
+...                 mesh_efficiency=0.98)
 >>> round(pf.efficiency, 6), pf.self_locking
 (0.96832, False)
 >>> {m: round(t, 6) for m, t in pf.torques.items()}
@@ -202,10 +202,10 @@ def power_flow(
     >>> from trains import stepped_planetary
     >>> t = stepped_planetary(100, 101, 100, 99, meshes=("external", "external"))
     >>> eta = {"1-2": 0.98}
-    >>> pf = t.power_flow("1", "H", fixed=["3"], mesh_efficiency=eta)
+    >>> pf = power_flow(t, "1", "H", fixed=["3"], mesh_efficiency=eta)
     >>> pf.self_locking, round(pf.efficiency, 2)
     (True, -203.06)
-    >>> round(t.power_flow("H", "1", fixed=["3"], mesh_efficiency=eta).efficiency, 6)
+    >>> round(power_flow(t, "H", "1", fixed=["3"], mesh_efficiency=eta).efficiency, 6)
     0.004976
     """
     inputs = [input] if isinstance(input, str) else list(input)

@@ -110,7 +110,7 @@ def train_from_dict(data: dict[str, Any], source: str = "<dict>") -> Train:
 
 
 def read_train(path: Any) -> Train:
-    """Read a train from a TOML file (:meth:`Train.from_toml`)."""
+    """Read a train from a TOML file (``geartrain train FILE``)."""
     p = Path(path)
     try:
         with p.open("rb") as f:

@@ -527,13 +527,6 @@ class Train:
             raise TrainError(f"a planet count must be >= 1, got {count}")
         self._planets[member] = count
 
-    @classmethod
-    def from_toml(cls, path: Any) -> Train:
-        """Read a train from a TOML file (format: ``docs/trains.md``; examples: ``examples/``)."""
-        from trains.toml_format import read_train
-
-        return read_train(path)
-
     # ---- introspection
 
     @property
@@ -917,20 +910,6 @@ class Train:
         if mp.exact:
             return sum((c * Fraction(v) for c, v in zip(cs, vals, strict=True)), Fraction(0))
         return float(sum(float(c) * float(v) for c, v in zip(cs, vals, strict=True)))
-
-    def power_flow(
-        self,
-        input: Any,
-        output: str,
-        fixed: Iterable[str] = (),
-        mesh_efficiency: Any = 1.0,
-        input_torque: float = 1.0,
-        input_speed: Any = 1.0,
-    ):
-        """Torques, mesh powers and efficiency: see :func:`trains.power.power_flow`."""
-        from trains.power import power_flow
-
-        return power_flow(self, input, output, fixed, mesh_efficiency, input_torque, input_speed)
 
     def __repr__(self) -> str:
         moving = [m for m in self._members if m != FRAME]

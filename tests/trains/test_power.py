@@ -10,6 +10,7 @@ from trains import (
     TrainError,
     parallel_efficiency,
     planetary_efficiency,
+    power_flow,
     self_locking_range,
     series_efficiency,
     simple_planetary,
@@ -40,8 +41,8 @@ TABLE_14_26 = [
 @pytest.mark.parametrize(("i1h", "eta_1h", "eta_h1"), TABLE_14_26)
 def test_ozols_14_26_table_both_directions(i1h, eta_1h, eta_h1):
     t, eta = _planetary(i1h, 0.98)
-    fwd = t.power_flow("1", "H", fixed=["n"], mesh_efficiency=eta)
-    back = t.power_flow("H", "1", fixed=["n"], mesh_efficiency=eta)
+    fwd = power_flow(t, "1", "H", fixed=["n"], mesh_efficiency=eta)
+    back = power_flow(t, "H", "1", fixed=["n"], mesh_efficiency=eta)
     assert fwd.efficiency == pytest.approx(eta_1h, abs=6e-6 * max(1, abs(eta_1h)))
     assert back.efficiency == pytest.approx(eta_h1, abs=6e-6)
     # closed form (14.26) with the corrected exponent: an independent route, to round-off
@@ -72,10 +73,10 @@ def test_ozols_14_3_david_mechanism_efficiency():
     eta = {"1-2": 0.98}  # eta_H = 0.98 for the whole inverted train
     lo, hi = self_locking_range(0.98)
     assert (round(lo, 4), round(hi, 4)) == (-0.0204, 0.02)
-    fwd = t.power_flow("1", "H", fixed=["3"], mesh_efficiency=eta)
+    fwd = power_flow(t, "1", "H", fixed=["3"], mesh_efficiency=eta)
     assert fwd.self_locking
     assert fwd.efficiency == pytest.approx(-203.06, abs=5e-3)
-    back = t.power_flow("H", "1", fixed=["3"], mesh_efficiency=eta)
+    back = power_flow(t, "H", "1", fixed=["3"], mesh_efficiency=eta)
     assert not back.self_locking
     assert back.efficiency == pytest.approx(0.005, abs=3e-5)
     assert back.efficiency == pytest.approx(0.0049756, abs=1e-7)
@@ -84,14 +85,14 @@ def test_ozols_14_3_david_mechanism_efficiency():
 def test_lectures_efficiency_e_a_and_e_c():
     # lectures §3.3 [D] E-A: James 18/108, eta^H = 0.97 -> eta_1H = 1 - 0.03*108/126 = 0.974286.
     t = simple_planetary(18, 45, 108)
-    pf = t.power_flow("sun", "carrier", fixed=["ring"], mesh_efficiency={"sun-planet": 0.97})
+    pf = power_flow(t, "sun", "carrier", fixed=["ring"], mesh_efficiency={"sun-planet": 0.97})
     assert pf.efficiency == pytest.approx(0.974286, abs=1e-6)
     # E-C: David type (100/101/100/99), eta^H = 0.9: H -> 1 0.000999; 1 -> H self-locking with
     # output power about -1110 x input.
     t = stepped_planetary(100, 101, 100, 99, meshes=("external", "external"))
-    back = t.power_flow("H", "1", fixed=["3"], mesh_efficiency={"1-2": 0.9})
+    back = power_flow(t, "H", "1", fixed=["3"], mesh_efficiency={"1-2": 0.9})
     assert back.efficiency == pytest.approx(0.0001 / 0.10009, rel=1e-9)
-    fwd = t.power_flow("1", "H", fixed=["3"], mesh_efficiency={"1-2": 0.9})
+    fwd = power_flow(t, "1", "H", fixed=["3"], mesh_efficiency={"1-2": 0.9})
     assert fwd.self_locking and fwd.efficiency == pytest.approx(-1110, rel=1e-3)
 
 
@@ -107,8 +108,8 @@ def test_lectures_efficiency_e_a_and_e_c():
 def test_standards_kreines_table(i0, eta0, eta_1h, eta_h1):
     t = Train()
     t.link("1", "3", ratio=i0, carrier="H", name="basic")
-    fwd = t.power_flow("1", "H", fixed=["3"], mesh_efficiency={"basic": eta0})
-    back = t.power_flow("H", "1", fixed=["3"], mesh_efficiency={"basic": eta0})
+    fwd = power_flow(t, "1", "H", fixed=["3"], mesh_efficiency={"basic": eta0})
+    back = power_flow(t, "H", "1", fixed=["3"], mesh_efficiency={"basic": eta0})
     digits = 5e-6 if abs(eta_1h) < 1 else 5e-3
     assert fwd.efficiency == pytest.approx(eta_1h, abs=digits)
     assert back.efficiency == pytest.approx(eta_h1, abs=5e-6)
@@ -120,7 +121,7 @@ def test_simple_planetary_per_mesh_efficiency_matches_kreines():
     t = simple_planetary(20, 30, 80)
     a = 0.985
     eta = {"sun-planet": a, "planet-ring": 0.97 / a}
-    assert t.power_flow("sun", "carrier", fixed=["ring"], mesh_efficiency=eta).efficiency == (
+    assert power_flow(t, "sun", "carrier", fixed=["ring"], mesh_efficiency=eta).efficiency == (
         pytest.approx(0.976, abs=1e-12)
     )
 
@@ -131,7 +132,7 @@ def test_differential_14_28_general_sign_rule():
     # rule (h = +1) would give 1.0174 > 1, impossible.
     t = Train()
     t.link("1", "n", ratio=-3, carrier="H", name="inverted")
-    pf = t.power_flow(["H", "n"], "1", mesh_efficiency={"inverted": 0.98},
+    pf = power_flow(t, ["H", "n"], "1", mesh_efficiency={"inverted": 0.98},
                       input_speed={"H": 1, "n": -1})  # fmt: skip
     assert pf.speeds["1"] == 7
     assert pf.efficiency == pytest.approx(0.982808, abs=1e-6)
@@ -145,7 +146,7 @@ def test_differential_14_29_drivers_1_and_n():
     # h = +1, eta = 0.992443.
     t = Train()
     t.link("1", "n", ratio=-3, carrier="H", name="inverted")
-    pf = t.power_flow(["1", "n"], "H", mesh_efficiency={"inverted": 0.98},
+    pf = power_flow(t, ["1", "n"], "H", mesh_efficiency={"inverted": 0.98},
                       input_speed={"1": 5, "n": 1})  # fmt: skip
     assert pf.speeds["H"] == 2
     assert pf.efficiency == pytest.approx(0.992443, abs=1e-6)
@@ -162,7 +163,7 @@ def test_fixed_axis_train_is_product_of_mesh_efficiencies():
     t.mesh("b", "c", teeth=(19, 70), name="s2")
     t.link("c", "drum", ratio=3, name="drum")
     eta = {"s1": 0.95, "s2": 0.95, "drum": 0.90}
-    pf = t.power_flow("motor", "drum", mesh_efficiency=eta, input_speed=1500)
+    pf = power_flow(t, "motor", "drum", mesh_efficiency=eta, input_speed=1500)
     assert pf.efficiency == pytest.approx(0.81225, rel=1e-12)
     assert series_efficiency(0.95, 0.95, 0.90) == pytest.approx(0.81225, rel=1e-14)
     n_q = 10000 * 12 / (60 * 75)
@@ -190,8 +191,12 @@ def test_ozols_11_11_planetary_torques():
     # r3 = 0.15; mesh force R = M1/(3 r1 cos 20 deg) = 709.45 N (digest derived).
     import math
 
-    pf = simple_planetary(20, 20, 60, n_planets=3).power_flow(
-        "sun", "carrier", fixed=["ring"], input_torque=100.0
+    pf = power_flow(
+        simple_planetary(20, 20, 60, n_planets=3),
+        "sun",
+        "carrier",
+        fixed=["ring"],
+        input_torque=100.0,
     )
     assert pf.torques["carrier"] == pytest.approx(-400.0, rel=1e-14)
     assert pf.torques["ring"] == pytest.approx(300.0, rel=1e-14)
@@ -209,11 +214,11 @@ def test_closed_differential_power_circulation():
     # on the ring, turning at -w1/3: it carries 2 lambda w1 = twice the input power lambda w1.
     t = simple_planetary(18, 45, 108)
     t.mesh("sun", "ring", teeth=(20, 60), name="closing")
-    pf = t.power_flow("sun", "carrier")
+    pf = power_flow(t, "sun", "carrier")
     assert pf.relations["closing"].power == pytest.approx(2.0 * pf.input_power, rel=1e-12)
     assert pf.circulating_power == pytest.approx(1.0 * pf.input_power, rel=1e-12)
     assert pf.efficiency == pytest.approx(1.0, rel=1e-12)
-    lossy = t.power_flow("sun", "carrier", mesh_efficiency=0.98)
+    lossy = power_flow(t, "sun", "carrier", mesh_efficiency=0.98)
     assert lossy.efficiency < 0.98 * 0.98  # circulating power multiplies the losses
     assert sum(lossy.torques.values()) == pytest.approx(0.0, abs=1e-12)
     assert lossy.input_power - lossy.output_power == pytest.approx(
@@ -224,12 +229,12 @@ def test_closed_differential_power_circulation():
 def test_power_flow_errors():
     t = simple_planetary(20, 30, 80)
     with pytest.raises(TrainError, match="under-determined"):
-        t.power_flow("sun", "carrier")
+        power_flow(t, "sun", "carrier")
     with pytest.raises(TrainError, match="unknown relation 'sun-moon'"):
-        t.power_flow("sun", "carrier", fixed=["ring"], mesh_efficiency={"sun-moon": 0.9})
+        power_flow(t, "sun", "carrier", fixed=["ring"], mesh_efficiency={"sun-moon": 0.9})
     with pytest.raises(TrainError, match=r"in \(0, 1\]"):
-        t.power_flow("sun", "carrier", fixed=["ring"], mesh_efficiency=1.2)
+        power_flow(t, "sun", "carrier", fixed=["ring"], mesh_efficiency=1.2)
     with pytest.raises(TrainError, match="must all differ"):
-        t.power_flow("sun", "sun", fixed=["ring"])
+        power_flow(t, "sun", "sun", fixed=["ring"])
     with pytest.raises(TrainError, match="supply no power"):
-        t.power_flow("sun", "carrier", fixed=["ring"], input_torque=-1.0)
+        power_flow(t, "sun", "carrier", fixed=["ring"], input_torque=-1.0)

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from trains import Train, TrainError
+from trains import TrainError, read_train
 from trains.cli import main
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
@@ -13,7 +13,7 @@ EXAMPLES = Path(__file__).parents[2] / "examples"
 
 def test_toml_simple_planetary_matches_design_example():
     # DESIGN.md: sun 20 / planet 30 / ring 80 on carrier "arm": ratio 5 with the ring fixed.
-    t = Train.from_toml(EXAMPLES / "train_simple_planetary.toml")
+    t = read_train(EXAMPLES / "train_simple_planetary.toml")
     assert t.ratio("sun", "arm", fixed=["ring"]) == F(5)
     assert t.structure.redundant == 2  # [planets] planet = 3: sigma = k - 1 (Ozols §21-13)
     assert t.run_defaults["output"] == "arm"
@@ -24,7 +24,7 @@ def test_toml_links_with_string_fractions(tmp_path):
     p.write_text(
         '[[link]]\nmembers = ["a", "b"]\nratio = "-13/3"\n[[couple]]\nmembers = ["b", "c"]\n'
     )
-    t = Train.from_toml(p)
+    t = read_train(p)
     assert t.ratio("a", "c") == F(-13, 3)
 
 
@@ -43,12 +43,12 @@ def test_toml_errors_name_the_entry(tmp_path, text, match):
     p = tmp_path / "bad.toml"
     p.write_text(text)
     with pytest.raises(TrainError, match=match):
-        Train.from_toml(p)
+        read_train(p)
 
 
 def test_toml_missing_file():
     with pytest.raises(TrainError, match="no such train file"):
-        Train.from_toml("/nonexistent/train.toml")
+        read_train("/nonexistent/train.toml")
 
 
 def test_cli_prints_speeds_ratios_torques_efficiency(capsys):

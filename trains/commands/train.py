@@ -13,7 +13,9 @@ from fractions import Fraction
 from typing import Any
 
 from trains.errors import TrainError
-from trains.willis import FRAME, Train
+from trains.power import power_flow
+from trains.toml_format import read_train
+from trains.willis import FRAME
 
 HELP = "solve a gear train from a TOML file (speeds, ratios, torques, efficiency)"
 
@@ -64,7 +66,7 @@ def _fmt(x: Any) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    t = Train.from_toml(args.file)
+    t = read_train(args.file)
     run_defaults = t.run_defaults
     fixed: list[str] = []
     for f in args.fixed if args.fixed is not None else run_defaults.get("fixed", []):
@@ -103,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
     if output is None:
         print("\n(no --output: torques and efficiency need the driven member)")
         return 0
-    pf = t.power_flow(
+    pf = power_flow(t,
         list(inputs), output, fixed=fixed, mesh_efficiency=1.0 if eta is None else eta,
         input_torque=args.torque if inputs[first] >= 0 else -args.torque,  # input supplies power
         input_speed={k: float(v) for k, v in inputs.items()},
