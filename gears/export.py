@@ -1,4 +1,5 @@
-"""2D export of outlines: plain SVG (no dependency), DXF (ezdxf, the ``dxf`` extra), point arrays.
+"""Export of outlines (plain SVG with no dependency, DXF with ezdxf, PNG, point arrays) and of 3D
+meshes and scenes (STL, 3MF, GLB, OBJ, PLY through trimesh's own exporters, the ``mesh`` extra).
 
 Export picks the format from the file extension (:func:`save`), the way trimesh does.
 """
@@ -12,7 +13,7 @@ import shapely
 
 from gears.errors import GearError
 
-__all__ = ["points", "save", "to_dxf", "to_svg"]
+__all__ = ["points", "save", "save_mesh", "to_dxf", "to_svg"]
 
 
 def _polygons(outlines) -> list[shapely.Polygon]:
@@ -93,11 +94,59 @@ def to_dxf(path, *outlines) -> pathlib.Path:
     return path
 
 
-def save(path, *outlines) -> pathlib.Path:
-    """Write by extension: ``.svg``, ``.dxf``, ``.png`` (matplotlib, the ``plot`` extra) or
-    ``.npz`` (point arrays)."""
+MESH_FORMATS = (".stl", ".3mf", ".glb", ".obj", ".ply")
+OUTLINE_FORMATS = (".svg", ".dxf", ".png", ".npz")
+
+
+def _is_mesh(obj) -> bool:
+    return type(obj).__name__ in ("Trimesh", "Scene") and hasattr(obj, "export")
+
+
+def save_mesh(path, mesh_or_scene) -> pathlib.Path:
+    """Write a ``trimesh.Trimesh`` or ``trimesh.Scene`` by extension with trimesh's exporters:
+    ``.stl`` (binary), ``.3mf`` (needs lxml), ``.glb``, ``.obj`` (with its ``.mtl`` beside it
+    when the parts have colours), ``.ply``. A 3MF or GLB of a scene keeps one named object per
+    part and stores a shared (instanced) geometry once; STL, OBJ and PLY hold the merged scene.
+
+    Examples
+    --------
+    >>> import tempfile, os, shapely
+    >>> from gears.mesh import gear_solid
+    >>> cube = gear_solid(shapely.box(0, 0, 1, 1), 1)
+    >>> f = save_mesh(os.path.join(tempfile.mkdtemp(), "g.stl"), cube)
+    >>> f.stat().st_size   # binary STL: 84 + 50 bytes per triangle
+    684
+    """
     path = pathlib.Path(path)
     ext = path.suffix.lower()
+    if ext not in MESH_FORMATS:
+        raise GearError(f"unknown mesh format {ext!r}; valid are {', '.join(MESH_FORMATS)}")
+    if not _is_mesh(mesh_or_scene):
+        raise GearError(
+            f"the {ext} format needs a trimesh.Trimesh or trimesh.Scene; "
+            f"got {type(mesh_or_scene).__name__}"
+        )
+    try:
+        mesh_or_scene.export(str(path), file_type=ext[1:])
+    except ImportError as exc:
+        missing = getattr(exc, "name", None) or str(exc)
+        raise GearError(
+            f"{ext} export needs the module {missing!r}: pip install 'geartrain[mesh]'"
+        ) from exc
+    return path
+
+
+def save(path, *objects) -> pathlib.Path:
+    """Write by extension: outlines to ``.svg``, ``.dxf``, ``.png`` (matplotlib, the ``plot``
+    extra) or ``.npz`` (point arrays); one mesh or scene to ``.stl``, ``.3mf``, ``.glb``,
+    ``.obj`` or ``.ply`` (:func:`save_mesh`)."""
+    path = pathlib.Path(path)
+    ext = path.suffix.lower()
+    if ext in MESH_FORMATS or (objects and _is_mesh(objects[0])):
+        if len(objects) != 1:
+            raise GearError(f"{ext} export takes one mesh or scene; got {len(objects)} objects")
+        return save_mesh(path, objects[0])
+    outlines = objects
     if ext == ".svg":
         return to_svg(path, *outlines)
     if ext == ".dxf":
@@ -119,4 +168,6 @@ def save(path, *outlines) -> pathlib.Path:
         }
         np.savez(path, **arrays)
         return path
-    raise GearError(f"unknown export format {ext!r}; valid are .svg, .dxf, .png, .npz")
+    raise GearError(
+        f"unknown export format {ext!r}; valid are {', '.join(OUTLINE_FORMATS + MESH_FORMATS)}"
+    )

@@ -1,0 +1,356 @@
+"""3D gear solids and scenes built on the exact 2D outlines (trimesh, the ``mesh`` extra).
+
+This module sits above the 2D outline code and below the classes: it works on shapely Polygons
+and numbers only (``Gear.mesh``, ``GearPair.scene`` and ``Planetary.scene`` are thin views that
+pass it their outlines and placements). It needs no CAD kernel.
+
+Conventions
+-----------
+- The gear axis is +z and the mid-plane is z = 0; the section at z = 0 is the 2D outline itself.
+- A helical gear's transverse section turns with the lead: by ``theta(z) = 2 z tan(beta) / d``
+  radians at height z (ISO 21771: a right hand has beta > 0 and turns counter-clockwise seen
+  from +z as z grows), so the *twist* over the face width b is ``2 b tan(beta) / d``
+  (:func:`helix_twist`, in degrees).
+- The number of axial slices comes from the tolerance: a vertex at radius r turns by
+  ``dtheta`` between two slices, and the chord between them deviates from the true helix by
+  ``r (1 - cos(dtheta / 2))``; :func:`slice_count` keeps that below ``tolerance`` at the largest
+  radius of the outline. The transverse outline keeps its own tolerance, so a section deviates
+  from the exact gear by at most about twice the tolerance.
+- A herringbone gear is two opposite-hand halves meeting at the mid-plane: the lower half
+  (z < 0) has the given hand, the upper half the opposite one.
+
+The solid is built directly: one triangulated cap (mapbox-earcut, or manifold3d's robust
+triangulator when earcut would drop a vertex) and quads between consecutive slices. Every vertex
+is an outline vertex turned to its slice, so the mesh is welded by construction, watertight,
+consistently wound with outward normals, and its spur volume is the outline area times the face
+width to rounding.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+import shapely
+
+from gears.errors import GearError
+
+__all__ = [
+    "gear_solid",
+    "helix_twist",
+    "scene",
+    "slice_count",
+    "to_manifold",
+    "transform",
+]
+
+#: Largest vertex count of one solid (a guard against a tolerance far below what is useful).
+MAX_VERTICES = 20_000_000
+
+#: Default colours (RGBA 0-255) of the scene builders, by role.
+COLOURS = {
+    "gear1": (70, 130, 180, 255),
+    "gear2": (222, 140, 60, 255),
+    "sun": (205, 92, 92, 255),
+    "planet": (70, 130, 180, 255),
+    "planet2": (100, 160, 90, 255),
+    "ring": (150, 150, 150, 255),
+    "carrier": (200, 190, 120, 255),
+}
+
+
+def _trimesh():
+    try:
+        import trimesh
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise GearError("3D meshes need trimesh: pip install 'geartrain[mesh]'") from exc
+    return trimesh
+
+
+def _positive(name: str, value) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError) as exc:
+        raise GearError(f"{name} = {value!r} must be a number > 0 (mm)") from exc
+    if not math.isfinite(v) or v <= 0.0:
+        raise GearError(f"{name} = {value!r} must be a finite number > 0 (mm)")
+    return v
+
+
+def helix_twist(face_width, helix_angle, reference_diameter):
+    """Twist of the transverse section over the face width, degrees: ``2 b tan(beta) / d``.
+
+    Signed as ISO 21771: right hand (beta > 0) turns counter-clockwise seen from +z as z grows.
+    Vectorised (numpy broadcasting).
+
+    Examples
+    --------
+    >>> round(float(helix_twist(10.0, 45.0, 20.0 / math.pi)), 9)   # b tan 45 = 10, d = 20/pi
+    180.0
+    """
+    b = np.asarray(face_width, dtype=float)
+    beta = np.radians(np.asarray(helix_angle, dtype=float))
+    d = np.asarray(reference_diameter, dtype=float)
+    out = np.degrees(2.0 * b * np.tan(beta) / d)
+    return out if out.ndim else out[()]
+
+
+def slice_count(twist, radius, tolerance):
+    """Axial slices needed so a vertex at ``radius`` that turns by ``twist`` degrees keeps its
+    chord within ``tolerance`` of the true helix: ``r (1 - cos(dtheta / 2)) <= tolerance``.
+
+    At least 1 (a prism). Vectorised.
+
+    Examples
+    --------
+    >>> int(slice_count(0.0, 10.0, 0.01)), int(slice_count(180.0, 10.0, 0.01))
+    (1, 36)
+    """
+    t = np.radians(np.abs(np.asarray(twist, dtype=float)))
+    r = np.asarray(radius, dtype=float)
+    tol = np.asarray(tolerance, dtype=float)
+    step = 2.0 * np.arccos(np.clip(1.0 - tol / r, -1.0, 1.0))
+    out = np.maximum(1, np.ceil(t / step - 1e-12)).astype(int)
+    return out if out.ndim else out[()]
+
+
+def _rings(outline) -> list[np.ndarray]:
+    """Rings of a valid polygon: exterior counter-clockwise, holes clockwise, no repeated or
+    collinear vertices, closing point dropped."""
+    if not isinstance(outline, shapely.Polygon):
+        raise GearError(f"expected a shapely Polygon outline; got {type(outline).__name__}")
+    if outline.is_empty or not outline.is_valid or outline.area <= 0.0:
+        raise GearError("the outline must be a valid polygon of positive area")
+    p = shapely.orient_polygons(shapely.simplify(outline, 0.0), exterior_cw=False)
+    return [np.asarray(r.coords)[:-1, :2] for r in (p.exterior, *p.interiors)]
+
+
+def _cap(rings: list[np.ndarray]) -> np.ndarray:
+    """Triangles (indices into the stacked rings, counter-clockwise seen from +z) using every
+    vertex: earcut when it keeps them all, else manifold3d's robust triangulator."""
+    pts = np.concatenate(rings)
+    n, holes = len(pts), len(rings) - 1
+    expected = n + 2 * holes - 2
+    try:
+        import mapbox_earcut as earcut
+
+        ends = np.cumsum([len(r) for r in rings]).astype(np.uint32)
+        tri = np.asarray(earcut.triangulate_float64(pts, ends), dtype=np.int64).reshape(-1, 3)
+    except ImportError:  # pragma: no cover - earcut is in the mesh extra
+        tri = np.empty((0, 3), dtype=np.int64)
+    if len(tri) == expected and len(np.unique(tri)) == n:
+        a, b, c = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+        area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        if np.all(area > 0.0):
+            return tri
+    try:
+        import manifold3d
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise GearError("3D meshes need manifold3d: pip install 'geartrain[mesh]'") from exc
+    return np.asarray(manifold3d.triangulate(rings), dtype=np.int64)
+
+
+def gear_solid(
+    outline, face_width: float, twist: float = 0.0, tolerance: float = 0.01,
+    tip_radius: float | None = None, herringbone: bool = False,
+):  # fmt: skip
+    """A gear solid from its transverse outline: a prism, a helical twist or a herringbone.
+
+    Parameters
+    ----------
+    outline : shapely.Polygon
+        Transverse outline centred on the axis (holes allowed: bores, ring gears).
+    face_width : float
+        Axial length b, mm; the solid spans ``-b/2 <= z <= b/2``.
+    twist : float
+        Degrees the section turns over the face width, :func:`helix_twist` (right hand > 0).
+        For a herringbone gear, the rate of each half (each half turns by ``twist / 2``).
+    tolerance : float
+        Largest chord deviation from the true helix, mm, at ``tip_radius``.
+    tip_radius : float, optional
+        Radius at which the helix chord is held to ``tolerance``; default the outline's
+        largest vertex radius (conservative for rings, whose rim lies outside the teeth).
+    herringbone : bool
+        Two opposite-hand halves meeting at z = 0 (the lower half has the hand of ``twist``).
+
+    Returns
+    -------
+    trimesh.Trimesh
+        Watertight, consistently wound, outward normals, welded.
+
+    Raises
+    ------
+    GearError
+        For a face width or tolerance that is not > 0, a non-finite twist, an invalid outline,
+        or a vertex count above :data:`MAX_VERTICES`.
+
+    Examples
+    --------
+    >>> sq = shapely.box(-1.0, -1.0, 1.0, 1.0)
+    >>> m = gear_solid(sq, 2.0)
+    >>> m.is_watertight, float(m.volume), m.bounds[:, 2].tolist()
+    (True, 8.0, [-1.0, 1.0])
+    """
+    trimesh = _trimesh()
+    b = _positive("face_width", face_width)
+    tol = _positive("tolerance", tolerance)
+    twist = float(twist)
+    if not math.isfinite(twist):
+        raise GearError(f"twist = {twist!r} must be a finite number of degrees")
+    rings = _rings(outline)
+    pts = np.concatenate(rings)
+    n_pts = len(pts)
+    r = float(np.max(np.hypot(pts[:, 0], pts[:, 1]))) if tip_radius is None else tip_radius
+    r = _positive("tip_radius", r)
+    rate = math.radians(twist) / b  # radians per mm
+    if herringbone:
+        half = int(slice_count(twist / 2.0, r, tol)) if twist else 1
+        z = np.linspace(-b / 2.0, b / 2.0, 2 * half + 1)
+        theta = -rate * np.abs(z)  # lower half: theta = rate z (z < 0)
+    else:
+        n = int(slice_count(twist, r, tol)) if twist else 1
+        z = np.linspace(-b / 2.0, b / 2.0, n + 1)
+        theta = rate * z
+    levels = len(z)
+    if levels * n_pts > MAX_VERTICES:
+        raise GearError(
+            f"{levels} slices x {n_pts} outline vertices exceed {MAX_VERTICES} vertices; "
+            f"use a coarser tolerance (now {tol:g} mm)"
+        )
+    c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
+    verts = np.empty((levels, n_pts, 3))
+    verts[:, :, 0] = c * pts[:, 0] - s * pts[:, 1]
+    verts[:, :, 1] = s * pts[:, 0] + c * pts[:, 1]
+    verts[:, :, 2] = z[:, None]
+    # side quads: edge i -> j of each ring, between level k and k + 1
+    i = np.arange(n_pts)
+    j = np.concatenate([np.roll(np.arange(len(rr)), -1) for rr in rings])
+    j += np.repeat(np.cumsum([0] + [len(rr) for rr in rings[:-1]]), [len(rr) for rr in rings])
+    k = (np.arange(levels - 1) * n_pts)[:, None]
+    a, bb, cc, d = i + k, j + k, j + k + n_pts, i + k + n_pts
+    v = verts.reshape(-1, 3)
+    if levels > 2 or rate:
+        # split each twisted quad along the diagonal that bulges outwards (the chords of the
+        # helices lie inside the true surface, so this halves the volume deficit)
+        normal = np.cross(v[bb] - v[a], v[d] - v[a])
+        bulge = np.einsum("...i,...i->...", v[a] + v[cc] - v[bb] - v[d], normal)
+        flip = bulge < 0.0
+    else:
+        flip = np.zeros(a.shape, dtype=bool)
+    t1 = np.where(flip[..., None], np.stack([a, bb, d], -1), np.stack([a, bb, cc], -1))
+    t2 = np.where(flip[..., None], np.stack([bb, cc, d], -1), np.stack([a, cc, d], -1))
+    side = np.stack([t1, t2], -2).reshape(-1, 3)
+    cap = _cap(rings)
+    faces = np.concatenate([cap[:, ::-1], side, cap + (levels - 1) * n_pts])
+    return trimesh.Trimesh(v, faces, process=False)
+
+
+def transform(angle: float = 0.0, center=(0.0, 0.0), z: float = 0.0) -> np.ndarray:
+    """4x4 placement: turn by ``angle`` degrees about +z, then move the axis to ``center``
+    (and the mid-plane to ``z``).
+
+    Examples
+    --------
+    >>> transform(90.0, (1.0, 2.0)).round(12)[:2].tolist()
+    [[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0]]
+    """
+    t = math.radians(float(angle))
+    m = np.eye(4)
+    m[0, 0], m[0, 1], m[1, 0], m[1, 1] = math.cos(t), -math.sin(t), math.sin(t), math.cos(t)
+    m[0, 3], m[1, 3], m[2, 3] = float(center[0]), float(center[1]), float(z)
+    return m
+
+
+def _rgba(colour) -> list[int]:
+    if colour is None:
+        return [180, 180, 180, 255]
+    c = [float(v) for v in colour]
+    if len(c) == 3:
+        c.append(255.0 if max(c) > 1.0 else 1.0)
+    if len(c) != 4:
+        raise GearError(f"colour = {colour!r} must be RGB or RGBA (0-1 or 0-255)")
+    if max(c) <= 1.0:
+        c = [v * 255.0 for v in c]
+    return [round(min(255.0, max(0.0, v))) for v in c]
+
+
+def scene(parts: Iterable[Sequence]):
+    """A ``trimesh.Scene`` from ``(name, mesh, transform, colour)`` parts.
+
+    Parts that pass the *same* mesh object share one geometry (instanced by node transforms),
+    so a GLB of a planetary stage stores one planet mesh. The geometry is named by
+    ``mesh.metadata["name"]`` when set, otherwise by its first node. ``transform`` is a 4x4
+    matrix (None: identity; see :func:`transform`); ``colour`` RGB(A), 0-1 or 0-255, becomes a
+    PBR material of the geometry (the first part's colour wins for a shared mesh).
+
+    Examples
+    --------
+    >>> box = _trimesh().creation.box()
+    >>> s = scene([("a", box, transform(0, (0, 0)), (1, 0, 0)),
+    ...            ("b", box, transform(0, (3, 0)), None)])
+    >>> len(s.geometry), sorted(s.graph.nodes_geometry)
+    (1, ['a', 'b'])
+    """
+    trimesh = _trimesh()
+    from trimesh.visual import TextureVisuals
+    from trimesh.visual.material import PBRMaterial
+
+    out = trimesh.Scene()
+    names: dict[int, str] = {}
+    seen: set[str] = set()
+    for part in parts:
+        if len(part) < 2 or len(part) > 4:
+            raise GearError("each scene part is (name, mesh[, transform[, colour]])")
+        name, mesh = str(part[0]), part[1]
+        matrix = part[2] if len(part) > 2 and part[2] is not None else np.eye(4)
+        colour = part[3] if len(part) > 3 else None
+        matrix = np.asarray(matrix, dtype=float)
+        if matrix.shape != (4, 4) or not np.all(np.isfinite(matrix)):
+            raise GearError(f"transform of part {name!r} must be a finite 4x4 matrix")
+        if name in seen:
+            raise GearError(f"part name {name!r} is used twice; names must be unique")
+        seen.add(name)
+        key = id(mesh)
+        if key not in names:
+            geom = str(mesh.metadata.get("name") or name)
+            while geom in out.geometry:
+                geom += "_"
+            view = trimesh.Trimesh(mesh.vertices, mesh.faces, process=False)
+            rgba = _rgba(colour)
+            view.visual = TextureVisuals(
+                material=PBRMaterial(name=geom, baseColorFactor=rgba, metallicFactor=0.2)
+            )
+            view.metadata["name"] = geom
+            out.add_geometry(view, geom_name=geom, node_name=name, transform=matrix)
+            names[key] = geom
+        else:
+            out.graph.update(
+                frame_to=name, frame_from=out.graph.base_frame, matrix=matrix,
+                geometry=names[key],
+            )  # fmt: skip
+    if not seen:
+        raise GearError("a scene needs at least one part")
+    return out
+
+
+def to_manifold(mesh, matrix=None):
+    """A ``manifold3d.Manifold`` of a (watertight) mesh, optionally placed by a 4x4 matrix, for
+    exact booleans (intersection volumes of meshing gears, minimum gaps)."""
+    try:
+        import manifold3d
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise GearError("manifold3d is needed: pip install 'geartrain[mesh]'") from exc
+    v = np.asarray(mesh.vertices, dtype=float)
+    if matrix is not None:
+        m = np.asarray(matrix, dtype=float)
+        v = v @ m[:3, :3].T + m[:3, 3]
+    out = manifold3d.Manifold(
+        manifold3d.Mesh(
+            vert_properties=np.ascontiguousarray(v, dtype=np.float32),
+            tri_verts=np.ascontiguousarray(mesh.faces, dtype=np.uint32),
+        )
+    )
+    if out.status() != manifold3d.Error.NoError:
+        raise GearError(f"the mesh is not a closed manifold ({out.status()})")
+    return out
