@@ -19,6 +19,7 @@ from trains.catalog import (
     strain_wave,
     wolfrom,
 )
+from trains.coaxial import coaxial_shifts
 from trains.errors import TrainError
 from trains.inertia import reduced_inertia
 from trains.planetary import Assembly, Placement, Planetary
@@ -53,6 +54,7 @@ __all__ = [
     "TrainError",
     "bevel_differential",
     "biplanetary",
+    "coaxial_shifts",
     "double_planet",
     "ferguson",
     "khv",

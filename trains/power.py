@@ -130,8 +130,22 @@ class PowerFlow:
         return "\n".join(lines)
 
 
-def _efficiencies(train: Train, mesh_efficiency: Any) -> list[float]:
+def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> list[float]:
+    """Efficiency of every relation: the user's value where given (a mapping entry, or the
+    scalar for every mesh and link), else with ``friction`` the Ozols (14.25) estimate from a
+    mesh's :class:`gears.GearPair`, else 1 (lossless)."""
     rel = train.relations
+    if friction is not None:
+        if isinstance(friction, bool) or not isinstance(friction, numbers.Real):
+            raise TrainError(f"friction = {friction!r}; valid is a number 0 <= f < 1")
+        friction = float(friction)
+        if not (0.0 <= friction < 1.0):
+            raise TrainError(f"friction = {friction!r}; valid is a number 0 <= f < 1")
+    geometric: dict[str, float] = {}
+    if friction is not None:
+        for r in rel:
+            if r.pair is not None:
+                geometric[r.name] = r.pair.mesh_efficiency(friction)
     if isinstance(mesh_efficiency, Mapping):
         names = {r.name for r in rel}
         for k in mesh_efficiency:
@@ -140,17 +154,31 @@ def _efficiencies(train: Train, mesh_efficiency: Any) -> list[float]:
                     f"mesh_efficiency names unknown relation {k!r}; the relations are"
                     f" {', '.join(r.name for r in rel)}"
                 )
-        etas = [1.0 if r.kind == "couple" else mesh_efficiency.get(r.name, 1.0) for r in rel]
-        etas = [mesh_efficiency.get(r.name, e) for r, e in zip(rel, etas, strict=True)]
+        etas = [
+            mesh_efficiency[r.name]
+            if r.name in mesh_efficiency
+            else 1.0
+            if r.kind == "couple"
+            else geometric.get(r.name, 1.0)
+            for r in rel
+        ]
     else:
-        etas = [1.0 if r.kind == "couple" else mesh_efficiency for r in rel]
+        if mesh_efficiency is None:
+            mesh_efficiency = 1.0
+        etas = [1.0 if r.kind == "couple" else geometric.get(r.name, mesh_efficiency) for r in rel]
     out = []
     for r, e in zip(rel, etas, strict=True):
         if isinstance(e, bool) or not isinstance(e, numbers.Real):
             raise TrainError(f"efficiency of {r.name!r} must be a number, got {e!r}")
         e = float(e)
         if not (0.0 < e <= 1.0):
-            raise TrainError(f"efficiency of {r.name!r} must be in (0, 1], got {e}")
+            how = (
+                f" (estimated from its geometry with friction {friction:g})"
+                if r.name in geometric
+                and not (isinstance(mesh_efficiency, Mapping) and r.name in mesh_efficiency)
+                else ""
+            )
+            raise TrainError(f"efficiency of {r.name!r} must be in (0, 1], got {e:.6g}{how}")
         out.append(e)
     return out
 
@@ -160,9 +188,10 @@ def power_flow(
     input: str | Sequence[str],
     output: str,
     fixed: Iterable[str] = (),
-    mesh_efficiency: float | Mapping[str, float] = 1.0,
+    mesh_efficiency: float | Mapping[str, float] | None = None,
     input_torque: float = 1.0,
     input_speed: float | Mapping[str, float] = 1.0,
+    friction: float | None = None,
 ) -> PowerFlow:
     """Torques, powers, losses and efficiency of a train driven at ``input``, loaded at ``output``.
 
@@ -176,9 +205,16 @@ def power_flow(
         The driven member.
     fixed : iterable of str
         Members held by the housing.
-    mesh_efficiency : float or mapping
+    mesh_efficiency : float or mapping, optional
         Efficiency of every mesh and link in its carrier frame, or a mapping ``relation name ->
-        efficiency`` (missing relations are lossless). Couplings are lossless.
+        efficiency`` (missing relations are lossless, or estimated with ``friction``).
+        Couplings are lossless. Default 1 (lossless).
+    friction : float, optional
+        Mesh friction coefficient f (0 <= f < 1). Every mesh built from real gears
+        (:meth:`Train.mesh` with ``gears=``/``pair=``) then gets its efficiency from its own
+        geometry, :meth:`gears.GearPair.mesh_efficiency` (Ozols (14.25): contact ratio, tooth
+        counts, internal or external), unless ``mesh_efficiency`` names it in a mapping; a
+        scalar ``mesh_efficiency`` then applies to the kinematic-only meshes and links.
     input_torque : float
         Torque on the (first) input member; the result scales with it.
     input_speed : float or mapping
@@ -240,7 +276,7 @@ def power_flow(
     w = {m: float(motion[m]) for m in train.members}
     if not all(math.isfinite(x) for x in w.values()):
         raise TrainError("speeds must be finite")
-    etas = _efficiencies(train, mesh_efficiency)
+    etas = _efficiencies(train, mesh_efficiency, friction)
 
     members = list(train.members)
     row = {m: i for i, m in enumerate(members)}

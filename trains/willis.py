@@ -41,12 +41,14 @@ import numbers
 import operator
 import warnings
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
+from gears import Finding, Gear, GearError, GearPair, Report
+from trains.conditions import assembly_number, closure_margin, neighbour_gap
 from trains.errors import TrainError
 
 FRAME = "frame"
@@ -87,6 +89,10 @@ class Relation:
         ``(z_a, z_b)`` for a mesh.
     internal : bool
         True for an internal mesh.
+    gears : (Gear, Gear) or None
+        The real gears on ``a`` and ``b`` of a mesh built from gears (None: kinematic only).
+    pair : GearPair or None
+        Their :class:`gears.GearPair` (the external gear is its ``g1``).
     """
 
     kind: str
@@ -98,6 +104,19 @@ class Relation:
     k_b: Any
     teeth: tuple[int, int] | None = None
     internal: bool = False
+    gears: tuple[Gear, Gear] | None = field(default=None, compare=False, repr=False)
+    pair: GearPair | None = field(default=None, compare=False, repr=False)
+
+    def gear_of(self, member: str) -> tuple[Gear, float] | None:
+        """The gear on ``member`` in this mesh and its tip diameter as mounted (with the pair's
+        tip shortening), or None for a kinematic-only relation."""
+        if self.pair is None or member not in (self.a, self.b):
+            return None
+        on_a = member == self.a
+        gear = self.gears[0] if on_a else self.gears[1]
+        d1, d2 = self.pair.tip_diameters
+        first = on_a != self.gears[0].internal  # the external gear is the pair's g1
+        return gear, float(d1 if first else d2)
 
     @property
     def coefficients(self) -> dict[str, Any]:
@@ -160,9 +179,12 @@ def _ratio(value: Any) -> Fraction | float:
         raise TrainError(f"ratio must be a number, got {value!r}")
     if isinstance(value, str):
         try:
-            return Fraction(value)
+            r = Fraction(value)
         except ValueError:
             raise TrainError(f"ratio {value!r} is not a number or a fraction like '13/3'") from None
+        except ZeroDivisionError:
+            raise TrainError(f"ratio {value!r} divides by zero; give a finite ratio") from None
+        return r
     if _exact(value):
         return Fraction(value)
     if isinstance(value, numbers.Real):
@@ -403,6 +425,7 @@ class Train:
         self._members: list[str] = [FRAME]
         self._relations: list[Relation] = []
         self._planets: dict[str, int] = {}
+        self._coaxial: list[tuple[str, ...]] = []
         self._maps: dict[tuple[str, ...], _Map] = {}
         self.name = ""
         self.run_defaults: dict[str, Any] = {}  # `[run]` table of a TOML file (CLI defaults)
@@ -444,32 +467,48 @@ class Train:
         self,
         a: str,
         b: str,
-        teeth: tuple[int, int],
+        teeth: tuple[int, int] | None = None,
         carrier: str | None = None,
-        internal: bool = False,
+        internal: bool | None = None,
         name: str | None = None,
+        gears: tuple[Gear, Gear] | None = None,
+        pair: GearPair | None = None,
     ) -> None:
         """Add one mesh: ``(w_a - w_c)/(w_b - w_c) = -z_b/z_a`` (``+z_b/z_a`` if internal).
+
+        Give either tooth counts (a kinematic-only mesh) or the real gears (``gears`` or
+        ``pair``): then the tooth counts and the internal flag come from the gears, and the mesh
+        holds a :class:`gears.GearPair` whose findings :meth:`check` reports and whose losses
+        :func:`trains.power_flow` estimates (``friction=``).
 
         Parameters
         ----------
         a, b : str
             The meshing members. A member meshing twice with different tooth counts is a stepped
             (compound) gear.
-        teeth : (int, int)
-            ``(z_a, z_b)``, positive integers (a worm's number of starts for a worm).
+        teeth : (int, int), optional
+            ``(z_a, z_b)``, positive integers (a worm's number of starts for a worm). With gears
+            it may be given too and must agree.
         carrier : str, optional
             The member holding both axes; ``None`` means the frame (fixed axes).
-        internal : bool
+        internal : bool, optional
             True when one of the two is an internal (ring) gear: the members turn the same way
-            relative to the carrier.
+            relative to the carrier. Default False; with gears it follows from them.
         name : str, optional
             Name of the mesh (default ``"a-b"``).
+        gears : (Gear, Gear), optional
+            The gear on ``a`` and the gear on ``b``; at most one internal (the ring may sit on
+            either member).
+        pair : GearPair, optional
+            A ready pair: its ``g1`` sits on ``a`` and its ``g2`` on ``b`` (a pair keeps its own
+            tip-shortening choice).
 
         Raises
         ------
         TrainError
-            For a tooth count that is not a positive integer, or a carrier equal to a member.
+            For a tooth count that is not a positive integer, a carrier equal to a member, gears
+            that do not form a pair (the message of :class:`gears.GearError` with the mesh
+            name), or tooth counts / internal flag that contradict the gears.
 
         Examples
         --------
@@ -481,13 +520,71 @@ class Train:
         Traceback (most recent call last):
         ...
         trains.errors.TrainError: first tooth count must be a positive integer, got 20.5 ...
+
+        A mesh of real gears:
+
+        >>> from gears import Gear
+        >>> t = Train()
+        >>> t.mesh("in", "out", gears=(Gear(17, 2), Gear(40, 2)))
+        >>> t.ratio("in", "out"), round(t.pairs["in-out"].center_distance, 6)
+        (Fraction(-40, 17), 57.0)
         """
+        real, pair = self._gears_of(a, b, gears, pair, name)
+        if real is not None:
+            zg = (real[0].teeth, real[1].teeth)
+            if teeth is not None:
+                if not isinstance(teeth, tuple | list) or tuple(teeth) != zg:
+                    raise TrainError(
+                        f"mesh {a}-{b}: teeth = {teeth!r} contradicts the gears' tooth counts"
+                        f" {zg}; give one of them"
+                    )
+            ring = pair.internal
+            if internal is not None and bool(internal) != ring:
+                raise TrainError(
+                    f"mesh {a}-{b}: internal = {internal!r} contradicts the gears (internal ="
+                    f" {ring}); the internal flag follows from the ring gear's internal=True"
+                )
+            teeth, internal = zg, ring
+        if teeth is None:
+            raise TrainError(f"mesh {a}-{b}: give teeth=(z_a, z_b), gears=(g_a, g_b) or pair=")
         if not isinstance(teeth, tuple | list) or len(teeth) != 2:
             raise TrainError(f"teeth must be a pair (z_a, z_b), got {teeth!r}")
         za, zb = _teeth(teeth[0], "first"), _teeth(teeth[1], "second")
         internal = bool(internal)
         self._add("mesh", a, b, carrier, za, -zb if internal else zb, name, teeth=(za, zb),
-                  internal=internal)  # fmt: skip
+                  internal=internal, gears=real, pair=pair)  # fmt: skip
+
+    @staticmethod
+    def _gears_of(
+        a: Any, b: Any, gears: Any, pair: Any, name: Any
+    ) -> tuple[tuple[Gear, Gear] | None, GearPair | None]:
+        where = f"mesh {name or f'{a}-{b}'}"
+        if gears is None and pair is None:
+            return None, None
+        if gears is not None and pair is not None:
+            raise TrainError(f"{where}: give gears=(g_a, g_b) or pair=, not both")
+        if pair is not None:
+            if not isinstance(pair, GearPair):
+                raise TrainError(f"{where}: pair must be a gears.GearPair, got {pair!r}")
+            if pair.is_rack:
+                raise TrainError(
+                    f"{where}: a pinion and rack has no second axis; use Train.link for it"
+                )
+            return (pair.g1, pair.g2), pair
+        if (
+            not isinstance(gears, tuple | list)
+            or len(gears) != 2
+            or not all(isinstance(g, Gear) for g in gears)
+        ):
+            raise TrainError(f"{where}: gears must be two gears.Gear objects, got {gears!r}")
+        ga, gb = gears
+        if ga.internal and gb.internal:
+            raise TrainError(f"{where}: two internal gears cannot mesh (at most one is a ring)")
+        try:
+            pair = GearPair(gb, ga) if ga.internal else GearPair(ga, gb)
+        except GearError as exc:
+            raise TrainError(f"{where}: {exc}") from None
+        return (ga, gb), pair
 
     def link(
         self, a: str, b: str, ratio: Any, carrier: str | None = None, name: str | None = None
@@ -526,6 +623,30 @@ class Train:
         if count < 1:
             raise TrainError(f"a planet count must be >= 1, got {count}")
         self._planets[member] = count
+
+    def coaxial(self, *members: str) -> None:
+        """Declare members whose axes coincide (checked by :meth:`check`).
+
+        The input and output shafts of a reverted train, the central gears of a planetary: each
+        path of real-gear meshes between two of them must close, e.g. ``a_w12 = a_w34``.
+
+        Examples
+        --------
+        >>> from gears import Gear
+        >>> t = Train()
+        >>> t.mesh("in", "lay", gears=(Gear(17, 2), Gear(40, 2)))
+        >>> t.mesh("lay", "out", gears=(Gear(20, 2), Gear(38, 2)))
+        >>> t.coaxial("in", "out")
+        >>> f = t.check()["coaxiality(in, out)"]
+        >>> f.ok, round(f.margin, 4)    # a_w 57 mm and 58 mm
+        (False, -0.99)
+        """
+        names = [_name(m, "coaxial member") for m in members]
+        if len(names) < 2 or len(set(names)) != len(names):
+            raise TrainError(f"coaxial needs two or more different members, got {members!r}")
+        for m in names:
+            self._check_member(m)
+        self._coaxial.append(tuple(names))
 
     # ---- introspection
 
@@ -586,6 +707,210 @@ class Train:
         cheb = 3 * links - 2 * lower - higher
         mob = self.mobility
         return Structure(links, lower, higher, cheb, mob - cheb, mob)
+
+    @property
+    def pairs(self) -> dict[str, GearPair]:
+        """The :class:`gears.GearPair` of every mesh built from real gears, by mesh name."""
+        return {r.name: r.pair for r in self._relations if r.pair is not None}
+
+    @property
+    def coaxial_groups(self) -> tuple[tuple[str, ...], ...]:
+        """The groups of coaxial members: those declared with :meth:`coaxial`, then the
+        central members of every planet declared with :meth:`set_planets` (the members it
+        meshes on its carrier, which turn about the carrier's axis)."""
+        groups = list(self._coaxial)
+        for planet, central, _carrier in self._planet_meshes():
+            members = tuple(dict.fromkeys(r.b if r.a == planet else r.a for r in central))
+            if len(members) >= 2 and not any(set(members) <= set(g) for g in groups):
+                groups.append(members)
+        return tuple(groups)
+
+    def _planet_meshes(self) -> list[tuple[str, list[Relation], str]]:
+        """(planet, its meshes with central members, carrier) for each declared planet."""
+        out = []
+        for planet in self._planets:
+            rels = [
+                r
+                for r in self._relations
+                if r.kind == "mesh" and planet in (r.a, r.b) and r.carrier != FRAME
+            ]
+            central = [r for r in rels if (r.b if r.a == planet else r.a) not in self._planets]
+            if central:
+                out.append((planet, central, central[0].carrier))
+        return out
+
+    def check(
+        self,
+        tolerance: float = 0.01,
+        min_contact_ratio: float = 1.1,
+        min_tip_land: float = 0.2,
+        clearance: float = 0.5,
+    ) -> Report:
+        """Every condition of a train of real gears, each a :class:`gears.Finding` with a margin.
+
+        * every mesh's :meth:`gears.GearPair.check` findings, prefixed by the mesh name
+          (``"1-2.contact_ratio"``, ``"1-2.g1.undercut"``);
+        * ``coaxiality(a, b, ...)`` for every group of :attr:`coaxial_groups`: each path of
+          real-gear meshes between two members of the group closes (two centre distances equal
+          within ``tolerance`` mm; three or more form a closing polygon), margin in mm
+          (:func:`trains.conditions.closure_margin`);
+        * ``<member>.same_gear``: a member meshing twice with gears of equal tooth count and
+          module is one gear, so their profile shift, helix, pressure angle and face width agree
+          (a stepped gear, two different gears on one shaft, is not flagged);
+        * for a planet given ``k >= 2`` copies (:meth:`set_planets`): ``<planet>.assembly``
+          (the exact gcd form, when it meshes two central members; teeth) and
+          ``<planet>.neighbour`` (gap between planet tip circles minus ``clearance`` modules, mm).
+
+        A kinematic-only mesh (tooth counts) has no geometry to check: it adds no finding, and a
+        coaxial group joined only through such meshes gets an informative note.
+
+        Examples
+        --------
+        Ozols example 7-7, the electric hoist, on real gears (stage modules 1.5, 2 and 2 make
+        the sun 1, the gear 3 and the drum 4 coaxial at 57 mm and 48 mm):
+
+        >>> from gears import Gear
+        >>> t = Train()
+        >>> t.mesh("1", "2", gears=(Gear(24, 1.5), Gear(52, 1.5)), carrier="4")
+        >>> t.mesh("2", "3", gears=(Gear(21, 2), Gear(78, 2, internal=True)), carrier="4")
+        >>> t.mesh("3", "5", gears=(Gear(18, 2), Gear(30, 2)))
+        >>> t.mesh("5", "4", gears=(Gear(30, 2), Gear(78, 2, internal=True)))
+        >>> t.coaxial("1", "3", "4")
+        >>> r = t.check()
+        >>> r["coaxiality(1, 3, 4)"].ok, t.ratio("1", "4")
+        (True, Fraction(2767, 63))
+        """
+        for value, what in ((tolerance, "tolerance"), (clearance, "clearance")):
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, numbers.Real)
+                or not (math.isfinite(value) and value >= 0)
+            ):
+                raise TrainError(f"{what} = {value!r}; valid is a finite number >= 0")
+        findings: list[Finding] = []
+        for r in self._relations:
+            if r.pair is not None:
+                rep = r.pair.check(min_contact_ratio, min_tip_land)
+                findings.extend(rep.prefixed(r.name).values())
+        for group in self.coaxial_groups:
+            findings.append(self._coaxiality(group, tolerance))
+        findings.extend(self._same_gear())
+        findings.extend(self._planet_findings(clearance))
+        return Report(findings)
+
+    def _coaxiality(self, group: tuple[str, ...], tolerance: float) -> Finding:
+        name = f"coaxiality({', '.join(group)})"
+        edges: dict[str, list[tuple[str, Relation]]] = {}
+        for r in self._relations:
+            if r.kind == "mesh" and r.pair is not None:
+                edges.setdefault(r.a, []).append((r.b, r))
+                edges.setdefault(r.b, []).append((r.a, r))
+        inside = set(group)
+        paths: list[tuple[str, list[Relation]]] = []
+        for start in group:
+            stack = [(start, [start], [])]
+            while stack and len(paths) < 1000:
+                node, seen, rels = stack.pop()
+                for nxt, r in edges.get(node, ()):
+                    if nxt in seen or len(rels) >= 8:
+                        continue
+                    if nxt in inside:
+                        if group.index(nxt) > group.index(start):
+                            paths.append((" - ".join([*seen, nxt]), [*rels, r]))
+                        continue
+                    stack.append((nxt, [*seen, nxt], [*rels, r]))
+        if not paths:
+            return Finding(
+                name, 0.0,
+                f"no chain of real-gear meshes joins {', '.join(group)}: coaxiality not checked"
+                " (give the meshes gears=)", ok=True,
+            )  # fmt: skip
+        worst, text = math.inf, []
+        for label, rels in paths:
+            dist = [r.pair.center_distance for r in rels]
+            margin = float(closure_margin(dist, tolerance))
+            worst = min(worst, margin)
+            text.append(f"{label}: a_w {' / '.join(f'{d:.4f}' for d in dist)} mm")
+        rule = f"equal within {tolerance:g} mm; chains of 3+ close as a polygon"
+        return Finding(name, worst, f"{'; '.join(text)} ({rule})")
+
+    def _same_gear(self) -> list[Finding]:
+        seen: dict[tuple[str, int, float], tuple[str, Gear]] = {}
+        out: list[Finding] = []
+        for r in self._relations:
+            if r.pair is None:
+                continue
+            for member, gear in ((r.a, r.gears[0]), (r.b, r.gears[1])):
+                key = (member, gear.teeth, gear.module)
+                if key not in seen:
+                    seen[key] = (r.name, gear)
+                    continue
+                first, g0 = seen[key]
+                diffs = []
+                for attr, unit in (("profile_shift", ""), ("helix_angle", " deg"),
+                                   ("pressure_angle", " deg"), ("face_width", " mm")):  # fmt: skip
+                    x, y = getattr(g0, attr), getattr(gear, attr)
+                    if x is not None and y is not None and not math.isclose(x, y, abs_tol=1e-12):
+                        diffs.append((attr, x, y, unit))
+                name = f"{member}.same_gear"
+                if any(f.name == name for f in out):
+                    continue
+                if diffs:
+                    d = abs(diffs[0][1] - diffs[0][2])
+                    what = ", ".join(f"{a} {x:g}{u} vs {y:g}{u}" for a, x, y, u in diffs)
+                    out.append(Finding(
+                        name, -d,
+                        f"{member} meshes in {first} and {r.name} with one gear of {gear.teeth}"
+                        f" teeth, module {gear.module:g}, but the two descriptions differ:"
+                        f" {what} (a stepped gear needs another tooth count or module)",
+                        unit=diffs[0][3].strip(),
+                    ))  # fmt: skip
+        return out
+
+    def _planet_findings(self, clearance: float) -> list[Finding]:
+        out: list[Finding] = []
+        for planet, central, _carrier in self._planet_meshes():
+            k = self._planets[planet]
+            if k < 2:
+                continue
+            if len(central) == 2:
+                z, internal = [], []
+                for r in central:
+                    on_a = r.a == planet
+                    z.append(
+                        (r.teeth[1] if on_a else r.teeth[0], r.teeth[0] if on_a else r.teeth[1])
+                    )
+                    internal.append(r.internal)
+                (za, zc), (zb, zd) = z
+                t = int(assembly_number(za, zc, zd, zb, internal[0], internal[1]))
+                rem = t % k if t else 0
+                ok = rem == 0
+                names = " and ".join(r.name for r in central)
+                out.append(Finding(
+                    f"{planet}.assembly", -float(min(rem, k - rem)) + 0.0,
+                    f"{k} equally spaced planets {planet} ({names}): assembly number T = {t}"
+                    f" {'is' if ok else 'is not'} a multiple of {k} (lectures §4.3)",
+                    unit="teeth", ok=ok,
+                ))  # fmt: skip
+            real = [r for r in central if r.pair is not None]
+            if not real:
+                continue
+            tips, modules = [], []
+            for r in self._relations:
+                got = r.gear_of(planet) if r.kind == "mesh" else None
+                if got is not None:
+                    tips.append(got[1])
+                    modules.append(got[0].module)
+            tips_by_gear = max(tips)
+            a = real[0].pair.center_distance
+            gap = float(neighbour_gap(a, tips_by_gear, k))
+            need = clearance * max(modules)
+            out.append(Finding(
+                f"{planet}.neighbour", gap - need,
+                f"{k} planets {planet} at a_w = {a:.4f} mm: gap between tip circles (d_a ="
+                f" {tips_by_gear:.4f} mm) {gap:.4f} mm vs clearance {need:.4f} mm",
+            ))  # fmt: skip
+        return out
 
     def _known_names(self) -> str:
         return ", ".join(sorted(self._members))

@@ -31,7 +31,10 @@ def test_toml_links_with_string_fractions(tmp_path):
 @pytest.mark.parametrize(
     ("text", "match"),
     [
-        ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 0]\n', r"mesh #1: second tooth count"),
+        (
+            '[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 0]\n',
+            r"line 3: mesh #1, 'teeth': second tooth count",
+        ),
         ('[[mesh]]\ngears = ["a"]\nteeth = [20, 10]\n', "list of two member names"),
         ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 10]\ncolour = 1\n', "unknown keys"),
         ('[[link]]\nmembers = ["a", "b"]\n', "'ratio' is required"),
