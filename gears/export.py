@@ -1,4 +1,6 @@
-"""2D export of outlines: plain SVG (no dependency), DXF (ezdxf, the ``dxf`` extra), point arrays.
+"""Layer 11, consumers.
+
+2D export of outlines: plain SVG (no dependency), DXF (ezdxf, the ``dxf`` extra), point arrays.
 
 Export picks the format from the file extension (:func:`save`), the way trimesh does.
 """
@@ -11,6 +13,7 @@ import numpy as np
 import shapely
 
 from gears.errors import GearError
+from gears.plot import outlines_figure
 
 __all__ = ["points", "save", "to_dxf", "to_svg"]
 
@@ -103,8 +106,6 @@ def save(path, *outlines) -> pathlib.Path:
     if ext == ".dxf":
         return to_dxf(path, *outlines)
     if ext == ".png":
-        from gears.plot import outlines_figure
-
         fig = outlines_figure(*outlines)
         fig.savefig(path, dpi=150)
         import matplotlib.pyplot as plt
