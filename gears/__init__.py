@@ -8,7 +8,8 @@ The public surface (see ``docs/``)::
 from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
-from gears.pair import GearPair, PairGeometry, Rack, pair_geometry
+from gears.meshing import PairGeometry, pair_geometry
+from gears.pair import GearPair, Rack
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 

@@ -1,4 +1,4 @@
-"""The shaper (pinion-type, Fellows) cutter and the exact outline it generates.
+"""Layer 2, generating tools: the shaper (pinion-type, Fellows) cutter and its own geometry.
 
 A shaper cutter is an involute gear of ``z0`` teeth with a long addendum (``h_a0 = 1.25 m_n`` by
 default, the rack tool's), tip rounds of radius ``rho_a0`` tangent to its flanks and its tip
@@ -25,25 +25,25 @@ gives the fillet (the offset of the epi- or hypotrochoid of the round's centre),
 the root circle, to the involute flank the work's involute, and, past the line-of-action limit
 point, the undercut.
 
-:class:`ShaperProfile` plugs this tool into :class:`gears.profile.ToothProfile`, so the sampling
-to a tolerance, undercut crossing and tip handling are shared with the rack outline.
+:class:`gears.profile.ShaperProfile` plugs this tool into :class:`gears.profile.ToothProfile`, so
+the sampling to a tolerance, undercut crossing and tip handling are shared with the rack outline.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import cached_property
 
 import numpy as np
 from scipy.optimize import brentq
 
 from gears.errors import GearError
-from gears.gear import _half_angle_at_reference, tip_diameter
+from gears.geometry import base_diameter, half_angle_at_reference, tip_diameter
 from gears.involute import inv
-from gears.profile import ToothProfile, space_half_angle
+from gears.meshing import internal_interference, pair_geometry
+from gears.report import Finding, Report
 
-__all__ = ["ShaperCutter", "ShaperProfile", "ShaperTool"]
+__all__ = ["ShaperCutter", "ShaperTool"]
 
 # A "3 inch" (76 mm) disc cutter is the common Fellows size; the default cutter is the nearest
 # tooth count to that pitch diameter, within these bounds.
@@ -127,9 +127,7 @@ class ShaperCutter:
         return h, rho
 
     def _mesh(self, gear):
-        """The cutting mesh as a pair (cutter = gear 1): :func:`gears.pair.pair_geometry`."""
-        from gears.pair import pair_geometry
-
+        """The cutting mesh as a pair (cutter = gear 1): :func:`gears.meshing.pair_geometry`."""
         if gear.internal and gear.teeth - self.teeth < 1:
             raise GearError(
                 f"cutter teeth = {self.teeth} for an internal gear of z = {gear.teeth}; valid is "
@@ -149,7 +147,7 @@ class ShaperCutter:
         return float(self._mesh(gear).center_distance)
 
     def tip_diameter_of_cutter(self, gear) -> float:
-        """d_a0 = m_t z0 + 2 (h_a0* + x0) m_n (:func:`gears.gear.tip_diameter`)."""
+        """d_a0 = m_t z0 + 2 (h_a0* + x0) m_n (:func:`gears.geometry.tip_diameter`)."""
         h, _ = self._h(gear)
         return float(tip_diameter(self.teeth, gear.module, self.shift, gear.helix_angle, h))
 
@@ -176,19 +174,6 @@ class ShaperCutter:
         rb = gear.base_diameter / 2
         return 2 * math.sqrt(rb * rb + max(rho_w, 0.0) ** 2)
 
-    def as_gear(self, gear):
-        """The cutter as a :class:`gears.Gear` meshing with ``gear`` (same module, angles; tip
-        at ``d_a0``; a sharp rack so no fillet is implied)."""
-        from gears.gear import Gear
-        from gears.rack import BasicRack
-
-        h, _ = self._h(gear)
-        rack = BasicRack(gear.rack.pressure_angle, h, h, 0.0, name="shaper cutter")
-        return Gear(
-            self.teeth, gear.module, gear.pressure_angle, gear.helix_angle, self.shift,
-            rack=rack,
-        )  # fmt: skip
-
     def check(self, gear):
         """Can this cutter cut ``gear``? A :class:`gears.Report` with
 
@@ -211,9 +196,6 @@ class ShaperCutter:
         >>> ShaperCutter(20).check(ring).ok, ShaperCutter(37).check(ring).failed()
         (True, ['trimming', 'radial_infeed'])
         """
-        from gears.pair import GearPair
-        from gears.report import Finding, Report
-
         if not gear.internal:
             margin = ShaperTool(gear, self).form_roll_length
             return Report(
@@ -226,23 +208,26 @@ class ShaperCutter:
                     )
                 ]
             )  # fmt: skip
-        pair = GearPair(self.as_gear(gear), gear, tip_shortening=False)
-        found = pair.check()
+        # the cutter meshes with the ring as the pinion at the cutting centre distance
+        rb0 = float(base_diameter(self.teeth, gear.module, gear.pressure_angle, gear.helix_angle))
+        a0, ra0 = self.center_distance(gear), self.tip_diameter_of_cutter(gear) / 2
+        found = internal_interference(
+            self.teeth, gear.teeth, a0, ra0, gear.tip_diameter / 2, rb0 / 2,
+            gear.base_diameter / 2, self.working_pressure_angle(gear),
+        )  # fmt: skip
         out = []
-        for src, name, what in [
-            ("involute_interference", "tip_past_n1", "the ring's tip stays before the cutter's N1"),
-            ("trochoid_interference", "trimming", "the cutter clears the ring's tips leaving"),
-            ("radial_interference", "radial_infeed", "the cutter can be fed in radially"),
+        for margin, name, what, unit in [
+            (found.involute, "tip_past_n1", "the ring's tip stays before the cutter's N1", ""),
+            (found.trochoid, "trimming", "the cutter clears the ring's tips leaving", "rad"),
+            (found.radial, "radial_infeed", "the cutter can be fed in radially", "rad"),
         ]:
-            f = found[src]
-            out.append(Finding(name, f.margin, f"cutter z0 = {self.teeth}: {what}", unit=f.unit))
+            text = f"cutter z0 = {self.teeth}: {what}"
+            out.append(Finding(name, float(margin), text, unit=unit))
         return Report(out)
 
-    def outline(self, gear, tolerance: float = 0.001, **kwargs):
-        """Analytic outline of ``gear`` cut by this cutter (see :func:`gears.profile.outline`)."""
-        from gears.profile import outline
 
-        return outline(gear, tolerance, cutter=self, **kwargs)
+def _wrap(a):
+    return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 class ShaperTool:
@@ -274,7 +259,7 @@ class ShaperTool:
         self.rw = (gear.base_diameter / 2) / math.cos(aw)
         self.length = self.a0 * math.sin(aw)  # N1 N2 on the line of action
         # half tooth angle on the cutter's base circle (flanks moved j/4 out for the backlash)
-        psi = _half_angle_at_reference(
+        psi = half_angle_at_reference(
             self.z0, cutter.shift, gear.pressure_angle, gear.helix_angle, False
         )
         self.psi_b = float(psi) + inv(at) + backlash / (4 * self.rb0)
@@ -417,77 +402,3 @@ class ShaperTool:
     def undercut_roll(self) -> float:
         """Cutter roll angle whose conjugate point is the work's N1 (external only)."""
         return self.length / self.rb0
-
-
-def _wrap(a):
-    return (a + math.pi) % (2 * math.pi) - math.pi
-
-
-class ShaperProfile(ToothProfile):
-    """Exact half-space boundary of ``gear`` cut by ``cutter`` (see the module docstring).
-
-    Same interface as :class:`gears.profile.ToothProfile`: ``fillet(tau)`` runs over the cutter's
-    tip round (``0 <= tau <= 1``, tip-land end to flank tangency) and, for an undercut external
-    gear, over the cutter's involute down to the point conjugate to N1 (``1 < tau <= 2``).
-    """
-
-    def __init__(self, gear, cutter: ShaperCutter | None = None, backlash: float = 0.0) -> None:
-        self.gear = gear
-        b = float(backlash)
-        if not (math.isfinite(b) and b >= 0):
-            raise GearError(f"backlash = {backlash!r} mm; valid is a finite number >= 0")
-        self.backlash = b
-        if cutter is None:
-            cutter = getattr(gear, "cutter", None) or ShaperCutter.default_for(gear)
-        self.cutter = cutter
-        if not isinstance(self.cutter, ShaperCutter):
-            raise GearError(f"cutter = {cutter!r}; valid is a ShaperCutter or None")
-        self.tool = ShaperTool(gear, self.cutter, b)
-        self.z = gear.teeth
-        self.rb = gear.base_diameter / 2
-        self.ra = gear.tip_diameter / 2
-        self.rf = self.tool.root_radius
-        self.alpha_t = math.radians(gear.transverse_pressure_angle)
-        self.eta_p = space_half_angle(gear, b)
-        self._validate()
-
-    @property
-    def undercut(self) -> bool:
-        return self.tool.undercuts
-
-    @property
-    def v_limit(self) -> float:  # pragma: no cover - rack-only notion
-        raise GearError("v_limit is a rack-tool quantity; a shaper profile has undercut_roll")
-
-    def fillet(self, tau):
-        t = self.tool
-        tau = np.asarray(tau, float)
-        on_round = tau <= 1.0
-        g = t.gamma_tip + np.minimum(tau, 1.0) * (t.gamma_flank - t.gamma_tip)
-        pr, nr = t.round_points(g)
-        tr = t.t_f + (np.maximum(tau, 1.0) - 1.0) * (t.undercut_roll - t.t_f)
-        pf, nf = t.flank_points(tr)
-        p = np.where(on_round[..., None], pr, pf)
-        n = np.where(on_round[..., None], nr, nf)
-        return t.envelope(p, n)
-
-    @property
-    def has_round(self) -> bool:
-        return True
-
-    @cached_property
-    def _tangent_radius(self) -> float:
-        return float(self.fillet(1.0)[0])
-
-    def _land_angle(self) -> float:
-        return float(self.fillet(0.0)[1])
-
-    def flank_contact(self, rho_w):
-        """Work rotation (rad) at which the space's right flank is cut at radius ``rho_w``
-        (rho_w is the work involute's curvature radius), and the cutter's curvature radius
-        there: ``(phi, rho_t)``. phi = eta(r_w) + s (t - tan alpha_w0) (see the module notes)."""
-        t = self.tool
-        eta_w = float(self.eta_involute(t.rw))
-        phi = eta_w + t.s * (np.asarray(rho_w) / self.rb - math.tan(t.alpha_w))
-        rho_t = t.s * (t.length - np.asarray(rho_w))
-        return phi, rho_t

@@ -1,4 +1,4 @@
-"""The one exception type of :mod:`gears`."""
+"""Layer 0, base: the one exception type of :mod:`gears`."""
 
 
 class GearError(ValueError):

@@ -1,4 +1,6 @@
-"""Export of outlines (plain SVG with no dependency, DXF with ezdxf, PNG, point arrays) and of 3D
+"""Layer 11, consumers.
+
+Export of outlines (plain SVG with no dependency, DXF with ezdxf, PNG, point arrays) and of 3D
 meshes and scenes (STL, 3MF, GLB, OBJ, PLY through trimesh's own exporters, the ``mesh`` extra).
 
 Export picks the format from the file extension (:func:`save`), the way trimesh does.
@@ -12,6 +14,7 @@ import numpy as np
 import shapely
 
 from gears.errors import GearError
+from gears.plot import outlines_figure
 
 __all__ = ["points", "save", "save_mesh", "to_dxf", "to_svg"]
 
@@ -152,8 +155,6 @@ def save(path, *objects) -> pathlib.Path:
     if ext == ".dxf":
         return to_dxf(path, *outlines)
     if ext == ".png":
-        from gears.plot import outlines_figure
-
         fig = outlines_figure(*outlines)
         fig.savefig(path, dpi=150)
         import matplotlib.pyplot as plt

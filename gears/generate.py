@@ -1,4 +1,6 @@
-"""Simulated generation: the cutter rolled over the blank, each position subtracted with shapely.
+"""Layer 5, simulated cutting.
+
+The cutter rolled over the blank, each position subtracted with shapely.
 
 Two tools (standards.md §3.2; Ozols §21-6: Maag and Fellows methods; Joldasbekov §2.8):
 
@@ -32,7 +34,9 @@ import numpy as np
 import shapely
 
 from gears.errors import GearError
+from gears.measure import thickness_on
 from gears.profile import (
+    ShaperProfile,
     ToothProfile,
     _check_tolerance,
     _refuse_protuberance,
@@ -400,7 +404,7 @@ def shaper_outline(
     gear the ring between its tip circle and ``rim`` outside the root circle). The result
     reproduces the shaper's own root circle and fillet, undercut, pointed tips and any trimming
     of a ring's tips by the cutter on its way out; it agrees with the analytic shaper outline
-    (:class:`gears.cutter.ShaperProfile`) within the tolerance (tests/gears/test_shaper.py).
+    (:class:`gears.profile.ShaperProfile`) within the tolerance (tests/gears/test_shaper.py).
 
     Raises
     ------
@@ -414,8 +418,6 @@ def shaper_outline(
     >>> p.is_valid, len(p.interiors)
     (True, 1)
     """
-    from gears.cutter import ShaperProfile
-
     tol = _check_tolerance(tolerance)
     _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
@@ -442,8 +444,6 @@ def shaper_outline(
             f"z = {gear.teeth}, x = {gear.profile_shift:g}: the cut gear falls apart "
             f"({cut.geom_type}); the teeth are cut away"
         )
-    from gears.measure import thickness_on
-
     if len(thickness_on(cut, gear.reference_diameter)) != gear.teeth:
         raise GearError(
             f"z = {gear.teeth}, cutter z0 = {t.z0}: the cutter cuts the teeth away (see "

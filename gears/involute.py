@@ -1,4 +1,4 @@
-"""The involute function and its inverse (radians), vectorised.
+"""Layer 1, base: the involute function and its inverse (radians), vectorised.
 
 ``inv(alpha) = tan(alpha) - alpha`` is the polar angle of the involute point whose pressure
 angle is ``alpha`` (ISO 21771 eq. for ``inv alpha``; Ozols §21-3; standards.md §2).

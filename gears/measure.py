@@ -1,4 +1,6 @@
-"""Measurements on a tooth outline (any shapely Polygon), as a machinist would take them.
+"""Layer 4, envelopes and measurement.
+
+Measurements on a tooth outline (any shapely Polygon), as a machinist would take them.
 
 * :func:`thickness_on` - arc width of each tooth where a circle of diameter d cuts the outline
   (the exact intersection of every boundary edge with the circle, no sampling);

@@ -1,259 +1,35 @@
-"""A meshing pair: external, internal (gear 2 is the ring) or pinion-and-rack, spur or helical.
+"""Layer 8, classes: :class:`GearPair` (and :class:`Rack`), one mesh as a thin view.
 
-Formulas (standards.md §1.2-1.5, §1.8; ISO 21771 / DIN 3960 / KHK; Ozols §21-3...21-8;
-Joldasbekov §11). Positions on the line of action are measured in mm from N1, the point where
-the line of action touches gear 1's base circle, towards the pitch point C:
-
-* ``u_C = r_b1 tan alpha_wt``, ``u_N2 = r_b1 tan alpha_wt + sigma r_b2 tan alpha_wt``
-  (sigma = +1 external, -1 internal: N2 lies beyond N1 for a ring);
-* contact starts where gear 2's tip circle cuts the line
-  (``u_A = u_N2 - sigma sqrt(r_a2^2 - r_b2^2)``) and ends where gear 1's tip circle cuts it
-  (``u_E = sqrt(r_a1^2 - r_b1^2)``) when gear 1 drives;
-* ``contact_ratio = (u_E - u_A) / p_bt``.
-
-All formulas are numpy functions over arrays (:func:`pair_geometry` evaluates 10^6 pairs at once);
-:class:`GearPair` calls them for one pair.
+External, internal (gear 2 is the ring) or pinion-and-rack, spur or helical. The formulas are
+the vectorised functions of :mod:`gears.meshing` (its docstring defines the positions on the line
+of action); the outlines in mesh come from :mod:`gears.outline`.
 """
 
 from __future__ import annotations
 
-import itertools
 import math
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from functools import cached_property
-from typing import NamedTuple
 
 import numpy as np
+from scipy.optimize import brentq
 
 from gears.errors import GearError
 from gears.gear import Gear
-from gears.involute import inv, inv_inverse
+from gears.involute import inv
+from gears.meshing import (
+    PairGeometry,
+    center_distance_shift_sum,
+    internal_interference,
+    line_positions,
+    mesh_efficiency,
+    pair_geometry,
+    specific_sliding,
+)
+from gears.outline import pair_outlines
 from gears.report import Finding, Report
 
-__all__ = [
-    "GearPair",
-    "PairGeometry",
-    "PathOfContact",
-    "Rack",
-    "center_distance_shift_sum",
-    "mesh_efficiency",
-    "pair_geometry",
-    "specific_sliding",
-]
-
-
-class PairGeometry(NamedTuple):
-    """Arrays returned by :func:`pair_geometry` (mm and degrees)."""
-
-    working_pressure_angle: np.ndarray
-    center_distance: np.ndarray
-    center_distance_modification: np.ndarray
-    tip_alteration: np.ndarray
-    tip_diameter_1: np.ndarray
-    tip_diameter_2: np.ndarray
-    working_diameter_1: np.ndarray
-    working_diameter_2: np.ndarray
-    contact_ratio: np.ndarray
-
-
-def _sigma(internal):
-    return np.where(np.asarray(internal, bool), -1.0, 1.0)
-
-
-def pair_geometry(
-    z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angle=0.0, internal=False,
-    addendum=1.0, tip_shortening=True,
-):  # fmt: skip
-    """Geometry of many pairs at once (all arguments broadcast; angles in degrees).
-
-    ``z2`` and ``x2`` are gear 2's own (positive) tooth count and shift; ``internal`` marks
-    gear 2 as a ring. ``helix_angle`` is gear 1's (gear 2 has the opposite hand externally, the
-    same internally). Tip shortening (DIN 3960: k = y - (x1 + x2), applied when negative) is for
-    external pairs only; internal pairs keep their tips.
-
-    Returns
-    -------
-    PairGeometry
-        Working transverse pressure angle alpha_wt (deg), centre distance a_w, y, k, tip
-        diameters, working pitch diameters, transverse contact ratio. Tips inside the base
-        circle give a contact ratio of 0 (no involute contact); use :class:`GearPair` for a
-        checked single pair.
-
-    Examples
-    --------
-    >>> g = pair_geometry(12, 28, 1.0, 0.3, 0.2)   # Joldasbekov §5.4, row 3
-    >>> round(float(g.working_pressure_angle), 5), round(float(g.center_distance), 5)
-    (23.29917, 20.46253)
-    >>> round(float(g.contact_ratio), 5)
-    1.36264
-    """
-    args = [np.asarray(v, float) for v in (z1, z2, module, x1, x2, pressure_angle, helix_angle)]
-    args += [np.asarray(addendum, float), np.asarray(internal, bool)]
-    shape = np.broadcast_shapes(*(v.shape for v in args))
-    n = math.prod(shape)
-    if n < 2 * _CHUNK:
-        return PairGeometry(*_pair_geometry_block(*args, tip_shortening))
-    # Large arrays: blocks of _CHUNK pairs, whose temporaries stay in cache, shared by _THREADS
-    # threads (numpy ufuncs release the GIL). Measured in docs/performance.md.
-    flat = [v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in args]
-    out = np.empty((len(PairGeometry._fields), n))
-
-    def work(bounds: tuple[int, int]) -> None:
-        i0, i1 = bounds
-        part = [v if v.ndim == 0 else v[i0:i1] for v in flat]
-        for row, value in zip(out, _pair_geometry_block(*part, tip_shortening), strict=True):
-            row[i0:i1] = value
-
-    blocks = list(itertools.pairwise([*range(0, n, _CHUNK), n]))
-    for _ in _pool().map(work, blocks):  # re-raises a GearError from any block
-        pass
-    return PairGeometry(*(row.reshape(shape) for row in out))
-
-
-_THREADS = 2  # this machine's cores (standards.md §5)
-_CHUNK = 1 << 15  # pairs per block: 32768 beat 16384 and 65536 (docs/performance.md)
-_PARALLEL_MIN = _CHUNK  # arrays of at least 2 blocks take the blocked, threaded path
-_POOL: ThreadPoolExecutor | None = None
-
-
-def _pool() -> ThreadPoolExecutor:
-    global _POOL
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(_THREADS, thread_name_prefix="pair_geometry")
-    return _POOL
-
-
-def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendum, internal,
-                         tip_shortening):  # fmt: skip
-    """The formulas of :func:`pair_geometry` on one block of (broadcastable) arrays."""
-    external = not internal.any()
-    s = 1.0 if external else _sigma(internal)
-    an = np.radians(pressure_angle)
-    tan_an = np.tan(an)
-    cos_b = np.cos(np.radians(helix_angle))
-    at = np.arctan(tan_an / cos_b)
-    cos_at = np.cos(at)
-    z2s = z2 if external else s * z2  # signed tooth count of gear 2
-    x2s = x2 if external else s * x2
-    zs = z1 + z2s
-    xs = x1 + x2s
-    inv_wt = xs / zs
-    inv_wt *= 2.0 * tan_an
-    inv_wt += inv(at)
-    if not np.all(inv_wt >= 0.0):
-        bad = ~(inv_wt >= 0.0)
-        lowest = -np.broadcast_to(inv(at) * np.abs(zs) / (2.0 * tan_an), bad.shape)[bad]
-        given = np.broadcast_to(s * xs, bad.shape)[bad][:3].tolist()
-        raise GearError(
-            f"shift sum x1 + x2 (internal: x2 - x1) = {given} "
-            f"is too negative: a working pressure angle exists only above "
-            f"{np.ravel(lowest)[:3].tolist()} (inv alpha_wt >= 0)"
-        )
-    awt = inv_inverse(inv_wt)
-    cos_wt = np.cos(awt)
-    tan_wt = np.tan(awt)
-    ratio = cos_at / cos_wt
-    half = np.abs(zs) / (2.0 * cos_b)
-    a = half * ratio * m
-    y = ratio - 1.0
-    y *= half
-    # k = y - (x1 + x2) when negative (DIN 3960), external pairs only
-    k = np.minimum(y - xs, 0.0) if external else np.where(s > 0, np.minimum(y - s * xs, 0.0), 0.0)
-    if not tip_shortening:
-        k = np.zeros_like(k)
-    mt = m / cos_b
-    d1 = z1 * mt
-    d2 = z2 * mt
-    da1 = addendum + x1
-    da1 += k
-    da1 *= 2.0 * m
-    da1 += d1
-    da2 = addendum + x2s
-    da2 += k
-    da2 *= 2.0 * m if external else 2.0 * s * m
-    da2 += d2
-    rb1 = d1 * (cos_at / 2.0)
-    rb2 = d2 * (cos_at / 2.0)
-    eps = _contact_ratio(da1 / 2, da2 / 2, rb1, rb2, tan_wt, s, np.pi * mt * cos_at)
-    two_over_cos_wt = 2.0 / cos_wt
-    return (np.degrees(awt), a, y, k, da1, da2, rb1 * two_over_cos_wt, rb2 * two_over_cos_wt, eps)
-
-
-def _line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
-    """(u_A, u_E, u_N2) on the line of action, measured from N1 (see the module docstring)."""
-    u_n2 = rb1 * tan_wt + sigma * rb2 * tan_wt
-    u_e = np.sqrt(np.maximum(ra1 * ra1 - rb1 * rb1, 0.0))
-    u_a = u_n2 - sigma * np.sqrt(np.maximum(ra2 * ra2 - rb2 * rb2, 0.0))
-    return u_a, u_e, u_n2
-
-
-def _contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
-    u_a, u_e, _ = _line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma)
-    valid = (ra1 >= rb1) & (ra2 >= rb2)
-    return np.where(valid, (u_e - u_a) / base_pitch, 0.0)
-
-
-def center_distance_shift_sum(
-    z1, z2, module, center_distance, pressure_angle=20.0, helix_angle=0.0, internal=False
-):
-    """Sum of shifts x1 + x2 (internal: x2 - x1) that gives ``center_distance`` (ISO 21771 §5;
-    standards.md §1.2, inverse problem): cos alpha_wt = a_d cos alpha_t / a_w, then
-    sum x = (z2 +- z1)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n).
-
-    Raises
-    ------
-    GearError
-        If no shift reaches ``center_distance`` (a_w <= a_d cos alpha_t).
-    """
-    s = _sigma(internal)
-    z1 = np.asarray(z1, float)
-    z2 = np.asarray(z2, float)
-    an = np.radians(pressure_angle)
-    cos_b = np.cos(np.radians(helix_angle))
-    at = np.arctan(np.tan(an) / cos_b)
-    zsum = np.abs(z1 + s * z2)
-    a_d = zsum * np.asarray(module) / (2 * cos_b)
-    c = a_d * np.cos(at) / np.asarray(center_distance, float)
-    if np.any(~(c < 1.0)):
-        lowest = np.min(a_d * np.cos(at))
-        raise GearError(
-            f"centre distance {center_distance} mm cannot be reached by profile shift: it must "
-            f"exceed a_d cos(alpha_t) = {lowest:.6f} mm (working pressure angle 0)"
-        )
-    awt = np.arccos(c)
-    out = zsum * (inv(awt) - inv(at)) / (2 * np.tan(an))
-    return out[()] if np.ndim(out) == 0 else out
-
-
-def specific_sliding(u, rb1, rb2, tan_wt, ratio, internal=False):
-    """Specific sliding of both flanks at positions ``u`` on the line of action (from N1).
-
-    zeta_1 = 1 - rho_2 / (u rho_1) and zeta_2 = 1 - u rho_1 / rho_2 with the flank radii of
-    curvature rho_1 = u and rho_2 = sigma (u_N2 - u), u = z2/z1 (Ozols §21-4 (2)-(3) with the
-    lost page restored; Joldasbekov §5.6). Both are 0 at the pitch point; at N1 (rho_1 = 0)
-    zeta_1 is -inf, which is why a pair whose contact reaches N1 is interfering.
-    """
-    s = _sigma(internal)
-    u = np.asarray(u, float)
-    u_n2 = rb1 * tan_wt + s * rb2 * tan_wt
-    rho1 = u
-    rho2 = s * (u_n2 - u)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        z1_ = 1.0 - rho2 / (ratio * rho1)
-        z2_ = 1.0 - ratio * rho1 / rho2
-    return z1_, z2_
-
-
-def mesh_efficiency(z1, z2, contact_ratio, friction=0.1, internal=False):
-    """Mesh efficiency estimate, Ozols (14.25) after Reshetov:
-    eta = 1 - (pi f eps / 2)(1/z1 +- 1/z2), + external, - internal.
-
-    >>> round(float(mesh_efficiency(20, 40, 1.6, 0.1)), 6)   # Ozols digest, derived case
-    0.98115
-    """
-    s = _sigma(internal)
-    return 1.0 - np.pi * friction * contact_ratio / 2.0 * (1.0 / z1 + s / np.asarray(z2, float))
+__all__ = ["GearPair", "PathOfContact", "Rack"]
 
 
 @dataclass(frozen=True)
@@ -579,7 +355,7 @@ class GearPair:
         rb2 = self.g2.base_diameter / 2
         ra2 = self.tip_diameters[1] / 2
         self._require_tip_above_base(2, ra2, rb2)
-        u_a, u_e, u_n2 = _line_positions(ra1, ra2, rb1, rb2, tw, self._sigma)
+        u_a, u_e, u_n2 = line_positions(ra1, ra2, rb1, rb2, tw, self._sigma)
         return PathOfContact(float(u_a), float(u_e), rb1 * tw, float(u_n2), pb)
 
     def _require_tip_above_base(self, which: int, ra: float, rb: float) -> None:
@@ -655,10 +431,8 @@ class GearPair:
         backlash: float = 0.0, cutter=None,
     ):  # fmt: skip
         """Both outlines in mesh: gear 1 at the origin turned by ``angle`` degrees, gear 2 at the
-        working centre distance (see :func:`gears.profile.pair_outlines`; ``cutter`` is a
+        working centre distance (see :func:`gears.outline.pair_outlines`; ``cutter`` is a
         shaper cutter for both gears or a pair of them)."""
-        from gears.profile import pair_outlines
-
         return pair_outlines(self, angle, tolerance, method, backlash, cutter)
 
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
@@ -766,7 +540,6 @@ class GearPair:
         ra1, ra2 = g1.tip_diameter / 2, g2.tip_diameter / 2
         rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
         z1, z2 = g1.teeth, g2.teeth
-        awt = math.radians(self.working_pressure_angle)
         out = [
             Finding(
                 "ring_tip_above_base", ra2 - rb2,
@@ -775,53 +548,39 @@ class GearPair:
         ]  # fmt: skip
         if ra2 <= rb2 or ra1 <= rb1:
             return out
-        aa1 = math.acos(rb1 / ra1)
-        aa2 = math.acos(rb2 / ra2)
-        inv_w, inv_a1, inv_a2 = float(inv(awt)), float(inv(aa1)), float(inv(aa2))
-        # involute interference: z1/z2 >= 1 - tan(alpha_a2)/tan(alpha_wt)
-        m_inv = z1 / z2 - (1 - math.tan(aa2) / math.tan(awt))
+        m = internal_interference(z1, z2, a, ra1, ra2, rb1, rb2, self.working_pressure_angle)
+        limit = z1 / z2 - float(m.involute)  # 1 - tan(alpha_a2) / tan(alpha_wt)
         out.append(
             Finding(
-                "involute_interference", m_inv,
-                f"z1/z2 = {z1 / z2:.4f} vs 1 - tan(alpha_a2)/tan(alpha_wt) = "
-                f"{1 - math.tan(aa2) / math.tan(awt):.4f} (ring tip must not pass N1)", unit="",
+                "involute_interference", float(m.involute),
+                f"z1/z2 = {z1 / z2:.4f} vs 1 - tan(alpha_a2)/tan(alpha_wt) = {limit:.4f} "
+                "(ring tip must not pass N1)", unit="",
             )
         )  # fmt: skip
-        # trochoid interference: theta1 z1/z2 + inv alpha_wt - inv alpha_a2 >= theta2
-        c1 = (ra2 * ra2 - ra1 * ra1 - a * a) / (2 * a * ra1)
-        c2 = (a * a + ra2 * ra2 - ra1 * ra1) / (2 * a * ra2)
-        if ra2 >= a + ra1:  # the ring's tip circle encloses the pinion's: the tips never meet
-            m_tro = math.pi / z2
+        if ra2 >= a + ra1:
             msg = "tip circles do not cross: no trochoid interference possible"
+        elif ra1 >= a + ra2:
+            msg = "the ring's tip circle lies inside the pinion's: the tips foul"
         else:
-            th1 = math.acos(min(max(c1, -1.0), 1.0)) + inv_a1 - inv_w
-            th2 = math.acos(min(max(c2, -1.0), 1.0))
-            m_tro = th1 * z1 / z2 + inv_w - inv_a2 - th2
             msg = "tips clear each other while leaving mesh"
-            if ra1 >= a + ra2:  # the ring's tip circle lies inside the pinion's: teeth overlap
-                m_tro = min(m_tro, (a + ra2 - ra1) / ra2)
-                msg = "the ring's tip circle lies inside the pinion's: the tips foul"
-        out.append(Finding("trochoid_interference", m_tro, msg + " (margin in rad)", unit="rad"))
-        # radial (trimming) interference: the pinion can be inserted radially
-        q1 = (1 - (math.cos(aa1) / math.cos(aa2)) ** 2) / (1 - (z1 / z2) ** 2)
-        q2 = ((math.cos(aa2) / math.cos(aa1)) ** 2 - 1) / ((z2 / z1) ** 2 - 1)
-        # q > 1 exactly when r_a1 > r_a2 and q < 0 when r_a1/z1 < r_a2/z2; clamping keeps the
-        # margin continuous across both edges of the formula's domain
-        t1 = math.asin(math.sqrt(min(max(q1, 0.0), 1.0)))
-        t2 = math.asin(math.sqrt(min(max(q2, 0.0), 1.0)))
-        m_rad = (t1 + inv_a1 - inv_w) - (z2 / z1) * (t2 + inv_a2 - inv_w)
-        msg = "pinion can be moved in radially (trimming)"
-        if ra1 > ra2:  # the pinion's tips reach beyond the ring's tip circle: no radial entry
-            m_rad = min(m_rad, (ra2 - ra1) / ra1)
-            msg = "the pinion's tip circle exceeds the ring's: it cannot be moved in radially"
-        out.append(Finding("radial_interference", m_rad, msg + " (margin in rad)", unit="rad"))
+        out.append(
+            Finding(
+                "trochoid_interference", float(m.trochoid), msg + " (margin in rad)", unit="rad"
+            )
+        )
+        msg = (
+            "the pinion's tip circle exceeds the ring's: it cannot be moved in radially"
+            if ra1 > ra2
+            else "pinion can be moved in radially (trimming)"
+        )
+        out.append(
+            Finding("radial_interference", float(m.radial), msg + " (margin in rad)", unit="rad")
+        )
         return out
 
 
 def _equal_sliding_x1(g1: Gear, g2: Gear, total: float, tip_shortening: bool) -> float:
     """x1 that balances the maximum specific sliding of both flanks for a fixed shift sum."""
-    from scipy.optimize import brentq
-
     s = -1.0 if g2.internal else 1.0
 
     def imbalance(x1: float) -> float:

@@ -1,4 +1,6 @@
-"""Figures (matplotlib, the ``plot`` extra): outlines, one tooth with its construction, a
+"""Layer 10, consumers.
+
+Figures (matplotlib, the ``plot`` extra): outlines, one tooth with its construction, a
 meshing pair with its line of action, and the generation process with fading tool positions."""
 
 from __future__ import annotations
@@ -8,6 +10,8 @@ import math
 import numpy as np
 
 from gears.errors import GearError
+from gears.generate import rack_positions, rack_tool_polygon, shaper_positions, shaper_tool_polygon
+from gears.profile import ShaperProfile, ToothProfile
 
 __all__ = ["generation_figure", "outlines_figure", "pair_figure", "tooth_figure"]
 
@@ -51,7 +55,6 @@ def outlines_figure(*outlines, ax=None):
 
 def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
     """One tooth with base, form, reference, tip and root circles; involute and fillet coloured."""
-    from gears.profile import ToothProfile
 
     plt = _plt()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(6, 6))
@@ -130,17 +133,11 @@ def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None,
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=size)
     m = gear.module
     if method == "rack":
-        from gears.generate import rack_positions, rack_tool_polygon
-        from gears.profile import ToothProfile
-
         prof = ToothProfile(gear)
         phis = rack_positions(prof, tolerance)[::every]
         placed = prof.tool.place(rack_tool_polygon(prof, tolerance), phis)
         name = "rack generation"
     else:
-        from gears.cutter import ShaperProfile
-        from gears.generate import shaper_positions, shaper_tool_polygon
-
         prof = ShaperProfile(gear, cutter)
         phis = shaper_positions(prof, tolerance)[::every]
         placed = prof.tool.place(shaper_tool_polygon(prof, tolerance), phis)

@@ -1,4 +1,6 @@
-"""Design findings: a named condition, whether it holds, its signed margin and a sentence.
+"""Layer 1, base.
+
+Design findings: a named condition, whether it holds, its signed margin and a sentence.
 
 Checks never raise for a design that is merely bad; they return a :class:`Report`, an
 ordered, read-only mapping from finding name to :class:`Finding`.

@@ -1,4 +1,6 @@
-"""Blocking contour: every limit of an external pair as a signed margin field over (x1, x2).
+"""Layer 10, consumers.
+
+Blocking contour: every limit of an external pair as a signed margin field over (x1, x2).
 
 The blocking contour (Kolchin & Movnin; Ozols §21-7, Fig. 21-13; GOST 16532-70) maps every
 profile-shifted pair of two tooth counts to a point (x1, x2). The origin is the zero-shift pair,
@@ -27,7 +29,7 @@ Each field is a signed margin, positive where the condition holds, zero on the l
     the same for gear 1's tip on gear 2's flank (Ozols lines 1-2; ``tip_interference_2``).
 
 Where a gear is undercut (``undercut_*`` < 0) its form circle is taken as the base circle, the
-involute's own limit (the vectorised :func:`gears.gear.form_diameter`); the exact trochoid
+involute's own limit (the vectorised :func:`gears.geometry.form_diameter`); the exact trochoid
 crossing (:func:`gears.profile.undercut_form_diameter`) is a per-gear root-find and is not needed
 to draw the contour, because the undercut limit already excludes that region.
 
@@ -43,7 +45,8 @@ from types import MappingProxyType
 import numpy as np
 
 from gears.errors import GearError
-from gears.gear import (
+from gears.geometry import (
+    check_teeth,
     form_diameter,
     min_profile_shift,
     reference_diameter,
@@ -51,7 +54,7 @@ from gears.gear import (
     transverse_pressure_angle,
 )
 from gears.involute import inv
-from gears.pair import _line_positions, pair_geometry
+from gears.meshing import line_positions, pair_geometry
 from gears.rack import BasicRack
 
 __all__ = ["LIMITS", "BlockingContour", "blocking_contour", "plot_blocking_contour"]
@@ -185,8 +188,6 @@ def blocking_contour(
     >>> bc.failing(0.0, 0.0)
     ['undercut_1', 'tip_interference_1']
     """
-    from gears.gear import check_teeth
-
     z1 = check_teeth("z1", z1)
     z2 = check_teeth("z2", z2)
     rack = BasicRack.iso53("A") if rack is None else rack
@@ -238,7 +239,7 @@ def blocking_contour(
     rb1 = float(reference_diameter(z1, m, helix_angle)) * np.cos(at) / 2.0
     rb2 = float(reference_diameter(z2, m, -helix_angle)) * np.cos(at) / 2.0
     tan_wt = np.tan(np.radians(g.working_pressure_angle))
-    u_a, u_e, u_n2 = _line_positions(
+    u_a, u_e, u_n2 = line_positions(
         g.tip_diameter_1 / 2, g.tip_diameter_2 / 2, rb1, rb2, tan_wt, 1.0
     )
     rf1 = form_diameter(z1, m, X1, pressure_angle, helix_angle, depth) / 2.0

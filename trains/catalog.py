@@ -1,4 +1,6 @@
-"""Ready-made trains: each one a :class:`~trains.willis.Train` built from mesh, link, couple.
+"""Layer 4, stages and catalog.
+
+Ready-made trains: each one a :class:`~trains.willis.Train` built from mesh, link, couple.
 
 Nothing here is special-cased in the solver: every function only writes the Willis relations of
 its scheme, so a user can copy one and change it. Member names follow the textbook figures cited

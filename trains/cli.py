@@ -1,4 +1,4 @@
-"""The ``geartrain`` command line.
+"""Layer 8, command line: the ``geartrain`` command line.
 
 Each sub-command is a module in :mod:`trains.commands` exposing ``HELP`` (one line),
 ``add_arguments(parser)`` and ``run(args) -> int``; the modules are discovered, so adding a

@@ -1,4 +1,4 @@
-"""The one exception type of :mod:`trains`."""
+"""Layer 0, base: the one exception type of :mod:`trains`."""
 
 
 class TrainError(ValueError):

@@ -1,4 +1,6 @@
-"""Reduced (equivalent) inertia of a geared drive, Ozols (13.10), with speeds from the solver."""
+"""Layer 1, base.
+
+Reduced (equivalent) inertia of a geared drive, Ozols (13.10), with speeds from the solver."""
 
 from __future__ import annotations
 

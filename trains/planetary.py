@@ -1,4 +1,6 @@
-"""One planetary (2K-H) stage on real gears: ratios, coaxiality, assembly, neighbours, phasing.
+"""Layer 4, stages and catalog.
+
+One planetary (2K-H) stage on real gears: ratios, coaxiality, assembly, neighbours, phasing.
 
 A stage has two central gears, called ``sun`` (central gear *a*, lectures' link 1) and ``ring``
 (central gear *b*, link 3) whatever their kind, a carrier, and ``n_planets`` identical planets

@@ -1,4 +1,6 @@
-"""Statics and efficiency of gear trains: torques, mesh powers, losses, self-locking.
+"""Layer 3, statics.
+
+Statics and efficiency of gear trains: torques, mesh powers, losses, self-locking.
 
 Every relation of a :class:`~trains.willis.Train` is a lever: its ideal reaction puts the torques
 ``lambda * (k_a, k_b, -(k_a + k_b))`` on its members ``a``, ``b`` and carrier ``c`` (the

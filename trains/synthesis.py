@@ -1,4 +1,6 @@
-"""Tooth-number synthesis of a planetary stage for a target ratio (lectures §4.4).
+"""Layer 5, design and files.
+
+Tooth-number synthesis of a planetary stage for a target ratio (lectures §4.4).
 
 :func:`synthesize` enumerates every tooth-number set of a scheme in numpy integer arrays (exact:
 ratios are compared as integer cross products, the assembly condition is an integer modulo, no
@@ -41,7 +43,7 @@ from typing import Any
 
 import numpy as np
 
-from gears.pair import pair_geometry
+from gears.meshing import pair_geometry
 from gears.rack import BasicRack
 from trains.errors import TrainError
 from trains.planetary import (

@@ -1,4 +1,6 @@
-"""Paths of points carried by the members of a train (gear-linkage and biplanetary trains).
+"""Layer 1, base.
+
+Paths of points carried by the members of a train (gear-linkage and biplanetary trains).
 
 A point on the last member of a chain of rotating arms (Ozols §7-3, Fig 7-10, 7-18) is the sum
 of one phasor per arm: ``p = origin + sum_k l_k exp(i (phi_k + phase_k))``, where ``phi_k`` is the

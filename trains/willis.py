@@ -1,4 +1,6 @@
-"""The gear-train model and its kinematics: one Willis equation per relation, solved generically.
+"""Layer 2, kinematics.
+
+The gear-train model and its kinematics: one Willis equation per relation, solved generically.
 
 A :class:`Train` is a set of *members* (rigid bodies named by the user: a shaft with its gears, a
 planet with its gears, a carrier; ``"frame"`` is the fixed ground) and *relations*, each one

@@ -11,7 +11,7 @@ from scipy.optimize import brentq
 
 from gears import involute
 from gears.involute import inv, inv_inverse
-from gears.pair import _PARALLEL_MIN, _THREADS, pair_geometry
+from gears.meshing import _PARALLEL_MIN, pair_geometry
 
 
 def test_fast_inverse_round_trips_through_the_series_inv():
@@ -58,7 +58,7 @@ def _scalar_reference(z1, z2, m, x1, x2, an_deg=20.0):
 @pytest.fixture(scope="module")
 def many():
     rng = np.random.default_rng(7)
-    n = _THREADS * _PARALLEL_MIN + 1001  # large enough to take the threaded path
+    n = 2 * _PARALLEL_MIN + 1001  # large enough to take the threaded path
     z1 = rng.integers(10, 150, n).astype(float)
     z2 = rng.integers(10, 150, n).astype(float)
     x1 = rng.uniform(-0.1, 1.0, n)
@@ -89,7 +89,7 @@ def test_threaded_pair_geometry_equals_one_element_calls(many):
 
 def test_threaded_pair_geometry_mixed_internal_and_helical_broadcasts():
     rng = np.random.default_rng(11)
-    n = _THREADS * _PARALLEL_MIN + 17
+    n = 2 * _PARALLEL_MIN + 17
     internal = rng.random(n) < 0.3
     z1 = rng.integers(12, 30, n)
     z2 = np.where(internal, z1 + rng.integers(30, 80, n), rng.integers(12, 80, n))
@@ -103,7 +103,7 @@ def test_threaded_pair_geometry_mixed_internal_and_helical_broadcasts():
 
 
 def test_threaded_pair_geometry_raises_the_gear_error():
-    n = _THREADS * _PARALLEL_MIN + 5
+    n = 2 * _PARALLEL_MIN + 5
     x = np.zeros(n)
     x[-1] = -5.0  # inv alpha_wt < 0 in the last chunk: no such pair (standards.md §1.2)
     with pytest.raises(involute.GearError, match=r"x1 \+ x2"):

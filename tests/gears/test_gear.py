@@ -8,7 +8,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from gears import BasicRack, Gear
 from gears.errors import GearError
-from gears.gear import (
+from gears.geometry import (
     base_diameter,
     min_profile_shift,
     reference_diameter,

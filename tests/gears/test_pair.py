@@ -7,7 +7,7 @@ import pytest
 
 from gears import Gear, GearPair, Rack, pair_geometry
 from gears.errors import GearError
-from gears.pair import center_distance_shift_sum, mesh_efficiency
+from gears.meshing import center_distance_shift_sum, mesh_efficiency
 
 A20 = math.radians(20.0)
 TAN20 = math.tan(A20)

@@ -6,7 +6,7 @@ import pytest
 
 from gears import BasicRack, Gear
 from gears.errors import GearError
-from gears.gear import min_profile_shift
+from gears.geometry import min_profile_shift
 
 SIN20 = math.sin(math.radians(20.0))
 

@@ -1,1 +1,3 @@
-"""Sub-commands of the ``geartrain`` CLI, one module each (see :mod:`trains.cli`)."""
+"""Layer 6, command line.
+
+Sub-commands of the ``geartrain`` CLI, one module each (see :mod:`trains.cli`)."""
