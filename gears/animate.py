@@ -1,4 +1,6 @@
-"""One frame writer for animations of 2D outlines in mesh (GIF with Pillow, MP4 with ffmpeg).
+"""Layer 7, solids and frames.
+
+One frame writer for animations of 2D outlines in mesh (GIF with Pillow, MP4 with ffmpeg).
 
 It knows nothing of gears or trains: each frame is a list of ``(polygon, colour)`` pairs, given
 as a sequence of frames or as a callable ``frame(i)``. ``GearPair.animate`` and

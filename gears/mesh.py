@@ -1,4 +1,6 @@
-"""3D gear solids and scenes built on the exact 2D outlines (trimesh, the ``mesh`` extra).
+"""Layer 7, solids and frames.
+
+3D gear solids and scenes built on the exact 2D outlines (trimesh, the ``mesh`` extra).
 
 This module sits above the 2D outline code and below the classes: it works on shapely Polygons
 and numbers only (``Gear.mesh``, ``GearPair.scene`` and ``Planetary.scene`` are thin views that

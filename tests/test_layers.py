@@ -40,7 +40,8 @@ LAYERS = {
         ["power", "coaxial"],
         ["planetary", "catalog"],
         ["synthesis", "toml_format", "gearbox"],
-        ["commands", "commands.*"],
+        ["commands", "commands._common"],
+        ["commands.*"],
         ["commands.demo"],
         ["cli"],
     ],
@@ -97,7 +98,7 @@ def _imports(path: pathlib.Path, package: str, module: str) -> list[tuple[str, s
             continue
         for name in names:
             top, _, rest = name.partition(".")
-            if top in MODULES:
+            if top in MODULES and (top, rest, node.lineno) not in found:
                 found.append((top, rest, node.lineno))
     return found
 

@@ -1,4 +1,6 @@
-"""Coaxial stages by profile shift: several meshes brought to one working centre distance.
+"""Layer 3, statics and design by shift.
+
+Coaxial stages by profile shift: several meshes brought to one working centre distance.
 
 A reverted (coaxial) two-stage reducer has its input and output shafts on one axis, so its two
 meshes share the centre distance: ``a_w12 = a_w34`` (Ozols §21-13 for the planetary case;

@@ -1,4 +1,6 @@
-"""The geometric conditions of a train of real gears, as vectorised numpy functions.
+"""Layer 1, base.
+
+The geometric conditions of a train of real gears, as vectorised numpy functions.
 
 Pure formulas (no classes, no trains): :class:`trains.willis.Train` (``Train.check``) and
 :class:`trains.planetary.Planetary` both evaluate them.
