@@ -39,6 +39,7 @@ import shapely
 from gears.errors import GearError
 
 __all__ = [
+    "check_positive",
     "gear_solid",
     "helix_twist",
     "scene",
@@ -70,7 +71,8 @@ def _trimesh():
     return trimesh
 
 
-def _positive(name: str, value) -> float:
+def check_positive(name: str, value) -> float:
+    """``value`` as a float, or a GearError naming it unless it is finite and > 0 (mm)."""
     try:
         v = float(value)
     except (TypeError, ValueError) as exc:
@@ -195,8 +197,8 @@ def gear_solid(
     (True, 8.0, [-1.0, 1.0])
     """
     trimesh = _trimesh()
-    b = _positive("face_width", face_width)
-    tol = _positive("tolerance", tolerance)
+    b = check_positive("face_width", face_width)
+    tol = check_positive("tolerance", tolerance)
     twist = float(twist)
     if not math.isfinite(twist):
         raise GearError(f"twist = {twist!r} must be a finite number of degrees")
@@ -204,7 +206,7 @@ def gear_solid(
     pts = np.concatenate(rings)
     n_pts = len(pts)
     r = float(np.max(np.hypot(pts[:, 0], pts[:, 1]))) if tip_radius is None else tip_radius
-    r = _positive("tip_radius", r)
+    r = check_positive("tip_radius", r)
     rate = math.radians(twist) / b  # radians per mm
     if herringbone:
         half = int(slice_count(twist / 2.0, r, tol)) if twist else 1

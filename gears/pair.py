@@ -26,7 +26,7 @@ from gears.meshing import (
     pair_geometry,
     specific_sliding,
 )
-from gears.outline import pair_outlines
+from gears.outline import pair_outlines, pair_placement
 from gears.report import Finding, Report
 
 __all__ = ["GearPair", "PathOfContact", "Rack"]
@@ -434,6 +434,83 @@ class GearPair:
         working centre distance (see :func:`gears.outline.pair_outlines`; ``cutter`` is a
         shaper cutter for both gears or a pair of them)."""
         return pair_outlines(self, angle, tolerance, method, backlash, cutter)
+
+    def _unplaced(self, tolerance: float, method: str, backlash: float, cutter) -> tuple:
+        """Both outlines centred on their own axes, unturned (from :meth:`outlines` at 0)."""
+        from shapely import affinity
+
+        p1, p2 = self.outlines(0.0, tolerance, method, backlash, cutter)
+        angle2, (x2, y2) = self._placement(0.0)
+        p2 = affinity.rotate(affinity.translate(p2, -x2, -y2), -angle2, origin=(0.0, 0.0))
+        return p1, p2
+
+    def _placement(self, angle: float) -> tuple[float, tuple[float, float]]:
+        if self.is_rack:
+            raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
+        g1, g2 = self.gears
+        return pair_placement(g1.teeth, g2.teeth, self.center_distance, self.internal, angle)
+
+    def scene(
+        self, angle: float = 0.0, face_width: float | None = None, tolerance: float = 0.01,
+        method: str = "analytic", backlash: float = 0.0, herringbone: bool = False, cutter=None,
+    ):  # fmt: skip
+        """Both gears as a ``trimesh.Scene`` in mesh (nodes ``gear1``, ``gear2``, coloured).
+
+        Gear 1 sits at the origin turned by ``angle`` degrees, gear 2 at the working centre
+        distance turned as :meth:`outlines` turns it (:func:`gears.outline.pair_placement`);
+        each solid is :meth:`Gear.mesh` of the mounted gear, so a helical pair's hands
+        (opposite for external, the same for internal) carry into the twist. ``face_width``
+        defaults to each gear's own, else 10 modules.
+
+        Examples
+        --------
+        >>> p = GearPair(Gear(12, 2, helix_angle=15), Gear(30, 2, helix_angle=-15))
+        >>> sorted(p.scene(tolerance=0.05).graph.nodes_geometry)
+        ['gear1', 'gear2']
+        """
+        from gears.mesh import COLOURS, check_positive, gear_solid, helix_twist, scene, transform
+
+        tolerance = check_positive("tolerance", tolerance)
+        angle2, centre2 = self._placement(angle)
+        parts = []
+        outlines = self._unplaced(tolerance, method, backlash, cutter)
+        for i, (gear, shape) in enumerate(zip(self.gears, outlines, strict=True)):
+            b = face_width if face_width is not None else gear.face_width
+            b = check_positive("face_width", b if b is not None else 10.0 * gear.module)
+            twist = helix_twist(b, gear.helix_angle, gear.reference_diameter)
+            solid = gear_solid(shape, b, twist, tolerance, herringbone=herringbone)
+            place = transform(angle) if i == 0 else transform(angle2, centre2)
+            parts.append((f"gear{i + 1}", solid, place, COLOURS[f"gear{i + 1}"]))
+        return scene(parts)
+
+    def animate(
+        self, path, frames: int = 48, fps: float = 20.0, turn: float | None = None,
+        tolerance: float = 0.02, method: str = "analytic", backlash: float = 0.0, cutter=None,
+        progress=None,
+    ):  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of both outlines in mesh while gear 1 turns by
+        ``turn`` degrees (default one mesh cycle, ``360 / z1``), gear 2 placed as
+        :meth:`outlines` places it; ``progress(i, n)`` after each frame
+        (:func:`gears.animate.write_animation`)."""
+        from shapely import affinity
+
+        from gears.animate import write_animation
+        from gears.mesh import COLOURS
+
+        n = int(frames)
+        if n < 1:
+            raise GearError(f"frames = {frames!r}; valid is an integer >= 1")
+        turn = 360.0 / self.g1.teeth if turn is None else float(turn)
+        p1, p2 = self._unplaced(tolerance, method, backlash, cutter)
+        c1, c2 = (np.asarray(COLOURS[k]) / 255.0 for k in ("gear1", "gear2"))
+
+        def frame(i: int) -> list:
+            a = i * turn / n
+            a2, (x2, y2) = self._placement(a)
+            q2 = affinity.translate(affinity.rotate(p2, a2, origin=(0.0, 0.0)), x2, y2)
+            return [(affinity.rotate(p1, a, origin=(0.0, 0.0)), c1), (q2, c2)]
+
+        return write_animation(path, frame, fps=fps, n_frames=n, progress=progress)
 
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
         """Both gears' findings (prefixed ``g1.``/``g2.``) plus ``contact_ratio``,

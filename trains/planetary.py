@@ -1111,6 +1111,150 @@ class Planetary:
             residual=resid,
         )
 
+    # ---- outlines, 3D scene and animation (gears.mesh, gears.animate) -----------------------
+    def _layout(self, angle: float = 0.0, fixed: str = "ring") -> list[tuple]:
+        """``(name, key, gear, centre, rotation, z)`` of every gear with the carrier turned by
+        ``angle`` degrees (the sun when the carrier is ``fixed``): phases from
+        :meth:`placement`, rotations from the Willis solution of :attr:`train`. ``z`` is the
+        mid-plane in face widths (the ring side of a stepped planet sits above the sun side)."""
+        fixed = self._member(fixed)
+        if fixed not in ("sun", "ring", "carrier"):
+            raise TrainError(f"fixed = {fixed!r}; valid are 'sun', 'ring', 'carrier'")
+        a = float(angle)
+        if not math.isfinite(a):
+            raise TrainError(f"angle = {angle!r}; valid is a finite number of degrees")
+        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        drive = "sun" if fixed == "carrier" else "carrier"
+        motion = self.train.solve({name[drive]: 1, name[fixed]: 0})
+
+        def turned(member: str) -> float:
+            return float(motion[member]) * a
+
+        pl = self.placement()
+        stepped = self.scheme in ("stepped", "external", "internal")
+        lo, hi = (-0.5, 0.5) if stepped else (0.0, 0.0)
+        c = turned(self.carrier)
+        origin = (0.0, 0.0)
+        out = [("ring", "ring", self.ring, origin, pl.ring_rotation + turned("ring"), hi),
+               ("sun", "sun", self.sun, origin, pl.sun_rotation + turned("sun"), lo)]  # fmt: skip
+        steps = self.planet_gears
+        for i, (phi, rot) in enumerate(zip(pl.planet_angles, pl.planet_rotations, strict=True)):
+            t = math.radians(phi + c)
+            centre = (pl.planet_radius * math.cos(t), pl.planet_radius * math.sin(t))
+            r = rot + turned("planet")
+            out.append((f"planet{i + 1}", "planet", steps[0], centre, r, lo))
+            if stepped:
+                out.append((f"planet{i + 1}'", "planet'", steps[1], centre, r, hi))
+        for i, (phi, rot) in enumerate(zip(pl.planet2_angles, pl.planet2_rotations, strict=True)):
+            t = math.radians(phi + c)
+            centre = (pl.planet2_radius * math.cos(t), pl.planet2_radius * math.sin(t))
+            out.append((f"planet2_{i + 1}", "planet2", steps[1], centre,
+                        rot + turned("planet2"), 0.0))  # fmt: skip
+        return out
+
+    def _placed(self, angle: float, tolerance: float, fixed: str, cache: dict) -> list[tuple]:
+        from shapely import affinity
+
+        out = []
+        for name, key, gear, centre, rot, _ in self._layout(angle, fixed):
+            if key not in cache:
+                cache[key] = gear.outline(tolerance)
+            shape = affinity.rotate(cache[key], rot, origin=(0.0, 0.0))
+            out.append((name, key, affinity.translate(shape, *centre)))
+        return out
+
+    def outlines(self, angle: float = 0.0, tolerance: float = 0.01, fixed: str = "ring") -> dict:
+        """Every gear's 2D outline placed in mesh with the carrier turned by ``angle`` degrees
+        (see :meth:`scene`): ``{"ring": ..., "sun": ..., "planet1": ..., ...}`` (shapely
+        Polygons; the ring with its default rim).
+
+        Examples
+        --------
+        >>> o = Planetary(18, 45, 108, n_planets=3, module=2).outlines(tolerance=0.01)
+        >>> sorted(o), o["ring"].intersection(o["planet1"]).area < 0.01   # mm^2: chords only
+        (['planet1', 'planet2', 'planet3', 'ring', 'sun'], True)
+        """
+        return {name: p for name, _, p in self._placed(angle, tolerance, fixed, {})}
+
+    def scene(self, angle: float = 0.0, face_width: float | None = None,
+              tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False):  # fmt: skip
+        """The stage as a ``trimesh.Scene`` with real teeth, every mesh engaged.
+
+        Sun, ring and every planet sit at the real centre distances, turned to their phase from
+        :meth:`placement`; the carrier turns by ``angle`` degrees (the sun, when ``fixed`` is the
+        carrier) and every member by the Willis speeds of :attr:`train`, so a sequence of angles
+        animates the stage. Identical planets share one geometry (instanced by node
+        transforms), so a GLB holds one planet mesh. The ring side of a stepped planet stands
+        on the sun side (mid-planes at -b/2 and +b/2). ``face_width`` defaults to the gears'
+        own or 10 modules; ``tolerance`` (mm) applies to each gear (:func:`gears.mesh.gear_solid`).
+
+        Examples
+        --------
+        >>> s = Planetary(18, 45, 108, n_planets=3, module=2).scene(tolerance=0.1)
+        >>> len(s.geometry), len(s.graph.nodes_geometry)
+        (3, 5)
+        """
+        from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
+
+        b = face_width
+        if b is None:
+            b = self.sun.face_width or 10.0 * self.module
+        solids = {}
+        parts = []
+        for name, key, gear, centre, rot, z in self._layout(angle, fixed):
+            if key not in solids:
+                try:
+                    twist = helix_twist(b, gear.helix_angle, gear.reference_diameter)
+                    solids[key] = gear_solid(gear.outline(tolerance), b, twist, tolerance,
+                                             herringbone=herringbone)  # fmt: skip
+                except GearError as exc:
+                    raise TrainError(f"{key}: {exc}") from None
+                solids[key].metadata["name"] = key
+            colour = COLOURS.get(key.rstrip("'"), COLOURS["planet"])
+            parts.append((name, solids[key], transform(rot, centre, z * b), colour))
+        return scene(parts)
+
+    def animate(self, path, frames: int = 48, fps: float = 20.0, turn: float | None = None,
+                tolerance: float = 0.02, fixed: str = "ring", progress=None):  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of the stage's outlines in mesh while it turns.
+
+        ``turn`` is the carrier rotation covered, degrees (the sun's when the carrier is
+        ``fixed``); default one mesh cycle, ``360 / (z_sun |w_sun - w_carrier|)`` per unit
+        carrier speed, after which the picture repeats. Phasing from :meth:`placement`,
+        speeds from the Willis solver; frames are written by
+        :func:`gears.animate.write_animation` (``progress(i, n)`` after each frame).
+        """
+        from gears.animate import write_animation
+        from gears.mesh import COLOURS
+
+        n = int(frames)
+        if n < 1:
+            raise TrainError(f"frames = {frames!r}; valid is an integer >= 1")
+        if turn is None:
+            turn = self.mesh_cycle(fixed)
+        step = float(turn) / n
+        cache: dict = {}
+
+        def frame(i: int) -> list:
+            placed = self._placed(i * step, tolerance, fixed, cache)
+            return [(p, np.asarray(COLOURS[key.rstrip("'")]) / 255.0) for _, key, p in placed]
+
+        try:
+            return write_animation(path, frame, fps=fps, n_frames=n, progress=progress,
+                                   title=repr(self))  # fmt: skip
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
+
+    def mesh_cycle(self, fixed: str = "ring") -> float:
+        """Carrier rotation (degrees; the sun's when the carrier is fixed) over which every
+        tooth mesh advances by one pitch, so the stage looks the same again."""
+        fixed = self._member(fixed)
+        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        drive = "sun" if fixed == "carrier" else "carrier"
+        motion = self.train.solve({name.get(drive, drive): 1, name.get(fixed, fixed): 0})
+        rel = abs(float(motion["sun"]) - float(motion[self.carrier]))
+        return 360.0 / (self.sun.teeth * rel)
+
     def __repr__(self) -> str:
         z1, z2, z2p, z3 = self._z()
         planet = f"{z2}" if self.scheme == "simple" else f"({z2}, {z2p})"
