@@ -719,10 +719,11 @@ class Train:
     def coaxial_groups(self) -> tuple[tuple[str, ...], ...]:
         """The groups of coaxial members: those declared with :meth:`coaxial`, then the
         central members of every planet declared with :meth:`set_planets` (the members it
-        meshes on its carrier, which turn about the carrier's axis)."""
+        meshes on its carrier with real gears, which turn about the carrier's axis)."""
         groups = list(self._coaxial)
         for planet, central, _carrier in self._planet_meshes():
-            members = tuple(dict.fromkeys(r.b if r.a == planet else r.a for r in central))
+            real = [r for r in central if r.pair is not None]
+            members = tuple(dict.fromkeys(r.b if r.a == planet else r.a for r in real))
             if len(members) >= 2 and not any(set(members) <= set(g) for g in groups):
                 groups.append(members)
         return tuple(groups)
@@ -763,8 +764,9 @@ class Train:
           (the exact gcd form, when it meshes two central members; teeth) and
           ``<planet>.neighbour`` (gap between planet tip circles minus ``clearance`` modules, mm).
 
-        A kinematic-only mesh (tooth counts) has no geometry to check: it adds no finding, and a
-        coaxial group joined only through such meshes gets an informative note.
+        A kinematic-only mesh (tooth counts) has no geometry to check: it adds no finding, a
+        planet with only such meshes gets no assembly or neighbour finding, and a coaxial group
+        joined only through such meshes gets an informative note.
 
         Examples
         --------
@@ -875,6 +877,9 @@ class Train:
             k = self._planets[planet]
             if k < 2:
                 continue
+            real = [r for r in central if r.pair is not None]
+            if not real:
+                continue  # a kinematic-only planet: nothing to check
             if len(central) == 2:
                 z, internal = [], []
                 for r in central:
@@ -894,9 +899,6 @@ class Train:
                     f" {'is' if ok else 'is not'} a multiple of {k} (lectures §4.3)",
                     unit="teeth", ok=ok,
                 ))  # fmt: skip
-            real = [r for r in central if r.pair is not None]
-            if not real:
-                continue
             tips, modules = [], []
             for r in self._relations:
                 got = r.gear_of(planet) if r.kind == "mesh" else None

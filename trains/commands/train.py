@@ -104,11 +104,12 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {first}/{m:<{width}s}  {_fmt(motion[first] / motion[m])}")
     if output is None:
         print("\n(no --output: torques and efficiency need the driven member)")
-        return 0
+        return _checks(t)
     pf = power_flow(t,
         list(inputs), output, fixed=fixed, mesh_efficiency=1.0 if eta is None else eta,
         input_torque=args.torque if inputs[first] >= 0 else -args.torque,  # input supplies power
         input_speed={k: float(v) for k, v in inputs.items()},
+        friction=run_defaults.get("friction"),
     )  # fmt: skip
     print(f"\npower flow: input {', '.join(inputs)} -> output {output}, mesh efficiency "
           f"{1.0 if eta is None else eta}")  # fmt: skip
@@ -123,4 +124,18 @@ def run(args: argparse.Namespace) -> int:
         print("SELF-LOCKING: the output cannot be driven from this input")
     if pf.circulating_power > 0:
         print(f"circulating power {pf.circulating_power:.6g} (input power {pf.input_power:.6g})")
-    return 0
+    return _checks(t)
+
+
+def _checks(t) -> int:
+    """Print the train's check report (meshes of real gears, coaxiality, planets); 1 if one
+    fails. A train of tooth counts only has nothing to check."""
+    if t.run_defaults.get("friction") is not None:
+        print(f"(meshes of real gears: efficiency from their geometry, friction "
+              f"{t.run_defaults['friction']:g}, Ozols (14.25))")  # fmt: skip
+    report = t.check()
+    if not len(report):
+        return 0
+    print("\nchecks")
+    print(report)
+    return 0 if report.ok else 1
