@@ -123,6 +123,11 @@ def write_animation(
     else:
         writer = animation.PillowWriter(fps=fps)
     first = list(get(0))
+    for item in first:
+        if len(item) != 2 or not isinstance(item[0], shapely.Polygon | shapely.MultiPolygon):
+            raise GearError(f"a frame holds (shapely Polygon, colour) pairs; got {item!r:.60}")
+    if not first:
+        raise GearError("the first frame is empty: give at least one (polygon, colour) pair")
     x0, y0, x1, y1 = shapely.total_bounds([p for p, _ in first])
     pad = 0.04 * max(x1 - x0, y1 - y0, 1e-9)
     fig, ax = plt.subplots(figsize=(size, size))
