@@ -51,6 +51,7 @@ import numpy as np
 from gears import Gear, GearPair
 from gears.errors import GearError
 from gears.report import Finding, Report
+from trains.conditions import assembly_number
 from trains.errors import TrainError
 from trains.power import power_flow
 from trains.willis import Train
@@ -193,12 +194,9 @@ def assembly_ticks(scheme: str, z1, z2, z2p, z3):
     scheme = canonical_scheme(scheme)
     if scheme == "double-planet":
         return np.abs(np.asarray(z3) - np.asarray(z1))
-    z1, z2, z2p, z3 = (np.asarray(v, dtype=np.int64) for v in (z1, z2, z2p, z3))
-    if scheme in ("simple", "stepped"):
-        n = z3 * z2 + z1 * z2p
-    else:
-        n = np.abs(z3 * z2 - z1 * z2p)
-    return n // np.gcd(z2, z2p)
+    internal_a = scheme == "internal"  # the sun of scheme D is a ring
+    internal_b = scheme != "external"
+    return assembly_number(z1, z2, z2p, z3, internal_a, internal_b)
 
 
 def textbook_assembly(z_a: int, ratio_aH: Fraction, k: int) -> bool:
@@ -700,8 +698,10 @@ class Planetary:
             a, b = (k2, k1) if (self.scheme == "internal" and name == "sun-planet") else (k1, k2)
             internal = k1 in internal_keys or k2 in internal_keys
             za, zb = self._gears_in[a].teeth, self._gears_in[b].teeth
+            pair = self._pairs[name]  # the real gears: Train.check and friction= work on it
+            real = {"pair": pair} if a == k1 else {"gears": (pair.g2, pair.g1)}
             t.mesh(_TRAIN_MEMBER[a], _TRAIN_MEMBER[b], teeth=(za, zb), carrier=self.carrier,
-                   internal=internal, name=name)  # fmt: skip
+                   internal=internal, name=name, **real)  # fmt: skip
         try:
             t.set_planets("planet", self.n_planets)
             if self.scheme == "double-planet":
@@ -793,14 +793,11 @@ class Planetary:
             None if input is None else self._member(input),
             None if output is None else self._member(output),
         )
-        if mesh_efficiency is None:
-            etas = {n: p.mesh_efficiency(friction) for n, p in self._pairs.items()}
-        else:
-            etas = {n: float(mesh_efficiency) for n in self._pairs}
+        etas = {} if mesh_efficiency is None else {n: float(mesh_efficiency) for n in self._pairs}
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
-        flow = power_flow(
-            self.train, name[input], name[output], fixed=[name[fixed]], mesh_efficiency=etas
-        )
+        flow = power_flow(self.train, name[input], name[output], fixed=[name[fixed]],
+                          mesh_efficiency=etas,
+                          friction=friction if mesh_efficiency is None else None)  # fmt: skip
         return float(flow.efficiency)
 
     # ---- conditions ------------------------------------------------------------------------

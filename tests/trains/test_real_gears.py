@@ -611,3 +611,27 @@ def test_figure_script_runs(tmp_path):
     mod = runpy.run_path(str(ROOT / "docs" / "make_train_figures.py"))
     (path,) = mod["main"](tmp_path)
     assert path.name == "train_reverted_reducer.png" and path.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(
+    ("scheme", "sun", "planet", "ring"),
+    [
+        ("simple", 18, 45, 108),  # lectures §4.3 course example
+        ("stepped", 26, (70, 21), 117),  # lectures §4.3, scheme B
+        ("external", 100, (101, 100), 99),  # Ozols Ex 7-4 (David)
+        ("internal", 100, (30, 28), 98),  # scheme D, z3 = z1 - z2 + z2' (lectures §4.2)
+    ],
+)
+def test_planetary_builds_its_train_from_its_gears(scheme, sun, planet, ring):
+    # Planetary.train goes through Train.mesh(gears=/pair=): the same GearPairs, so the general
+    # Train.check reports each mesh exactly as Planetary.check does, and the same assembly verdict
+    p = Planetary(sun, planet, ring, n_planets=2, module=1, scheme=scheme)
+    t = p.train
+    assert t.pairs == p.meshes
+    r, rp = t.check(), p.check()
+    for name in p.meshes:
+        mine = {k: f.margin for k, f in r.items() if k.startswith(name + ".")}
+        theirs = {k: f.margin for k, f in rp.items() if k.startswith(name + ".")}
+        assert mine == theirs
+    assert r["planet.assembly"].ok == rp["assembly"].ok
+    assert r["coaxiality(sun, ring)"].ok == rp["coaxiality"].ok
