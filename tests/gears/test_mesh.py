@@ -392,3 +392,34 @@ def test_scene_rejects_bad_parts():
         scene([("a", box, np.eye(3))])
     with pytest.raises(GearError, match="at least one"):
         scene([])
+
+
+# ------------------------------------------------------------------------------ CLI
+def test_cli_mesh(tmp_path, capsys):
+    from trains.cli import main
+
+    out = tmp_path / "g.stl"
+    argv = ["mesh", "20", "--module", "1", "--helix", "20", "--face-width", "10"]
+    assert main([*argv, "--tolerance", "0.05", "-o", str(out)]) == 0
+    back = trimesh.load(out)
+    back.merge_vertices()
+    assert back.is_watertight
+    expected = Gear(20, 1, helix_angle=20).mesh(10, 0.05)
+    assert back.volume == pytest.approx(expected.volume, rel=1e-5)  # float32 STL
+    herring = tmp_path / "h.glb"
+    assert main([*argv, "--herringbone", "--tolerance", "0.1", "-o", str(herring)]) == 0
+    ring = tmp_path / "r.3mf"
+    assert main(["mesh", "60", "--internal", "--face-width", "4", "--tolerance", "0.1",
+                 "-o", str(ring)]) == 0  # fmt: skip
+    assert trimesh.load(ring, force="mesh").euler_number == 0
+    bored = tmp_path / "b.ply"
+    assert main(["mesh", "12", "--module", "3", "--shift", "0.6", "--method", "rack",
+                 "--bore", "10", "--tolerance", "0.1", "-o", str(bored)]) == 0  # fmt: skip
+    assert trimesh.load(bored).euler_number == 0
+    capsys.readouterr()
+    # bad input: exit 2 with one line on stderr, before any work
+    for bad in (["-o", str(tmp_path / "missing" / "g.stl")], ["-o", str(tmp_path / "g.svg")],
+                ["--face-width", "-1", "-o", str(out)]):  # fmt: skip
+        assert main(["mesh", "20", *bad]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "Traceback" not in err
