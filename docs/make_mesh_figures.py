@@ -130,8 +130,6 @@ def chart(path):
     a1.set_title("time (z = 20, m = 1, b = 10; stage m = 1)", fontsize=9)
     a2.loglog(tol, [r["helical_section_deviation"] for r in rows], "^-",
               label="helical: sections between slices (Hausdorff)")  # fmt: skip
-    a2.loglog(tol, np.maximum([r["helical_vertex_deviation"] for r in rows], 1e-9), "v-",
-              label="helical: vertices")  # fmt: skip
     a2.loglog(tol, 2 * tol, "k--", lw=0.8, label="2 x tolerance (the tested bound)")
     a2.loglog(tol, tol, "k:", lw=0.8, label="tolerance")
     a3 = a2.twinx()
