@@ -331,7 +331,7 @@ def _add(t: Train, kind: str, e: dict, where: _Where, i: int) -> None:
             msg = str(exc)
             if msg.startswith(where.source):
                 raise
-            field = "teeth" if "tooth count" in msg else "gears"
+            field = "teeth" if "tooth count" in msg else "shift" if "x1 + x2" in msg else "gears"
             raise where.error(msg, kind, i, field) from None
         return
     a, b = _pair(e, "members", where, kind, i)

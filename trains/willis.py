@@ -572,6 +572,7 @@ class Train:
                 raise TrainError(
                     f"{where}: a pinion and rack has no second axis; use Train.link for it"
                 )
+            Train._geometry_exists(pair, where)
             return (pair.g1, pair.g2), pair
         if (
             not isinstance(gears, tuple | list)
@@ -586,7 +587,18 @@ class Train:
             pair = GearPair(gb, ga) if ga.internal else GearPair(ga, gb)
         except GearError as exc:
             raise TrainError(f"{where}: {exc}") from None
+        Train._geometry_exists(pair, where)
         return (ga, gb), pair
+
+    @staticmethod
+    def _geometry_exists(pair: GearPair, where: str) -> None:
+        """Impossible gears (no working pressure angle for their shifts) raise now, not in
+        :meth:`check`."""
+        try:
+            pair.center_distance  # noqa: B018 - computes the working geometry
+            pair.tip_diameters  # noqa: B018
+        except GearError as exc:
+            raise TrainError(f"{where}: {exc}") from None
 
     def link(
         self, a: str, b: str, ratio: Any, carrier: str | None = None, name: str | None = None
@@ -860,6 +872,7 @@ class Train:
                 if any(f.name == name for f in out):
                     continue
                 if diffs:
+                    unit = {"profile_shift": "module"}.get(diffs[0][0], diffs[0][3].strip())
                     d = abs(diffs[0][1] - diffs[0][2])
                     what = ", ".join(f"{a} {x:g}{u} vs {y:g}{u}" for a, x, y, u in diffs)
                     out.append(Finding(
@@ -867,7 +880,7 @@ class Train:
                         f"{member} meshes in {first} and {r.name} with one gear of {gear.teeth}"
                         f" teeth, module {gear.module:g}, but the two descriptions differ:"
                         f" {what} (a stepped gear needs another tooth count or module)",
-                        unit=diffs[0][3].strip(),
+                        unit=unit,
                     ))  # fmt: skip
         return out
 

@@ -344,6 +344,9 @@ def test_mesh_from_gears_input_errors():
         t.mesh("a", "b", pair=GearPair(Gear(20, 2), Rack(2)))
     with pytest.raises(TrainError, match="give teeth"):
         t.mesh("a", "b")
+    # gears whose shifts leave no working pressure angle are impossible input (raise now)
+    with pytest.raises(TrainError, match=r"mesh a-b: x1 \+ x2 = -16 is too negative"):
+        t.mesh("a", "b", gears=(Gear(20, 2, profile_shift=-8), Gear(40, 2, profile_shift=-8)))
     assert t.relations == ()  # nothing half-added
     # agreeing teeth and a ring on member a are fine
     t.mesh("ring", "p", teeth=(60, 20), gears=(Gear(60, 2, internal=True), Gear(20, 2)),
@@ -362,6 +365,7 @@ def test_same_gear_in_two_meshes_must_agree():
     t.mesh("planet", "ring", gears=(Gear(30, 2), Gear(80, 2, internal=True)), carrier="c")
     f = t.check()["planet.same_gear"]
     assert not f.ok and f.margin == pytest.approx(-0.2) and "profile_shift 0.2 vs 0" in f.message
+    assert f.unit == "module"
     # a stepped planet (another tooth count on the same member) is two gears: no finding
     t = Train()
     t.mesh("sun", "planet", gears=(Gear(20, 2), Gear(30, 2, profile_shift=0.2)), carrier="c")
@@ -492,6 +496,8 @@ def test_cli_prints_checks_and_exits_1_when_one_fails(tmp_path, capsys):
          r"'face_width': must be a number or a list of two"),
         ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 20]\nmodule = 2\ninternal = true\n',
          r"'teeth': an internal mesh needs a ring with more teeth"),
+        ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 40]\nmodule = 2\nshift = -8\n',
+         r"line 5: mesh #1, 'shift': mesh a-b: x1 \+ x2 = -16"),
         ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 40]\ninternal = "yes"\n',
          r"line 4: mesh #1, 'internal': must be true or false"),
         ('[[mesh]]\ngears = ["a", "b"]\nteeth = [20, 40]\ncarrier = 3\n',
@@ -557,7 +563,7 @@ def test_read_train_arbitrary_bytes(tmp_path, data):
 _VALUES = st.sampled_from([
     "1", "0", "-3", "2.5", "1e400", "nan", "true", '"x"', '"1/0"', '"-13/3"', "[]", "[1]",
     "[20, 40]", "[20, 0]", '["a", "b"]', '["a"]', '["a", "a"]', "{}", "{ a = 1 }", '{ "a" = "x" }',
-    "[[1, 2]]", '[["a", "b"]]', "1979-05-27", "[0.1, 0.2]",
+    "[[1, 2]]", '[["a", "b"]]', "1979-05-27", "[0.1, 0.2]", "-8", "[60, 20]",
 ])  # fmt: skip
 _KEYS = st.sampled_from([
     "gears", "teeth", "module", "shift", "helix", "face_width", "pressure_angle", "internal",
