@@ -87,3 +87,23 @@ def test_cli_errors_exit_2(capsys):
     assert main(["train", f, "--fixed", "", "--input", "sun=1"]) == 2
     assert "under-determined" in capsys.readouterr().err
     assert main(["train", f, "--input", "sun=fast"]) == 2
+
+
+def test_reverted_reducer_toml_matches_coaxial_shifts(capsys):
+    # examples/train_reverted_reducer.toml holds the shifts coaxial_shifts finds for 17/40 +
+    # 20/38 at m = 2 (the example script's design): both stages at a_w = 58 mm, all checks hold
+    from gears import Gear
+    from trains import coaxial_shifts
+
+    p12, _ = coaxial_shifts([(Gear(17, 2), Gear(40, 2)), (Gear(20, 2), Gear(38, 2))])
+    f = EXAMPLES / "train_reverted_reducer.toml"
+    t = read_train(f)
+    pair = t.pairs["in-lay"]
+    assert (pair.g1.profile_shift, pair.g2.profile_shift) == (
+        p12.g1.profile_shift,
+        p12.g2.profile_shift,
+    )
+    assert abs(pair.center_distance - t.pairs["lay-out"].center_distance) < 1e-9
+    assert main(["train", str(f)]) == 0  # prints the check report; every check holds
+    out = capsys.readouterr().out
+    assert "all conditions hold" in out and "coaxiality(in, out)" in out
