@@ -641,3 +641,38 @@ def test_planetary_builds_its_train_from_its_gears(scheme, sun, planet, ring):
         assert mine == theirs
     assert r["planet.assembly"].ok == rp["assembly"].ok
     assert r["coaxiality(sun, ring)"].ok == rp["coaxiality"].ok
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    z=st.lists(st.integers(6, 120), min_size=4, max_size=4),
+    m=st.sampled_from([0.5, 1.0, 2.0, 5.0]),
+    split=st.sampled_from(["keep", "proportional"]),
+    extra=st.floats(-3.0, 3.0),
+)
+def test_coaxial_shifts_property(z, m, split, extra):
+    # stability (DESIGN quality bars): any two external meshes and a target distance near the
+    # larger reference distance give pairs at that distance to 1e-9 mm or a TrainError; no NaN
+    meshes = [(Gear(z[0], m), Gear(z[1], m)), (Gear(z[2], m), Gear(z[3], m))]
+    target = max(z[0] + z[1], z[2] + z[3]) * m / 2 + extra * m
+    try:
+        pairs = coaxial_shifts(meshes, center_distance=target, split=split)
+    except TrainError:
+        return
+    for p in pairs:
+        assert abs(p.center_distance - target) < 1e-9
+        assert all(math.isfinite(g.profile_shift) for g in p.gears)
+
+
+def test_closed_differential_friction_equals_per_mesh_mapping():
+    # Ozols Ex 7-7 on real gears: friction= is the same Kreines power flow as giving each mesh
+    # its GearPair.mesh_efficiency by name (Ozols (14.25)); derivation: same etas, same solver
+    f = 0.08
+    real, counts = _ozols_7_7(True), _ozols_7_7(False)
+    etas = {n: p.mesh_efficiency(f) for n, p in real.pairs.items()}
+    a = power_flow(real, "1", "4", friction=f)
+    b = power_flow(counts, "1", "4", mesh_efficiency=etas)
+    assert a.efficiency == pytest.approx(b.efficiency, rel=1e-14)
+    assert a.torques == pytest.approx(b.torques, rel=1e-13)
+    # every mesh loses, so the hoist is less efficient than its best mesh (sanity bound)
+    assert a.efficiency < min(etas.values())
