@@ -16,7 +16,7 @@ import shapely
 from gears.errors import GearError
 from gears.plot import outlines_figure
 
-__all__ = ["points", "save", "save_mesh", "to_dxf", "to_svg"]
+__all__ = ["check_output", "points", "save", "save_mesh", "to_dxf", "to_svg"]
 
 
 def _polygons(outlines) -> list[shapely.Polygon]:
@@ -103,6 +103,24 @@ OUTLINE_FORMATS = (".svg", ".dxf", ".png", ".npz")
 
 def _is_mesh(obj) -> bool:
     return type(obj).__name__ in ("Trimesh", "Scene") and hasattr(obj, "export")
+
+
+def check_output(path, formats=MESH_FORMATS) -> pathlib.Path:
+    """``path`` as a Path, or a GearError (before any work) when its extension is not one of
+    ``formats`` or its directory does not exist.
+
+    Examples
+    --------
+    >>> check_output("stage.glb").name
+    'stage.glb'
+    """
+    out = pathlib.Path(path)
+    if out.suffix.lower() not in formats:
+        raise GearError(f"output {str(path)!r}: the extension must be one of {', '.join(formats)}")
+    parent = out.parent if str(out.parent) else pathlib.Path(".")
+    if not parent.is_dir():
+        raise GearError(f"output {str(path)!r}: the directory {str(parent)!r} does not exist")
+    return out
 
 
 def save_mesh(path, mesh_or_scene) -> pathlib.Path:

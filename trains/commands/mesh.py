@@ -14,9 +14,8 @@ Examples:
 from __future__ import annotations
 
 import argparse
-import pathlib
 
-from gears import Gear, GearError, ShaperCutter
+from gears import Gear, ShaperCutter
 
 HELP = "3D mesh of one gear (spur, helical, herringbone, ring) to .stl/.3mf/.glb/.obj/.ply"
 
@@ -48,22 +47,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def check_output(path: str, formats=FORMATS) -> pathlib.Path:
-    """The output path, or a GearError (exit 2) before any work when its extension is not one
-    of ``formats`` or its directory does not exist."""
-    out = pathlib.Path(path)
-    if out.suffix.lower() not in formats:
-        raise GearError(f"output {path!r}: the extension must be one of {', '.join(formats)}")
-    parent = out.parent if str(out.parent) else pathlib.Path(".")
-    if not parent.is_dir():
-        raise GearError(f"output {path!r}: the directory {str(parent)!r} does not exist")
-    return out
-
-
 def run(args: argparse.Namespace) -> int:
-    from gears.export import save
+    from gears.export import check_output, save
 
-    out = check_output(args.output)
+    out = check_output(args.output, FORMATS)
     cutter = None if args.cutter_teeth is None else ShaperCutter(args.cutter_teeth)
     g = Gear(
         args.teeth, args.module, args.pressure_angle, args.helix, args.shift,
