@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from shapely.plotting import patch_from_polygon
 
 from gears.errors import GearError
 from gears.generate import rack_positions, rack_tool_polygon, shaper_positions, shaper_tool_polygon
@@ -44,9 +45,8 @@ def outlines_figure(*outlines, ax=None):
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 7))
     for i, p in enumerate(outlines):
         polys = getattr(p, "geoms", [p])
-        for q in polys:
-            x, y = q.exterior.xy
-            ax.fill(x, y, alpha=0.35, color=f"C{i}", lw=0)
+        for q in polys:  # a patch with holes: bores and ring interiors stay unfilled
+            ax.add_patch(patch_from_polygon(q, alpha=0.35, color=f"C{i}", lw=0))
             _draw(ax, q, color=f"C{i}", lw=0.6)
     ax.set_aspect("equal")
     ax.set_xlabel("mm")

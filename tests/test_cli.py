@@ -1,4 +1,6 @@
-"""The ``geartrain`` CLI: ``pair`` and ``demo`` (issue 2), called through trains.cli.main."""
+"""The ``geartrain`` CLI: ``pair`` and ``demo`` (issue 2), called through trains.cli.main.
+
+Bad input, exit codes, help and progress (issue 11) are in test_cli_errors.py."""
 
 from __future__ import annotations
 
@@ -55,9 +57,12 @@ def test_pair_contact_ratio_matches_gearpair(capsys):
 
 
 def test_pair_internal_helical_with_face_width(capsys):
-    out = _run(
-        capsys, "pair", "20", "80", "-m", "2", "--internal", "--helix", "15", "--face-width", "20"
-    )
+    argv = ["pair", "20", "80", "-m", "2", "--internal", "--helix", "15", "--face-width", "20"]
+    # a zero-shift 20/80 ring's tip reaches the pinion's fillet: the report names the failed
+    # check and the exit status is 1 (the CLI's convention: 1 = the design fails a check)
+    assert main(argv) == 1
+    out = capsys.readouterr().out
+    assert re.search(r"\[FAIL\] tip_interference\s+margin -", out)
     # eps_beta = b sin(beta) / (pi m_n) = 20 sin 15 / (2 pi) = 0.8238 (Ozols 21.31)
     assert _row(out, "overlap ratio eps_beta") == "0.8238"
     # a_d = m_n (z2 - z1) / (2 cos beta) = 2 * 60 / (2 cos 15) = 62.1166 (standards.md §1.2)
@@ -81,18 +86,19 @@ def test_pair_from_center_distance_round_trip(capsys):
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
-        (["pair", "12", "24", "--module", "0"], "module = 0"),
-        (["pair", "0", "24"], "teeth = 0"),
-        (["pair", "30", "20", "--internal"], "z2"),
-        (["pair", "12", "24", "--center-distance", "10"], "centre distance 10"),
-        (["pair", "12", "24", "--pressure-angle", "50"], "pressure_angle"),
+        (["pair", "12", "24", "--module", "0"], "--module 0 is out of range"),
+        (["pair", "0", "24"], "Z1 0 is out of range"),
+        (["pair", "30", "20", "--internal"], "Z2 = 20 <= Z1 = 30"),
+        (["pair", "12", "24", "--center-distance", "10"], "--center-distance = 10"),
+        (["pair", "12", "24", "--pressure-angle", "50"], "--pressure-angle"),
     ],
 )
 def test_pair_errors_exit_2_with_the_gear_error(capsys, argv, message):
     assert main(argv) == 2
-    err = capsys.readouterr().err
+    out, err = capsys.readouterr()
     assert err.startswith("geartrain pair: error: ")
     assert message in err
+    assert out == "" and err.count("\n") == 1  # one line, nothing on stdout
 
 
 def test_demo_runs_the_default_pair(capsys):

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
@@ -138,22 +138,25 @@ class Candidates(list):
     def reason(self) -> str:
         """Why the result is empty (or a summary of the filtering).
 
-        Names the condition that removed the most sets (the enumeration's tooth range only when
-        nothing else removed any) and the last condition that removed any, i.e. the one that
-        emptied the result.
+        Names the condition that removed the most sets (when that is the enumeration's tooth
+        range, also the condition that removed the most after it) and the last condition that
+        removed any, i.e. the one that emptied the result.
         """
         if not self.removed:
             return "nothing was examined"
-        conditions = {k: v for k, v in self.removed.items() if k != "tooth range" and v}
-        pool = conditions or self.removed
-        worst = max(pool, key=pool.get)
+        worst = max(self.removed, key=self.removed.get)
+        most = f"the '{worst}' condition removed the most ({self.removed[worst]})"
+        others = {k: v for k, v in self.removed.items() if k != worst and v}
+        if worst == "tooth range" and others:
+            second = max(others, key=others.get)
+            most += f", then '{second}' ({others[second]})"
         last = [k for k, v in self.removed.items() if v]
         head = "no candidate meets the request" if not self else f"{len(self)} candidates"
         counts = ", ".join(f"{k} {v}" for k, v in self.removed.items())
         tail = f"; the last sets were removed by '{last[-1]}'" if last and not self else ""
         return (
-            f"{head}: of {self.examined} tooth-number sets the '{worst}' condition removed the "
-            f"most ({pool[worst]}){tail}; removed per condition: {counts}"
+            f"{head}: of {self.examined} tooth-number sets {most}{tail}; "
+            f"removed per condition: {counts}"
         )
 
     def table(self) -> str:
@@ -260,6 +263,7 @@ def synthesize(
     min_contact_ratio: float = 1.1,
     mesh_checks: str = "geometry",
     limit: int = 20,
+    progress: Callable[[int, int], object] | None = None,
 ) -> Candidates:
     """Tooth numbers of a planetary stage that meet a target ratio under every condition.
 
@@ -303,6 +307,9 @@ def synthesize(
         removes most zero-shift stages.
     limit : int
         Number of candidates returned (the best by the ranking).
+    progress : callable, optional
+        Called as ``progress(done, total)`` after each block of tooth-number sets is filtered
+        (the command line draws its progress bar with it).
 
     Returns
     -------
@@ -379,7 +386,7 @@ def synthesize(
     search = _Search(scheme, target, tol, ks, z_min, z_max, c, min_internal_difference,
                      min_contact_ratio, rack.addendum, rack.pressure_angle, fixed, input,
                      output, allow_shift, mesh_checks != "textbook")  # fmt: skip
-    arrays = search.run()
+    arrays = search.run(progress)
     removed = search.removed
     order = np.lexsort(
         (arrays["z3"] * 0 + arrays["z2p"], arrays["z2"], arrays["z1"], -arrays["k"],
@@ -467,6 +474,7 @@ class _Search:
         z = np.arange(self.z_min, self.z_max + 1, dtype=np.int64)
         n = len(z)
         s = self.scheme
+        self.n_blocks = 1  # for progress reports
         if s == "simple":
             z1, z2 = (a.ravel() for a in np.meshgrid(z, z, indexing="ij"))
             yield {"z1": z1, "z2": z2, "z2p": z2}
@@ -475,22 +483,25 @@ class _Search:
             yield {"z1": z1, "z3": z3}
         else:
             per = max(1, BLOCK // (n * n))
+            self.n_blocks = -(-n // per)
             for start in range(0, n, per):
                 z1, z2, z2p = (a.ravel() for a in
                                np.meshgrid(z[start:start + per], z, z, indexing="ij"))  # fmt: skip
                 yield {"z1": z1, "z2": z2, "z2p": z2p}
 
-    def run(self) -> dict[str, np.ndarray]:
+    def run(self, progress=None) -> dict[str, np.ndarray]:
         parts = []
-        for block in self._blocks():
+        for i, block in enumerate(self._blocks(), 1):
             if self.scheme == "double-planet":
                 parts.append(self._double(block))
-                continue
-            for delta in self.deltas:
-                b = dict(block)
-                b["z3"] = coaxial_ring_teeth(self.scheme, b["z1"], b["z2"], b["z2p"]) + delta
-                b["delta"] = np.full(b["z1"].shape, delta, dtype=np.int64)
-                parts.append(self._filter(b))
+            else:
+                for delta in self.deltas:
+                    b = dict(block)
+                    b["z3"] = coaxial_ring_teeth(self.scheme, b["z1"], b["z2"], b["z2p"]) + delta
+                    b["delta"] = np.full(b["z1"].shape, delta, dtype=np.int64)
+                    parts.append(self._filter(b))
+            if progress is not None:
+                progress(i, self.n_blocks)
         keys = ("z1", "z2", "z2p", "z3", "k", "num", "den", "error", "hunting", "delta")
         return {k: np.concatenate([p[k] for p in parts]) for k in keys}
 

@@ -1,8 +1,14 @@
-"""Geometry and checks of one meshing pair: every dimension of both gears, the working pressure
-angle and centre distance, contact ratios, sliding, efficiency and every check with its margin.
+"""Geometry and checks of one meshing pair: every dimension of both gears (as mounted, after
+tip shortening), the working pressure angle and centre distance, contact ratios, sliding,
+efficiency and every check with its margin. The exit status is 1 when a check fails.
 
-Example: ``geartrain pair 12 24 --module 3 --shift 0.6 0.36``. With ``--center-distance`` the
-shifts follow from the centre distance (``GearPair.at_center_distance``, split by ``--split``).
+With --center-distance the profile shifts follow from the centre distance, divided between the
+two gears by --split.
+
+Examples:
+    geartrain pair 12 24 --module 3 --shift 0.6 0.36
+    geartrain pair 20 80 --module 2 --internal --shift 0 0.5 --helix 15 --face-width 20
+    geartrain pair 12 24 --module 3 --center-distance 56.5
 """
 
 from __future__ import annotations
@@ -10,56 +16,98 @@ from __future__ import annotations
 import argparse
 import math
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
-from gears.errors import GearError
-from gears.gear import Gear
-from gears.pair import GearPair
+from trains.commands._common import (
+    CHECK_FAILED,
+    OK,
+    bounded,
+    finite,
+    integer,
+    non_negative,
+    positive,
+)
+
+if TYPE_CHECKING:
+    from gears import Gear, GearPair
 
 HELP = "geometry, contact ratios and checks of a gear pair (external, internal, helical)"
 
 SPLITS = ("equal_sliding", "proportional", "keep")
 
+NAMES = {
+    r"split\s*=\s*'(\w+)'": r"--split \1",
+    "x1": "X1",
+    "x2": "X2",
+    "z1": "Z1",
+    "z2": "Z2",
+    "g1": "gear 1",
+    "g2": "gear 2",
+    "profile_shift": "--shift",
+    "module": "--module",
+    "pressure_angle": "--pressure-angle",
+    "helix_angle": "--helix",
+    "face_width": "--face-width",
+    "center_distance": "--center-distance",
+    "at_center_distance": "--center-distance",
+    "min_contact_ratio": "--min-contact-ratio",
+    "min_tip_land": "--min-tip-land",
+    "friction": "--friction",
+}
+"""The library's names in error messages -> this command's options (see trains.cli)."""
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("z1", type=int, help="teeth of gear 1 (the pinion)")
-    parser.add_argument("z2", type=int, help="teeth of gear 2 (the ring with --internal)")
-    parser.add_argument("--module", "-m", type=float, default=1.0, help="normal module, mm")
+    parser.add_argument("z1", type=integer("Z1"), metavar="Z1", help="teeth of gear 1 (pinion)")
     parser.add_argument(
-        "--shift", "-x", type=float, nargs=2, default=(0.0, 0.0), metavar=("X1", "X2"),
-        help="profile-shift coefficients of gear 1 and gear 2 (default 0 0)",
+        "z2", type=integer("Z2"), metavar="Z2", help="teeth of gear 2 (the ring with --internal)"
+    )
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
+    )
+    parser.add_argument(
+        "--shift", "-x", type=finite("--shift"), nargs=2, default=(0.0, 0.0), metavar=("X1", "X2"),
+        help="profile-shift coefficients of gear 1 and gear 2",
     )  # fmt: skip
     parser.add_argument("--internal", action="store_true", help="gear 2 is an internal ring")
     parser.add_argument(
-        "--helix", type=float, default=0.0, metavar="BETA",
+        "--helix", type=finite("--helix"), default=0.0, metavar="BETA",
         help="helix angle of gear 1 in degrees (+ right hand); gear 2 gets the mating hand",
     )  # fmt: skip
     parser.add_argument(
-        "--pressure-angle", type=float, default=20.0, metavar="ALPHA",
-        help="normal pressure angle in degrees (default 20)",
+        "--pressure-angle", type=finite("--pressure-angle"), default=20.0, metavar="ALPHA",
+        help="normal pressure angle in degrees",
     )  # fmt: skip
-    parser.add_argument("--face-width", type=float, default=None, metavar="B", help="mm")
     parser.add_argument(
-        "--center-distance", type=float, default=None, metavar="A",
+        "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
+        help="face width in mm (needed for the overlap ratio of a helical pair)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--center-distance", type=positive("--center-distance", "mm"), default=None, metavar="A",
         help="working centre distance in mm: the shifts follow from it (overrides --shift X2)",
     )  # fmt: skip
     parser.add_argument(
         "--split", choices=SPLITS, default="equal_sliding",
-        help="how --center-distance divides the shift sum (default equal_sliding; "
-        "'keep' keeps X1 of --shift)",
+        help="how --center-distance divides the shift sum ('keep' keeps X1 of --shift)",
     )  # fmt: skip
     parser.add_argument(
-        "--min-contact-ratio", type=float, default=1.1, help="required contact ratio (1.1)"
-    )
+        "--min-contact-ratio", type=non_negative("--min-contact-ratio"), default=1.1,
+        help="required transverse contact ratio",
+    )  # fmt: skip
     parser.add_argument(
-        "--min-tip-land", type=float, default=0.2, help="required tip land in modules (0.2)"
-    )
+        "--min-tip-land", type=non_negative("--min-tip-land", "modules"), default=0.2,
+        help="required tip land in modules",
+    )  # fmt: skip
     parser.add_argument(
-        "--friction", type=float, default=0.1, help="friction coefficient for efficiency (0.1)"
-    )
+        "--friction", type=bounded("--friction", 0, 1, high_open=True), default=0.1,
+        help="friction coefficient for the mesh efficiency",
+    )  # fmt: skip
 
 
 def build_pair(args: argparse.Namespace) -> GearPair:
     """The :class:`GearPair` the arguments describe."""
+    from gears import Gear, GearPair
+
     x1, x2 = args.shift
     beta = args.helix
     g1 = Gear(args.z1, args.module, args.pressure_angle, beta, x1, args.face_width, internal=False)
@@ -74,6 +122,8 @@ def build_pair(args: argparse.Namespace) -> GearPair:
 
 def _value(fn: Callable[[], object], fmt: str = "{:.4f}") -> str:
     """Format ``fn()``; a quantity that does not exist for this gear shows as '-'."""
+    from gears import GearError
+
     try:
         v = fn()
     except GearError:
@@ -154,6 +204,7 @@ def pair_report(pair: GearPair, min_contact_ratio=1.1, min_tip_land=0.2, frictio
 
 def run(args: argparse.Namespace) -> int:
     pair = build_pair(args)
+    ok = pair.check(args.min_contact_ratio, args.min_tip_land).ok
     kind = "internal" if pair.internal else "external"
     g1, g2 = pair.gears
     print(
@@ -162,4 +213,4 @@ def run(args: argparse.Namespace) -> int:
     )
     print()
     print(pair_report(pair, args.min_contact_ratio, args.min_tip_land, args.friction))
-    return 0
+    return OK if ok else CHECK_FAILED

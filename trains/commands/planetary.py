@@ -1,7 +1,9 @@
-"""Check a planetary stage: ratios, planet speed, coaxiality, assembly, neighbours, every mesh.
+"""Check a planetary stage: ratios, planet speed, efficiency, coaxiality, assembly, neighbours
+and every mesh, each with its margin. Give three tooth counts (sun, planet, ring) or four (sun,
+the planet gear on the sun, the planet gear on the ring, ring) for a stepped planet. The exit
+status is 1 when a check fails.
 
-Examples::
-
+Examples:
     geartrain planetary 18 45 108 --planets 3 --module 2
     geartrain planetary 26 70 21 117 --planets 3 --scheme stepped
     geartrain planetary 21 43 108 --planets 3 --module 2 --coaxial
@@ -11,29 +13,56 @@ from __future__ import annotations
 
 import argparse
 
-from trains.errors import TrainError
-from trains.planetary import SCHEMES, Planetary
+from trains.commands._common import CHECK_FAILED, OK, integer, non_negative, positive
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
+
+SCHEME_HELP = (
+    "simple, stepped, external, internal or double-planet (or a textbook alias A, B, C, D); "
+    "default: simple for three tooth counts, stepped for four"
+)
+
+NAMES = {
+    "n_planets": "--planets",
+    "module": "--module",
+    "clearance": "--clearance",
+    "center_distance": "--center-distance",
+    "scheme": "--scheme",
+}
+"""The library's names in error messages -> this command's options (see trains.cli)."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "teeth", type=int, nargs="+", metavar="Z",
+        "teeth", type=integer("Z"), nargs="+", metavar="Z",
         help="sun, planet, ring; or sun, planet (on the sun), planet (on the ring), ring",
     )  # fmt: skip
-    parser.add_argument("--planets", "-k", type=int, default=3, help="planet count (3)")
-    parser.add_argument("--module", "-m", type=float, default=1.0, help="module in mm (1)")
-    parser.add_argument("--scheme", default=None, help=f"one of {', '.join(SCHEMES)}")
-    parser.add_argument("--clearance", type=float, default=0.5, help="tip gap, modules (0.5)")
+    parser.add_argument(
+        "--planets", "-k", type=integer("--planets"), default=3, help="number of planets"
+    )
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="module in mm"
+    )
+    parser.add_argument("--scheme", default=None, help=SCHEME_HELP)
+    parser.add_argument(
+        "--clearance", type=non_negative("--clearance", "modules"), default=0.5,
+        help="least tip gap between neighbouring planets, in modules",
+    )  # fmt: skip
     parser.add_argument(
         "--coaxial", action="store_true",
         help="choose profile shifts for a common working centre distance",
     )  # fmt: skip
-    parser.add_argument("--center-distance", type=float, default=None, help="with --coaxial, mm")
+    parser.add_argument(
+        "--center-distance", type=positive("--center-distance", "mm"), default=None,
+        help="with --coaxial: the common working centre distance in mm (default: the larger "
+        "reference centre distance)",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
+    from trains.errors import TrainError
+    from trains.planetary import Planetary
+
     z = args.teeth
     if len(z) == 3:
         sun, planet, ring = z
@@ -42,12 +71,15 @@ def run(args: argparse.Namespace) -> int:
         sun, planet, ring = z[0], (z[1], z[2]), z[3]
         scheme = args.scheme or "stepped"
     else:
-        raise TrainError(f"give 3 tooth counts (sun planet ring) or 4; got {len(z)}")
+        raise TrainError(f"give 3 tooth counts Z (sun planet ring) or 4; got {len(z)}")
+    if args.center_distance is not None and not args.coaxial:
+        raise TrainError("--center-distance applies with --coaxial only")
     kw = {"scheme": scheme, "clearance": args.clearance}
     if args.coaxial:
         stage = Planetary.coaxial(sun, planet, ring, args.planets, args.module,
                                   center_distance=args.center_distance, **kw)  # fmt: skip
     else:
         stage = Planetary(sun, planet, ring, args.planets, args.module, **kw)
+    ok = stage.check().ok
     print(stage.describe())
-    return 0 if stage.check().ok else 1
+    return OK if ok else CHECK_FAILED

@@ -1,7 +1,9 @@
-"""Search the tooth numbers of a planetary stage for a target ratio; print a ranked table.
+"""Search the tooth numbers of a planetary stage for a target ratio and print the best sets,
+ranked: smallest ring, smallest ratio error, most hunting-tooth meshes, unshifted first. Every
+set meets the ratio, coaxiality, assembly, neighbour and mesh conditions. The exit status is 1
+when no set meets them all (the summary names the condition that removed the most sets).
 
-Examples::
-
+Examples:
     geartrain synthesize --ratio 7 --planets 3
     geartrain synthesize --ratio 16 --planets 3 --scheme stepped --z-max 120
     geartrain synthesize --ratio 7.2 --planets 3-5 --tolerance 0.01 --allow-shift
@@ -11,55 +13,130 @@ from __future__ import annotations
 
 import argparse
 
-from trains.errors import TrainError
-from trains.planetary import SCHEMES
-from trains.synthesis import synthesize
+from trains.commands._common import (
+    CHECK_FAILED,
+    OK,
+    exact,
+    integer,
+    non_negative,
+    positive,
+    progress_bar,
+)
 
 HELP = "search planetary tooth numbers for a target ratio and print them ranked"
 
+LEGEND = (
+    "columns: z1 sun; z2 planet gear on the sun; z2p planet gear on the ring (the outer planet "
+    "of a double-planet stage; equal to z2 for a one-gear planet); z3 ring; k planets; ratio "
+    "achieved; error |ratio - target| / target; hunt number of meshes whose tooth counts have "
+    "no common factor (hunting tooth: every tooth meets every tooth of its mate, which evens "
+    "out wear); shift yes when profile shifts make the set coaxial (--allow-shift)"
+)
+"""What the columns of the synthesis table mean (printed under it)."""
 
-def _planets(text: str):
-    if "-" in text:
-        lo, hi = text.split("-", 1)
-        try:
-            return range(int(lo), int(hi) + 1)
-        except ValueError:
-            raise TrainError(
-                f"--planets {text!r}; give a count like 3 or a range like 3-5"
-            ) from None
+NAMES = {
+    r"ratio(?=\s*=)": "--ratio",
+    "n_planets": "--planets",
+    "z_min": "--z-min",
+    "z_max": "--z-max",
+    "limit": "--limit",
+    r"tolerance(?=\s*=)": "--tolerance",
+    r"module(?=\s*=)": "--module",
+    "mesh_checks": "--mesh-checks",
+    "allow_shift": "--allow-shift",
+    r"scheme(?=\s*=)": "--scheme",
+    r"fixed(?=\s*=)": "--fixed",
+    r"input(?=\s*=)": "--input",
+    r"output(?=\s*=)": "--output",
+}
+"""The library's names in error messages -> this command's options (see trains.cli)."""
+
+
+def _ratio(text: str):
     try:
-        return int(text)
+        return exact("--ratio", text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _planets(text: str) -> int | range:
+    """A planet count (``3``) or an inclusive range (``3-5``)."""
+    bad = argparse.ArgumentTypeError(
+        f"--planets {text!r}; give a count like 3 or a range like 3-5 (integers >= 1)"
+    )
+    lo, sep, hi = text.strip().partition("-")
+    try:
+        a, b = int(lo), int(hi) if sep else None
     except ValueError:
-        raise TrainError(f"--planets {text!r}; give a count like 3 or a range like 3-5") from None
+        raise bad from None
+    if a < 1 or (b is not None and b < a):
+        raise bad
+    return a if b is None else range(a, b + 1)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--ratio", "-r", required=True, help="target ratio, e.g. 7 or 22/3")
-    parser.add_argument("--planets", "-k", default="3", help="planet count or range (3, 3-5)")
-    parser.add_argument("--scheme", default="simple", help=f"one of {', '.join(SCHEMES)}")
-    parser.add_argument("--tolerance", type=float, default=0.0, help="relative ratio error (0)")
-    parser.add_argument("--z-min", type=int, default=17)
-    parser.add_argument("--z-max", type=int, default=200)
-    parser.add_argument("--module", "-m", type=float, default=None)
-    parser.add_argument("--allow-shift", action="store_true", help="accept shifted coaxial sets")
-    parser.add_argument("--fixed", default="ring", help="fixed member (ring)")
-    parser.add_argument("--input", default=None, help="input member (sun when the ring is fixed)")
-    parser.add_argument("--output", default=None, help="output member")
+    parser.add_argument(
+        "--ratio", "-r", type=_ratio, required=True,
+        help="target ratio w_input / w_output, e.g. 7, 7.2 or 22/3 (required)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--planets", "-k", type=_planets, default="3",
+        help="planet count, or a range like 3-5 (every count in it is searched)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--scheme", default="simple",
+        help="simple, stepped, external, internal or double-planet (or a textbook alias A-D)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tolerance", type=non_negative("--tolerance"), default=0.0,
+        help="allowed relative ratio error |i - target| / target (0: exact)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--z-min", type=integer("--z-min"), default=17,
+        help="fewest teeth of any gear (17 avoids undercut of zero-shift 20 deg gears)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--z-max", type=integer("--z-max"), default=200,
+        help="most teeth of any gear, the ring included (the search grows with it)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=None,
+        help="module of the stages in mm, for their dimensions (default: 1, lengths in modules)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--allow-shift", action="store_true",
+        help="also accept sets one or two teeth off coaxiality, made coaxial by profile shifts",
+    )  # fmt: skip
+    parser.add_argument("--fixed", default="ring", help="member held fixed")
+    parser.add_argument(
+        "--input", default=None, help="input member (default: the sun when the ring is fixed)"
+    )
+    parser.add_argument(
+        "--output", default=None, help="output member (default: the carrier when it turns)"
+    )
     parser.add_argument(
         "--mesh-checks", default="geometry", choices=("geometry", "textbook", "full"),
-        help="which mesh conditions filter the sets (geometry)",
+        help="which mesh conditions filter the sets: contact ratio and interference on the real "
+        "geometry, the textbook's tooth-count rules only, or every check of each stage",
     )  # fmt: skip
-    parser.add_argument("--limit", type=int, default=10, help="rows to print (10)")
+    parser.add_argument("--limit", type=integer("--limit"), default=10, help="rows to print")
 
 
 def run(args: argparse.Namespace) -> int:
-    found = synthesize(
-        args.ratio, _planets(args.planets), scheme=args.scheme, tolerance=args.tolerance,
-        z_min=args.z_min, z_max=args.z_max, module=args.module, allow_shift=args.allow_shift,
-        fixed=args.fixed, input=args.input, output=args.output, mesh_checks=args.mesh_checks,
-        limit=args.limit,
-    )  # fmt: skip
-    print(found.table())
-    if found:
+    from trains.synthesis import synthesize
+
+    with progress_bar("synthesize") as progress:
+        found = synthesize(
+            args.ratio, args.planets, scheme=args.scheme, tolerance=args.tolerance,
+            z_min=args.z_min, z_max=args.z_max, module=args.module, allow_shift=args.allow_shift,
+            fixed=args.fixed, input=args.input, output=args.output, mesh_checks=args.mesh_checks,
+            limit=args.limit, progress=progress,
+        )  # fmt: skip
+    if not found:
         print(found.reason)
-    return 0 if found else 1
+        return CHECK_FAILED
+    print(found.table())
+    print(LEGEND)
+    print()
+    print(found.reason)
+    return OK

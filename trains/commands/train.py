@@ -1,9 +1,14 @@
-"""Solve a gear train read from a TOML file: speeds, ratios, planet bearing speeds, torques and
-efficiency.
+"""Solve a gear train read from a TOML file (see docs/trains.md for the format): the speed of
+every member, the speeds relative to the carriers (planet bearing speeds), the ratios and, with
+an output member, the torques, powers, losses and efficiency.
 
-Example: ``geartrain train examples/train_closed_differential.toml --fixed ring --input sun=1500``.
-Speeds given as integers or decimals are exact; the TOML file's ``[run]`` table supplies defaults
-for every option.
+Speeds given as integers, decimals or fractions are exact. The file's [run] table supplies a
+default for every option; an option given here overrides it.
+
+Examples:
+    geartrain train examples/train_closed_differential.toml
+    geartrain train examples/train_closed_differential.toml --input 1=880 --output 4
+    geartrain train examples/train_simple_planetary.toml --fixed ring --input sun=1500
 """
 
 from __future__ import annotations
@@ -12,48 +17,68 @@ import argparse
 from fractions import Fraction
 from typing import Any
 
-from trains.errors import TrainError
-from trains.power import power_flow
-from trains.toml_format import read_train
-from trains.willis import FRAME
+from trains.commands._common import bounded, exact, finite, input_file
 
 HELP = "solve a gear train from a TOML file (speeds, ratios, torques, efficiency)"
 
+NAMES = {
+    r"Train\.link": "a [[link]] table",
+    "mesh_efficiency": "--efficiency",
+    "input_torque": "--torque",
+    "input_speed": "--input",
+}
+"""The library's names in error messages -> this command's options (see trains.cli)."""
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("file", help="train description (TOML; see docs/trains.md)")
+    parser.add_argument(
+        "file", type=input_file("FILE"), metavar="FILE",
+        help="train description (TOML; see docs/trains.md)",
+    )  # fmt: skip
     parser.add_argument(
         "--fixed", action="append", default=None, metavar="MEMBER",
-        help="member held at speed 0 (repeat, or comma-separated)",
+        help="member held at speed 0 (repeat, or comma-separated; default: the file's [run])",
     )  # fmt: skip
     parser.add_argument(
         "--input", action="append", default=None, metavar="MEMBER=SPEED",
-        help="a driving member and its speed (repeat for a differential)",
+        help="a driving member and its speed (repeat for a differential; default: the file's "
+        "[run])",
     )  # fmt: skip
-    parser.add_argument("--output", default=None, help="driven member (for ratios and torques)")
     parser.add_argument(
-        "--efficiency", type=float, default=None, metavar="ETA",
-        help="efficiency of every mesh in its carrier frame (default 1, or the file's)",
+        "--output", default=None,
+        help="driven member, for torques and efficiency (default: the file's [run])",
     )  # fmt: skip
-    parser.add_argument("--torque", type=float, default=1.0, help="input torque (default 1)")
+    parser.add_argument(
+        "--efficiency", type=bounded("--efficiency", 0, 1, low_open=True), default=None,
+        metavar="ETA",
+        help="efficiency of every mesh in its carrier frame (default: the file's, else 1)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--torque", type=finite("--torque"), default=1.0, help="input torque (non-zero)"
+    )
 
 
-def _speed(text: str) -> Fraction:
+def _speed(name: str, text: str) -> Fraction:
+    from trains.errors import TrainError
+
     try:
-        return Fraction(text.strip())
-    except (ValueError, ZeroDivisionError):
-        raise TrainError(f"speed {text!r} is not a number") from None
+        return exact(f"{name}: speed", text)
+    except ValueError as exc:
+        raise TrainError(str(exc)) from None
 
 
 def _parse_inputs(items: Any) -> dict[str, Fraction]:
+    """``--input MEMBER=SPEED`` items (or the file's ``[run] input`` table) as exact speeds."""
+    from trains.errors import TrainError
+
     if isinstance(items, dict):
-        return {str(k): _speed(str(v)) for k, v in items.items()}
+        return {str(k): _speed(f"[run] input {k}", str(v)) for k, v in items.items()}
     out: dict[str, Fraction] = {}
     for item in items or []:
-        if "=" not in item:
+        name, sep, value = str(item).partition("=")
+        if not sep or not name.strip():
             raise TrainError(f"--input must be MEMBER=SPEED, got {item!r}")
-        name, value = item.split("=", 1)
-        out[name.strip()] = _speed(value)
+        out[name.strip()] = _speed(f"--input {item}", value)
     return out
 
 
@@ -66,6 +91,11 @@ def _fmt(x: Any) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    from trains.errors import TrainError
+    from trains.power import power_flow
+    from trains.toml_format import read_train
+    from trains.willis import FRAME
+
     t = read_train(args.file)
     run_defaults = t.run_defaults
     fixed: list[str] = []

@@ -1,0 +1,281 @@
+"""Layer 6, command line: what the ``geartrain`` sub-commands share: option types, output
+paths, progress, message translation and line wrapping.
+
+This module imports only the standard library (and ``tqdm`` when a bar is actually shown), so
+building the parser, and so ``geartrain --help``, stays fast. The option types raise
+:class:`argparse.ArgumentTypeError`, which argparse reports as
+``geartrain CMD: error: argument --option: ...`` with exit status 2.
+
+>>> positive("--module")("3")
+3.0
+>>> finite("--shift")("nan")
+Traceback (most recent call last):
+...
+argparse.ArgumentTypeError: --shift nan is not a finite number
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import math
+import os
+import re
+import shutil
+import sys
+import textwrap
+import threading
+from collections.abc import Callable, Iterator, Mapping
+from fractions import Fraction
+from pathlib import Path
+
+# exit statuses, the same for every sub-command
+OK, CHECK_FAILED, BAD_INPUT, INTERNAL_ERROR = 0, 1, 2, 3
+
+
+def _float(name: str, text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{name} {text!r} is not a number") from None
+    if not math.isfinite(v):
+        raise argparse.ArgumentTypeError(f"{name} {text} is not a finite number")
+    return v
+
+
+def finite(name: str) -> Callable[[str], float]:
+    """An option type: any finite float."""
+
+    def parse(text: str) -> float:
+        return _float(name, text)
+
+    parse.__name__ = "number"
+    return parse
+
+
+def bounded(
+    name: str, low: float | None = None, high: float | None = None, *, low_open: bool = False,
+    high_open: bool = False, unit: str = "",
+) -> Callable[[str], float]:  # fmt: skip
+    """An option type: a finite float in ``[low, high]`` (``low_open``/``high_open``: open end).
+
+    >>> bounded("--friction", 0, 1, high_open=True)("1")
+    Traceback (most recent call last):
+    ...
+    argparse.ArgumentTypeError: --friction 1 is out of range; valid is 0 <= --friction < 1
+    """
+    lo = "" if low is None else f"{low:g} {'<' if low_open else '<='} "
+    hi = "" if high is None else f" {'<' if high_open else '<='} {high:g}"
+    valid = f"valid is {lo}{name}{hi}{f' ({unit})' if unit else ''}"
+
+    def parse(text: str) -> float:
+        v = _float(name, text)
+        if (low is not None and (v <= low if low_open else v < low)) or (
+            high is not None and (v >= high if high_open else v > high)
+        ):
+            raise argparse.ArgumentTypeError(f"{name} {text} is out of range; {valid}")
+        return v
+
+    parse.__name__ = "number"
+    return parse
+
+
+def positive(name: str, unit: str = "") -> Callable[[str], float]:
+    """An option type: a finite float > 0."""
+    return bounded(name, 0, low_open=True, unit=unit)
+
+
+def non_negative(name: str, unit: str = "") -> Callable[[str], float]:
+    """An option type: a finite float >= 0."""
+    return bounded(name, 0, unit=unit)
+
+
+def integer(name: str, low: int = 1, high: int | None = None) -> Callable[[str], int]:
+    """An option type: an integer in ``[low, high]``.
+
+    >>> integer("Z1")("0")
+    Traceback (most recent call last):
+    ...
+    argparse.ArgumentTypeError: Z1 0 is out of range; valid is an integer >= 1
+    """
+    valid = f"valid is an integer >= {low}" + ("" if high is None else f" and <= {high}")
+
+    def parse(text: str) -> int:
+        try:
+            v = int(text.strip())
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{name} {text!r} is not an integer") from None
+        if v < low or (high is not None and v > high):
+            raise argparse.ArgumentTypeError(f"{name} {text} is out of range; {valid}")
+        return v
+
+    parse.__name__ = "integer"
+    return parse
+
+
+def exact(name: str, text: str) -> Fraction:
+    """``text`` as an exact finite number (``1500``, ``2.5``, ``22/3``); ``ValueError`` naming
+    ``name`` otherwise (the caller turns it into its own error)."""
+    try:
+        v = Fraction(text.strip())
+    except (ValueError, ZeroDivisionError):
+        raise ValueError(f"{name} {text!r} is not a number (e.g. 1500, 2.5 or 22/3)") from None
+    try:
+        if math.isfinite(float(v)):
+            return v
+    except OverflowError:
+        pass
+    raise ValueError(f"{name} {text} is too large; valid is a finite number below 1e308")
+
+
+def output_file(suffixes: tuple[str, ...], name: str = "--output") -> Callable[[str], Path]:
+    """An option type for a file to write: its suffix is one of ``suffixes``, it is not a
+    directory and its directory exists and is writable (checked before any work starts)."""
+
+    def parse(text: str) -> Path:
+        p = Path(text)
+        if p.is_dir():
+            raise argparse.ArgumentTypeError(f"{name} {text!r} is a directory; give a file name")
+        if p.suffix.lower() not in suffixes:
+            raise argparse.ArgumentTypeError(
+                f"{name} {text!r} has the suffix {p.suffix or '(none)'!r}; valid are "
+                + ", ".join(suffixes)
+            )
+        parent = p.parent if str(p.parent) else Path(".")
+        if not parent.is_dir():
+            raise argparse.ArgumentTypeError(
+                f"{name} {text!r}: the directory {str(parent)!r} does not exist"
+            )
+        if not os.access(parent, os.W_OK) or (p.exists() and not os.access(p, os.W_OK)):
+            raise argparse.ArgumentTypeError(f"{name} {text!r} is not writable")
+        return p
+
+    parse.__name__ = "file name"
+    return parse
+
+
+def input_file(name: str = "FILE") -> Callable[[str], Path]:
+    """An option type for a file to read: it exists, is a file and is readable."""
+
+    def parse(text: str) -> Path:
+        p = Path(text)
+        if not p.exists():
+            raise argparse.ArgumentTypeError(f"{name} {text!r} does not exist")
+        if not p.is_file():
+            raise argparse.ArgumentTypeError(f"{name} {text!r} is not a file")
+        if not os.access(p, os.R_OK):
+            raise argparse.ArgumentTypeError(f"{name} {text!r} is not readable")
+        return p
+
+    parse.__name__ = "file name"
+    return parse
+
+
+def translate(message: str, names: Mapping[str, str]) -> str:
+    """``message`` with each API name of ``names`` (a regular expression) replaced by the CLI's
+    words; a name is replaced only as a whole word.
+
+    >>> translate("split='keep' needs x1", {r"split='(\\w+)'": r"--split \\1", "x1": "X1"})
+    '--split keep needs X1'
+    """
+    for api, cli in names.items():
+        message = re.sub(rf"(?<![\w.-]){api}(?![\w(])", cli, message)
+    return message
+
+
+def wrap(text: str, width: int | None = None) -> str:
+    """``text`` with every line longer than ``width`` (default: the terminal's, or 100) wrapped;
+    the continuation lines are indented past the line's own indent (past ``[FAIL] `` for a
+    finding), so tables and findings stay readable.
+
+    >>> print(wrap("[FAIL] a_long_finding margin -1: " + "word " * 8, width=40))
+    [FAIL] a_long_finding margin -1: word
+           word word word word word word
+           word
+    """
+    width = width or shutil.get_terminal_size((100, 24)).columns
+    width = max(width, 40)
+    out = []
+    for line in text.splitlines():
+        if len(line) <= width:
+            out.append(line)
+            continue
+        lead = line[: len(line) - len(line.lstrip())]
+        body = line.lstrip()
+        hang = lead + (" " * (body.index("]") + 2) if body.startswith("[") else "    ")
+        out.extend(
+            textwrap.wrap(
+                body,
+                width,
+                initial_indent=lead,
+                subsequent_indent=hang,
+                break_long_words=False,
+                break_on_hyphens=False,
+            )
+        )
+    return "\n".join(out)
+
+
+def show_progress() -> bool:
+    """Progress bars are shown only when stderr is a terminal."""
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
+@contextlib.contextmanager
+def progress_bar(
+    desc: str, total: int | None = None, delay: float = 1.0
+) -> Iterator[Callable[[int, int], None]]:
+    """A tqdm bar on stderr (off when stderr is not a terminal; shown after ``delay`` s) and its
+    ``(done, total)`` callback, the signature of the library's ``progress=`` parameters."""
+    if not show_progress():
+        yield lambda done, total: None
+        return
+    from tqdm import tqdm
+
+    bar = tqdm(total=total, desc=desc, file=sys.stderr, leave=False, unit="block", delay=delay)
+
+    def update(done: int, total: int) -> None:
+        bar.total = total
+        bar.n = done
+        bar.refresh()
+
+    try:
+        yield update
+    finally:
+        bar.close()
+
+
+@contextlib.contextmanager
+def busy(desc: str) -> Iterator[None]:
+    """A tqdm spinner with the elapsed time on stderr while a call without a progress callback
+    runs (off when stderr is not a terminal)."""
+    if not show_progress():
+        yield
+        return
+    from tqdm import tqdm
+
+    done = threading.Event()
+    bar = tqdm(
+        total=None,
+        desc=desc,
+        file=sys.stderr,
+        leave=False,
+        bar_format="{desc} {elapsed}",
+        delay=1.0,
+    )
+
+    def tick() -> None:
+        while not done.wait(0.25):
+            bar.refresh()
+
+    thread = threading.Thread(target=tick, daemon=True)
+    thread.start()
+    try:
+        yield
+    finally:
+        done.set()
+        thread.join()
+        bar.close()
