@@ -24,7 +24,7 @@ LAYERS = {
         ["involute", "report"],
         ["geometry", "meshing"],
         ["rack", "cutter"],
-        ["profile", "measure"],
+        ["profile", "measure", "checks"],
         ["generate"],
         ["outline"],
         ["mesh", "animate"],

@@ -1,0 +1,722 @@
+"""Layer 11, consumers: design search over gear pairs, in chunks, on every local core or a Dask
+cluster (issue 13).
+
+:func:`pairs` enumerates a candidate space (modules x helix angles x tooth pairs x profile
+shifts, or, at a given centre distance, the exact shift sum split by a rule), checks every
+candidate with the vectorised margins of :mod:`gears.checks` (the functions
+``GearPair.check()`` calls), keeps the feasible ones and returns the best ``top`` by the
+objective, or the Pareto front of two or three objectives.
+
+**One code path.** The flat candidate index ``0 .. N-1`` is cut into chunks of ``chunk_size``;
+one function (:func:`evaluate_chunk`) decodes a chunk, checks it and reduces it to its own
+top-k (or Pareto set) before anything leaves it. The chunks run on a thread pool of the local
+cores (numpy releases the GIL, as in :func:`gears.meshing.pair_geometry`) or, with
+``client=`` (a ``dask.distributed.Client``, its address, or the active client), as Dask tasks;
+the reductions are merged as they arrive, so memory never grows with N. Ties are broken on the
+candidate's parameters, so the answer does not depend on the chunk size or the scheduler.
+
+See ``docs/search.md``.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import sys
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from gears.checks import has_working_angle, pair_margins, proportional_split
+from gears.errors import GearError
+from gears.geometry import check_real, min_profile_shift, transverse_pressure_angle
+from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
+from gears.rack import BasicRack
+
+__all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs"]
+
+#: candidates per second per local thread assumed by the size check (docs/performance.md)
+LOCAL_RATE = 5.0e5
+#: default limit on the estimated time of a local search, seconds
+MAX_SECONDS = 600.0
+
+_KEYS = ("module", "helix_angle", "z1", "z2", "x1", "x2")
+_GEOMETRY = (
+    "ratio", "center_distance", "working_pressure_angle", "contact_ratio", "tip_diameter_1",
+    "tip_diameter_2", "sliding_1", "sliding_2", "sliding", "efficiency",
+)  # fmt: skip
+_MARGINS = (
+    "g1_undercut", "g1_tip_above_base", "g1_pointed_tip", "g1_tooth_height", "g2_undercut",
+    "g2_tip_above_base", "g2_pointed_tip", "g2_tooth_height", "contact_ratio_margin",
+    "tip_interference", "tip_interference_2",
+)  # fmt: skip
+_INTERNAL = (
+    "involute_interference", "trochoid_interference", "radial_interference",
+    "ring_tip_above_base",
+)  # fmt: skip
+_SPLITS = ("proportional", "keep")
+
+
+@dataclass(frozen=True)
+class Limits:
+    """What a feasible pair must meet (the parameters of ``GearPair.check()`` and more).
+
+    Attributes
+    ----------
+    min_contact_ratio : float
+        Transverse contact ratio at least this (``GearPair.check``'s default 1.1).
+    min_tip_land : float
+        Normal tip land at least this many modules (0.2).
+    allow_undercut : bool
+        Accept undercut gears (their ``undercut`` findings are then not required).
+    max_sliding : float or None
+        Largest specific sliding of either flank at most this.
+    """
+
+    min_contact_ratio: float = 1.1
+    min_tip_land: float = 0.2
+    allow_undercut: bool = False
+    max_sliding: float | None = None
+
+    def __post_init__(self) -> None:
+        check_real("min_contact_ratio", self.min_contact_ratio, 0.0, low_open=False)
+        check_real("min_tip_land", self.min_tip_land, 0.0, low_open=False)
+        if self.max_sliding is not None:
+            check_real("max_sliding", self.max_sliding, 0.0)
+
+
+@dataclass(frozen=True)
+class _Space:
+    """The candidate space, small and picklable (a Dask task carries it)."""
+
+    base: np.ndarray  # (n, 4): module, helix angle, z1, z2
+    x1: np.ndarray
+    x2: np.ndarray
+    center_distance: float | None
+    split: str
+    pressure_angle: float
+    rack: BasicRack
+    internal: bool
+    tip_shortening: bool
+    limits: Limits
+    objective: tuple[str, ...]
+    top: int | None
+    friction: float = 0.1
+    shift_range: tuple[float, float] = (-math.inf, math.inf)
+    columns: tuple[str, ...] = field(default=())
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        return (len(self.base), len(self.x1), len(self.x2))
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+    @property
+    def pareto(self) -> bool:
+        return len(self.objective) > 1
+
+
+def _dtype(columns: Sequence[str]) -> np.dtype:
+    return np.dtype([(c, np.int64 if c in ("z1", "z2") else np.float64) for c in columns])
+
+
+def evaluate_chunk(space: _Space, start: int, stop: int) -> tuple[np.ndarray, int, int]:
+    """Check candidates ``start .. stop-1`` of ``space`` and reduce them.
+
+    Returns ``(rows, feasible, checked)``: the chunk's best rows (its top-k, its Pareto set, or
+    all its feasible rows when ``top`` is None), the number of feasible candidates and the
+    number checked. This one function runs on local threads and as a Dask task.
+    """
+    idx = np.arange(start, stop, dtype=np.int64)
+    ib, i1, i2 = np.unravel_index(idx, space.shape)
+    # base rows are ordered module-major, then helix: a chunk holds a few (m, beta) groups,
+    # each checked with scalar m and beta (the trigonometry of the helix is then scalar)
+    mb = space.base[ib, 0] * 1e3 + space.base[ib, 1]
+    cuts = np.flatnonzero(mb[1:] != mb[:-1]) + 1
+    found = [
+        _check_group(space, ib[a:b], i1[a:b], i2[a:b])
+        for a, b in itertools.pairwise([0, *cuts.tolist(), len(idx)])
+    ]
+    found = [f for f in found if f is not None]
+    if not found:
+        return np.empty(0, _dtype(space.columns)), 0, stop - start
+    values = {c: np.concatenate([f[c] for f in found]) for c in space.columns}
+    n_ok = len(values["z1"])
+    pick = _preselect(values, space)
+    rows = np.empty(len(pick), _dtype(space.columns))
+    for c in space.columns:
+        rows[c] = values[c][pick]
+    return _reduce(rows, space), n_ok, stop - start
+
+
+def _check_group(space: _Space, ib, i1, i2) -> dict[str, np.ndarray] | None:
+    """The feasible candidates of one (module, helix) group, as columns."""
+    m, beta = (float(v) for v in space.base[ib[0], :2])
+    z1, z2 = space.base[ib, 2], space.base[ib, 3]
+    x1 = space.x1[i1]
+    if space.center_distance is None:
+        x2 = space.x2[i2]
+    else:
+        total = center_distance_shift_sum(z1, z2, m, space.center_distance, space.pressure_angle,
+                                          beta, space.internal)  # fmt: skip
+        total = np.asarray(total, float)
+        if space.split == "proportional":
+            x1 = proportional_split(z1, z2, total)
+        x2 = total + x1 if space.internal else total - x1
+    lo, hi = space.shift_range
+    keep = has_working_angle(z1, z2, x1, x2, space.pressure_angle, beta, space.internal)
+    keep &= (x1 >= lo - 1e-12) & (x1 <= hi + 1e-12) & (x2 >= lo - 1e-12) & (x2 <= hi + 1e-12)
+    lim = space.limits
+    if not lim.allow_undercut:  # cheap first: both gears' undercut finding (x >= x_min)
+        depth = space.rack.straight_flank_depth
+        pa = space.pressure_angle
+        keep &= x1 >= min_profile_shift(z1, pa, beta, depth)
+        if not space.internal:
+            keep &= x2 >= min_profile_shift(z2, pa, -beta, depth)
+    z1, z2, x1, x2 = (v[keep] for v in (z1, z2, x1, x2))
+    if not z1.size:
+        return None
+    with np.errstate(all="ignore"):
+        pm = pair_margins(
+            z1, z2, m, x1, x2, space.pressure_angle, beta, space.internal, space.rack,
+            space.tip_shortening, lim.min_contact_ratio, lim.min_tip_land,
+            allow_undercut=lim.allow_undercut, threads=1,
+        )  # fmt: skip
+    ok = pm.ok(lim.allow_undercut)
+    sliding = np.maximum(pm.sliding_1, pm.sliding_2)
+    if lim.max_sliding is not None:
+        ok &= sliding <= lim.max_sliding
+    if not ok.any():
+        return None
+    f = pm.findings()
+    n = len(z1)
+    values = {
+        "module": np.full(n, m), "helix_angle": np.full(n, beta), "z1": z1, "z2": z2,
+        "x1": x1, "x2": x2, "ratio": z2 / z1, "center_distance": pm.center_distance,
+        "working_pressure_angle": pm.working_pressure_angle,
+        "contact_ratio": pm.contact_ratio, "tip_diameter_1": pm.tip_diameter_1,
+        "tip_diameter_2": pm.tip_diameter_2, "sliding_1": pm.sliding_1,
+        "sliding_2": pm.sliding_2, "sliding": sliding,
+        "efficiency": mesh_efficiency(z1, z2, pm.contact_ratio, space.friction, space.internal),
+        "contact_ratio_margin": f["contact_ratio"],
+    }  # fmt: skip
+    out = {}
+    for c in space.columns:
+        v = values[c] if c in values else f[c.replace("g1_", "g1.").replace("g2_", "g2.")]
+        out[c] = np.broadcast_to(v, ok.shape)[ok]
+    return out
+
+
+def _preselect(values: dict[str, np.ndarray], space: _Space) -> np.ndarray:
+    """Indices that can reach the chunk's top-k: every row not worse than the k-th by the
+    first objective (ties kept), so the exact reduction sorts only those."""
+    n = len(values["z1"])
+    if space.pareto or space.top is None or n <= space.top:
+        return np.arange(n)
+    o = space.objective[0]
+    key = -values[o[1:]] if o.startswith("-") else values[o]
+    kth = np.partition(key, space.top - 1)[space.top - 1]
+    return np.flatnonzero(key <= kth)
+
+
+def _objectives(rows: np.ndarray, objective: Sequence[str]) -> list[np.ndarray]:
+    """Objective columns, each to be minimised (a '-' prefix maximises)."""
+    return [-rows[o[1:]] if o.startswith("-") else rows[o] for o in objective]
+
+
+def _order(rows: np.ndarray, objective: Sequence[str]) -> np.ndarray:
+    # lexsort: last key first; the parameters break ties, so the order is total
+    keys = [rows[k] for k in reversed(_KEYS)] + list(reversed(_objectives(rows, objective)))
+    return np.lexsort(keys)
+
+
+def _pareto(rows: np.ndarray, objective: Sequence[str]) -> np.ndarray:
+    """The rows no other row dominates (all objectives <=, one <), in objective order.
+
+    Rows with equal objective vectors stand or fall together. Two objectives: one sweep in
+    sorted order (a running minimum); three: each distinct vector against the front so far.
+    """
+    if len(rows) < 2:
+        return rows
+    rows = rows[_order(rows, objective)]
+    obj = np.stack(_objectives(rows, objective), axis=1)
+    vec, inverse = np.unique(obj, axis=0, return_inverse=True)
+    inverse = inverse.ravel()
+    if vec.shape[1] == 2:  # vec is sorted by (o1, o2): an earlier vector has o1 <=
+        prev = np.minimum.accumulate(np.concatenate([[np.inf], vec[:-1, 1]]))
+        good = prev > vec[:, 1]
+    else:  # sorted by o1, a vector can be dominated only by an earlier one: a 2-D query on
+        # (o2, o3) against the staircase of the earlier front, block by block
+        good = np.zeros(len(vec), bool)
+        st2, st3 = np.empty(0), np.empty(0)  # staircase: o2 rising, o3 falling
+        for b0 in range(0, len(vec), 512):
+            b2, b3 = vec[b0 : b0 + 512, 1], vec[b0 : b0 + 512, 2]
+            j = np.searchsorted(st2, b2, side="right") - 1
+            hit = (j >= 0) & (st3[np.maximum(j, 0)] <= b3) if st2.size else np.zeros(b2.size, bool)
+            le = (b2[None, :] <= b2[:, None]) & (b3[None, :] <= b3[:, None])
+            hit |= np.tril(le, -1).any(axis=1)
+            good[b0 : b0 + 512] = ~hit
+            c2, c3 = np.concatenate([st2, b2[~hit]]), np.concatenate([st3, b3[~hit]])
+            order = np.lexsort((c3, c2))
+            c2, c3 = c2[order], c3[order]
+            low = np.minimum.accumulate(np.concatenate([[np.inf], c3[:-1]]))
+            st2, st3 = c2[c3 < low], c3[c3 < low]
+    return rows[good[inverse]]
+
+
+def _reduce(rows: np.ndarray, space: _Space) -> np.ndarray:
+    if space.pareto:
+        return _pareto(rows, space.objective)
+    rows = rows[_order(rows, space.objective)]
+    return rows if space.top is None else rows[: space.top]
+
+
+class SearchResult:
+    """The ranked (or Pareto) pairs of a search: a numpy structured array with named columns.
+
+    ``result.table`` is the array (``result["z1"]``, ``len(result)``, iteration work on it);
+    ``result.pair(i)`` builds row ``i`` as a :class:`gears.GearPair`; ``to_pandas()`` and
+    ``to_parquet(path)`` export it.
+
+    Attributes
+    ----------
+    examined : int
+        Candidates checked.
+    feasible : int
+        Candidates that met every limit.
+    chunks : int
+    seconds : float
+        Wall time of the search.
+    """
+
+    def __init__(self, table, examined, feasible, chunks, seconds, space: _Space):
+        self.table = table
+        self.examined = int(examined)
+        self.feasible = int(feasible)
+        self.chunks = int(chunks)
+        self.seconds = float(seconds)
+        self._space = space
+
+    @property
+    def columns(self) -> tuple[str, ...]:
+        return tuple(self.table.dtype.names)
+
+    def __len__(self) -> int:
+        return len(self.table)
+
+    def __getitem__(self, key):
+        return self.table[key]
+
+    def __iter__(self):
+        return iter(self.table)
+
+    @property
+    def rate(self) -> float:
+        """Candidates checked per second."""
+        return self.examined / self.seconds if self.seconds > 0 else math.inf
+
+    def pair(self, i: int = 0):
+        """Row ``i`` as a :class:`gears.GearPair` (its ``check()`` gives the same margins)."""
+        from gears.gear import Gear
+        from gears.pair import GearPair
+
+        r = self.table[i]
+        sp = self._space
+        beta = float(r["helix_angle"])
+        common = {"module": float(r["module"]), "pressure_angle": sp.pressure_angle,
+                  "rack": sp.rack}  # fmt: skip
+        g1 = Gear(int(r["z1"]), profile_shift=float(r["x1"]), helix_angle=beta, **common)
+        g2 = Gear(int(r["z2"]), profile_shift=float(r["x2"]), internal=sp.internal,
+                  helix_angle=beta if sp.internal else -beta, **common)  # fmt: skip
+        return GearPair(g1, g2, sp.tip_shortening)
+
+    def to_pandas(self):
+        """The table as a ``pandas.DataFrame`` (needs pandas: ``pip install pandas``)."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise GearError("to_pandas needs pandas: pip install pandas") from None
+        return pd.DataFrame.from_records(self.table)
+
+    def to_parquet(self, path) -> None:
+        """Write the table to a Parquet file (needs pyarrow: ``pip install pyarrow``)."""
+        try:
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+        except ImportError:
+            raise GearError(
+                "to_parquet needs pyarrow: pip install pyarrow (or pandas with pyarrow)"
+            ) from None
+        pq.write_table(pa.table({c: self.table[c] for c in self.columns}), str(path))
+
+    def format(self, columns: Sequence[str] | None = None) -> str:
+        """A ranked text table (default: the parameters, a, eps, sliding, efficiency)."""
+        columns = columns or (*_KEYS, "center_distance", "contact_ratio", "sliding",
+                              "efficiency")  # fmt: skip
+        head = ["#", *columns]
+        body = []
+        for i, r in enumerate(self.table, 1):
+            cells = [str(i)]
+            for c in columns:
+                v = r[c]
+                cells.append(str(int(v)) if c in ("z1", "z2") else f"{float(v):.6g}")
+            body.append(cells)
+        widths = [max(len(x) for x in col) for col in zip(head, *body, strict=False)]
+        lines = ["  ".join(h.rjust(w) for h, w in zip(row, widths, strict=True))
+                 for row in [head, *body]]  # fmt: skip
+        return "\n".join(lines)
+
+    def __str__(self) -> str:
+        return (
+            f"{len(self)} pairs of {self.feasible} feasible among {self.examined} candidates "
+            f"({self.seconds:.3g} s)\n" + self.format()
+        )
+
+    def __repr__(self) -> str:
+        return (f"SearchResult({len(self)} rows, examined={self.examined}, "
+                f"feasible={self.feasible})")  # fmt: skip
+
+
+# --- input -------------------------------------------------------------------------------------
+
+
+def _values(name: str, value, low=None, high=None) -> np.ndarray:
+    """A scalar or a sequence of finite reals, validated."""
+    items = np.atleast_1d(np.asarray(value, dtype=object)).ravel().tolist()
+    if not items:
+        raise GearError(f"{name} is empty; give at least one value")
+    return np.array([check_real(name, v, low, high) for v in items], float)
+
+
+def _grid(name: str, value) -> np.ndarray:
+    """Profile shifts: a number, a sequence, or ``(low, high, step)``."""
+    if isinstance(value, tuple) and len(value) == 3:
+        lo, hi, step = (check_real(name, v) for v in value)
+        if step <= 0 or hi < lo:
+            raise GearError(f"{name} = {value}; valid is (low, high, step) with high >= low, "
+                            "step > 0")  # fmt: skip
+        n = math.floor((hi - lo) / step + 1e-9) + 1
+        return np.round(lo + step * np.arange(n), 12)
+    return _values(name, value)
+
+
+def _teeth(value) -> np.ndarray:
+    if isinstance(value, tuple) and len(value) == 2 and all(np.ndim(v) == 0 for v in value):
+        lo, hi = value
+        for v in (lo, hi):
+            if isinstance(v, bool) or not isinstance(v, int | np.integer) or v < 1:
+                raise GearError(f"teeth = {value}; valid is (z_min, z_max), integers >= 1")
+        if hi < lo:
+            raise GearError(f"teeth = {value}; valid is z_min <= z_max")
+        return np.arange(lo, hi + 1)
+    z = np.atleast_1d(np.asarray(value))
+    if z.size == 0 or z.dtype.kind not in "iu" or np.any(z < 1):
+        raise GearError(f"teeth = {value!r}; valid is (z_min, z_max) or integers >= 1")
+    return np.unique(z)
+
+
+def _objective(objective) -> tuple[str, ...]:
+    obj = (objective,) if isinstance(objective, str) else tuple(objective)
+    names = set(_KEYS) | set(_GEOMETRY) | set(_MARGINS)
+    if not 1 <= len(obj) <= 3 or not all(isinstance(o, str) for o in obj):
+        raise GearError(f"objective = {objective!r}; valid is a column name or 2-3 of them")
+    for o in obj:
+        if o.removeprefix("-") not in names:
+            raise GearError(
+                f"objective {o!r} is not a column; valid are {sorted(names)} ('-' maximises)"
+            )
+    return obj
+
+
+def _client(client):
+    """The Dask client to use: the given one, one at this address, the active one, or None."""
+    if client is False:
+        return None
+    if isinstance(client, str):
+        try:
+            from distributed import Client
+        except ImportError:
+            raise GearError("client='address' needs dask: pip install 'geartrain[scale]'") from None
+        return Client(client)
+    if client is not None:
+        if not hasattr(client, "submit"):
+            raise GearError(f"client must be a dask.distributed.Client or an address; "
+                            f"got {client!r}")  # fmt: skip
+        return client
+    if "distributed" in sys.modules:  # an active client implies distributed is imported
+        try:
+            from distributed import get_client
+
+            return get_client()
+        except (ValueError, ImportError):
+            return None
+    return None
+
+
+def _progress(progress) -> Callable[[int, int, int], None] | None:
+    """``progress`` as a callback ``(chunks done, chunks, candidates done)`` or None."""
+    if progress is False:
+        return None
+    if callable(progress):
+        return lambda done, total, n: progress(done, total)
+    if progress is None and not sys.stderr.isatty():
+        return None
+    if progress not in (None, True):
+        raise GearError(f"progress = {progress!r}; valid are None, True, False or a callable")
+    from tqdm import tqdm
+
+    state = {}
+
+    def update(done: int, total: int, n: int) -> None:
+        if "bar" not in state:
+            state["bar"] = tqdm(total=total, desc="pair search", unit="chunk", leave=False,
+                                file=sys.stderr)  # fmt: skip
+            state["t0"] = time.perf_counter()
+        bar = state["bar"]
+        bar.n = done
+        rate = n / max(time.perf_counter() - state["t0"], 1e-9)
+        bar.set_postfix_str(f"{rate:.3g} candidates/s", refresh=False)
+        bar.refresh()
+        if done >= total:
+            bar.close()
+
+    return update
+
+
+def _format_seconds(s: float) -> str:
+    if s < 120:
+        return f"{s:.0f} s"
+    if s < 7200:
+        return f"{s / 60:.0f} min"
+    if s < 2 * 86400:
+        return f"{s / 3600:.1f} h"
+    return f"{s / 86400:.1f} days"
+
+
+# --- the search ----------------------------------------------------------------------------------
+
+
+def pairs(
+    ratio=None, center_distance=None, module=1.0, teeth=(12, 60), shifts=(-0.5, 1.0, 0.1),
+    helix=0.0, *, ratio_tolerance=0.01, split="proportional", pressure_angle=None, rack=None,
+    internal=False, tip_shortening=True, limits=None, objective="sliding", top=20,
+    friction=0.1, chunk_size=1 << 16, client=None, threads=None, progress=None,
+    max_seconds=MAX_SECONDS,
+) -> SearchResult:  # fmt: skip
+    """Search gear pairs: every feasible candidate is checked as ``GearPair.check()`` does.
+
+    Parameters
+    ----------
+    ratio : float or None
+        Target gear ratio z2/z1; tooth pairs within ``ratio_tolerance`` (relative) are tried.
+    center_distance : float or None
+        None: x1 and x2 both run over ``shifts``. A number (mm): the shift sum that gives this
+        centre distance is solved exactly per tooth pair and split by ``split``
+        (``"proportional"``: the DIN 3992 style rule of ``GearPair.at_center_distance``;
+        ``"keep"``: x1 runs over ``shifts``, x2 takes the rest); both shifts must lie within
+        the range of ``shifts``.
+    module, helix : float or sequence
+        Normal modules (mm) and helix angles of gear 1 (degrees) to try.
+    teeth : (z_min, z_max) or sequence of int
+        Tooth counts for both gears (gear 2 a ring with ``internal=True``).
+    shifts : float, sequence or (low, high, step)
+        Profile-shift coefficients to try.
+    limits : Limits or dict
+        Contact ratio, tip land, undercut and sliding limits (:class:`Limits`).
+    objective : str or sequence of 2-3 str
+        A column to minimise (``"-contact_ratio"`` maximises): the best ``top`` rows are
+        returned. Two or three columns: the whole Pareto front (at most ``top`` of it, in
+        order of the first objective, when ``top`` is given).
+    top : int or None
+        Rows returned; None returns every feasible row (use ``to_parquet`` for large results).
+    chunk_size : int
+        Candidates per chunk (the answer does not depend on it).
+    client : dask.distributed.Client, str, None or False
+        Run the chunks as Dask tasks on this client (or at this scheduler address). None uses
+        the active client if there is one, else the local threads; False forces local.
+    threads : int or None
+        Local threads (default: :func:`gears.meshing.default_threads`).
+    progress : None, bool or callable
+        A tqdm bar (None: when stderr is a terminal; True: always), False for none, or a
+        callback ``progress(chunks_done, chunks)``.
+    max_seconds : float
+        A local search estimated to take longer is refused before any work (pass
+        ``client=``, narrow the space or raise the limit).
+
+    Returns
+    -------
+    SearchResult
+
+    Raises
+    ------
+    GearError
+        Bad input, or a local search estimated over ``max_seconds``; before any work.
+
+    Examples
+    --------
+    Joldasbekov §5.4's 12/28 pair (m = 1) among shifts 0 ... 0.4: the least sliding pair with
+    a contact ratio of at least 1.3.
+
+    >>> r = pairs(ratio=28 / 12, module=1, teeth=[12, 28], shifts=(0.0, 0.4, 0.1),
+    ...           limits={"min_contact_ratio": 1.3}, top=1, progress=False)
+    >>> int(r["z1"][0]), int(r["z2"][0]), float(r["x1"][0]), float(r["x2"][0])
+    (12, 28, 0.4, 0.3)
+    >>> round(float(r["contact_ratio"][0]), 4)
+    1.3046
+    """
+    t0 = time.perf_counter()
+    rack = rack if rack is not None else BasicRack.iso53()
+    if not isinstance(rack, BasicRack):
+        raise GearError(f"rack must be a BasicRack; got {rack!r}")
+    pa = rack.pressure_angle if pressure_angle is None else pressure_angle
+    pa = check_real("pressure_angle", pa, 0.0, 45.0)
+    if pa != rack.pressure_angle:
+        rack = rack.with_pressure_angle(pa)
+    modules = _values("module", module, 0.0)
+    helices = _values("helix", helix, -60.0, 60.0)
+    z = _teeth(teeth)
+    x = _grid("shifts", shifts)
+    if isinstance(limits, dict):
+        limits = Limits(**limits)
+    limits = limits if limits is not None else Limits()
+    if not isinstance(limits, Limits):
+        raise GearError(f"limits must be a Limits or a dict; got {limits!r}")
+    obj = _objective(objective)
+    if top is not None and (isinstance(top, bool) or not isinstance(top, int) or top < 1):
+        raise GearError(f"top = {top!r}; valid is an integer >= 1 or None")
+    if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
+        raise GearError(f"chunk_size = {chunk_size!r}; valid is an integer >= 1")
+    if split not in _SPLITS:
+        raise GearError(f"split = {split!r}; valid are {list(_SPLITS)}")
+    if split == "proportional" and internal and center_distance is not None:
+        raise GearError("split='proportional' is defined for external pairs; use 'keep'")
+    check_real("ratio_tolerance", ratio_tolerance, 0.0, low_open=False)
+    check_real("friction", friction, 0.0, 1.0, low_open=False)
+    check_real("max_seconds", max_seconds, 0.0)
+    internal = bool(internal)
+
+    z1, z2 = (v.ravel() for v in np.meshgrid(z, z, indexing="ij"))
+    keep = z2 > z1 if internal else np.ones(z1.shape, bool)
+    if ratio is not None:
+        r = check_real("ratio", ratio, 0.0)
+        keep &= np.abs(z2 / z1 - r) <= ratio_tolerance * r * (1 + 1e-12)
+    z1, z2 = z1[keep], z2[keep]
+    base = np.array([(m, b, a, c) for m in modules for b in helices for a, c in zip(z1, z2,
+                     strict=True)], float).reshape(-1, 4)  # fmt: skip
+    x1, x2 = x, x
+    if center_distance is not None:
+        a = check_real("center_distance", center_distance, 0.0)
+        m, b = base[:, 0], base[:, 1]
+        s = -1.0 if internal else 1.0
+        at = transverse_pressure_angle(pa, b)
+        a_d = np.abs(base[:, 2] + s * base[:, 3]) * m / (2 * np.cos(np.radians(b)))
+        base = base[a_d * np.cos(at) < a]  # the shift sum exists
+        if len(base):
+            total = center_distance_shift_sum(base[:, 2], base[:, 3], base[:, 0], a, pa,
+                                              base[:, 1], internal)  # fmt: skip
+            total = np.atleast_1d(total)
+            lo, hi = x.min(), x.max()
+            s_lo, s_hi = (2 * lo, 2 * hi) if not internal else (lo - hi, hi - lo)
+            base = base[(total >= s_lo - 1e-9) & (total <= s_hi + 1e-9)]
+        x2 = np.zeros(1)
+        if split != "keep":
+            x1 = np.zeros(1)
+    columns = (*_KEYS, *_GEOMETRY, *_MARGINS, *(_INTERNAL if internal else ()))
+    space = _Space(
+        base, x1, x2, None if center_distance is None else float(center_distance), split, pa,
+        rack, internal, bool(tip_shortening), limits, obj, top, float(friction),
+        (float(x.min()), float(x.max())), columns,
+    )  # fmt: skip
+    n = space.size
+    client = _client(client)
+    if threads is None:
+        threads = default_threads()
+    elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise GearError(f"threads = {threads!r}; valid is an integer >= 1")
+    if client is None:
+        estimate = n / (LOCAL_RATE * threads)
+        if estimate > max_seconds:
+            raise GearError(
+                f"the search has {n:,} candidates: about {_format_seconds(estimate)} on "
+                f"{threads} local thread(s) at {LOCAL_RATE:.3g} candidates/s each, over the "
+                f"limit max_seconds = {max_seconds:g} s; pass client= (a dask.distributed "
+                "Client or scheduler address), narrow the space, or raise max_seconds"
+            )
+    bounds = [(i, min(i + chunk_size, n)) for i in range(0, n, chunk_size)]
+    report = _progress(progress)
+    if client is None:
+        parts = _run_local(space, bounds, threads, report)
+    else:
+        parts = _run_dask(space, bounds, client, report)
+    table, feasible, examined = parts
+    return SearchResult(table, examined, feasible, len(bounds), time.perf_counter() - t0, space)
+
+
+def _merge(acc: np.ndarray | None, part: np.ndarray, space: _Space) -> np.ndarray:
+    if acc is None:
+        return part
+    return _reduce(np.concatenate([acc, part]), space)
+
+
+def _run_local(space, bounds, threads, report):
+    acc, feasible, examined, done = None, 0, 0, 0
+    if not bounds:
+        return np.empty(0, _dtype(space.columns)), 0, 0
+    if threads == 1:
+        results = (evaluate_chunk(space, *b) for b in bounds)
+        for rows, f, c in results:
+            acc, feasible, examined, done = _merge(acc, rows, space), feasible + f, examined + c, \
+                done + 1  # fmt: skip
+            if report:
+                report(done, len(bounds), examined)
+        return acc, feasible, examined
+    pool = ThreadPoolExecutor(threads, thread_name_prefix="gears.search")
+    try:
+        pending = set()
+        queue = iter(bounds)
+        for b in itertools.islice(queue, 2 * threads):
+            pending.add(pool.submit(evaluate_chunk, space, *b))
+        while pending:
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for fut in finished:
+                rows, f, c = fut.result()
+                acc = _merge(acc, rows, space)
+                feasible, examined, done = feasible + f, examined + c, done + 1
+                nxt = next(queue, None)
+                if nxt is not None:
+                    pending.add(pool.submit(evaluate_chunk, space, *nxt))
+            if report:
+                report(done, len(bounds), examined)
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+    return acc, feasible, examined
+
+
+def _run_dask(space, bounds, client, report):
+    from distributed import as_completed
+
+    if not bounds:
+        return np.empty(0, _dtype(space.columns)), 0, 0
+    spec = client.scatter(space, broadcast=True)
+    window = max(4, 4 * len(client.scheduler_info().get("workers", {}) or [0]))
+    queue = iter(bounds)
+    first = [client.submit(evaluate_chunk, spec, *b, pure=False) for b in
+             itertools.islice(queue, window)]  # fmt: skip
+    acc, feasible, examined, done = None, 0, 0, 0
+    stream = as_completed(first)
+    for fut in stream:
+        rows, f, c = fut.result()
+        fut.release()
+        acc = _merge(acc, rows, space)
+        feasible, examined, done = feasible + f, examined + c, done + 1
+        nxt = next(queue, None)
+        if nxt is not None:
+            stream.add(client.submit(evaluate_chunk, spec, *nxt, pure=False))
+        if report:
+            report(done, len(bounds), examined)
+    return acc, feasible, examined
