@@ -768,7 +768,7 @@ class Train:
         * ``coaxiality(a, b, ...)`` for every group of :attr:`coaxial_groups`: each path of
           real-gear meshes between two members of the group closes (two centre distances equal
           within ``tolerance`` mm; three or more form a closing polygon), margin in mm
-          (:func:`trains.conditions.closure_margin`);
+          (:func:`trains.conditions.closure_margin`); coupled members share one axis;
         * ``<member>.same_gear``: a member meshing twice with gears of equal tooth count and
           module is one gear, so their profile shift, helix, pressure angle and face width agree
           (a stepped gear, two different gears on one shaft, is not flagged);
@@ -816,14 +816,26 @@ class Train:
 
     def _coaxiality(self, group: tuple[str, ...], tolerance: float) -> Finding:
         name = f"coaxiality({', '.join(group)})"
+        shaft = {m: m for m in self._members}  # coupled members turn on one shaft: one axis
+
+        def axis(m: str) -> str:
+            while shaft[m] != m:
+                m = shaft[m]
+            return m
+
+        for r in self._relations:
+            if r.kind == "couple":
+                shaft[axis(r.a)] = axis(r.b)
         edges: dict[str, list[tuple[str, Relation]]] = {}
         for r in self._relations:
-            if r.kind == "mesh" and r.pair is not None:
-                edges.setdefault(r.a, []).append((r.b, r))
-                edges.setdefault(r.b, []).append((r.a, r))
-        inside = set(group)
+            a, b = axis(r.a), axis(r.b)
+            if r.kind == "mesh" and r.pair is not None and a != b:
+                edges.setdefault(a, []).append((b, r))
+                edges.setdefault(b, []).append((a, r))
+        axes = list(dict.fromkeys(axis(m) for m in group))
+        inside = set(axes)
         paths: list[tuple[str, list[Relation]]] = []
-        for start in group:
+        for start in axes:
             stack = [(start, [start], [])]
             while stack and len(paths) < 1000:
                 node, seen, rels = stack.pop()
@@ -831,7 +843,7 @@ class Train:
                     if nxt in seen or len(rels) >= 8:
                         continue
                     if nxt in inside:
-                        if group.index(nxt) > group.index(start):
+                        if axes.index(nxt) > axes.index(start):
                             paths.append((" - ".join([*seen, nxt]), [*rels, r]))
                         continue
                     stack.append((nxt, [*seen, nxt], [*rels, r]))

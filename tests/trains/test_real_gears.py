@@ -676,3 +676,14 @@ def test_closed_differential_friction_equals_per_mesh_mapping():
     assert a.torques == pytest.approx(b.torques, rel=1e-13)
     # every mesh loses, so the hoist is less efficient than its best mesh (sanity bound)
     assert a.efficiency < min(etas.values())
+
+
+def test_coaxiality_through_a_coupled_layshaft():
+    # the reverted train with its layshaft as two coupled members (w_lay1 = w_lay2: one shaft,
+    # one axis): the same chain in - lay - out, a_w 57 vs 58 mm at zero shift (derivation)
+    t = Train()
+    t.mesh("in", "lay1", gears=(Gear(17, 2), Gear(40, 2)))
+    t.couple("lay1", "lay2")
+    t.mesh("lay2", "out", gears=(Gear(20, 2), Gear(38, 2)))
+    t.coaxial("in", "out")
+    assert t.check()["coaxiality(in, out)"].margin == pytest.approx(-0.99, abs=1e-12)
