@@ -423,3 +423,28 @@ def test_cli_mesh(tmp_path, capsys):
         assert main(["mesh", "20", *bad]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_cli_pair_and_planetary_scenes(tmp_path, capsys):
+    from trains.cli import main
+
+    glb = tmp_path / "pair.glb"
+    assert main(["pair", "17", "29", "--helix", "15", "--scene", str(glb),
+                 "--tolerance", "0.1"]) == 0  # fmt: skip
+    assert sorted(trimesh.load(glb).graph.nodes_geometry) == ["gear1", "gear2"]
+    stage = tmp_path / "stage.3mf"
+    gif = tmp_path / "stage.gif"
+    argv = ["planetary", "18", "45", "108", "--planets", "3", "--module", "2"]
+    assert main([*argv, "--scene", str(stage), "--animate", str(gif), "--tolerance", "0.1"]) == 0
+    loaded = trimesh.load(stage)
+    assert {"sun", "ring", "planet"} <= set(loaded.geometry)
+    assert gif.read_bytes()[:6] == b"GIF89a"
+    capsys.readouterr()
+    # a missing directory or a wrong suffix is refused before any work (exit 2, one line)
+    for bad in (
+        ["--scene", str(tmp_path / "no" / "s.glb")],
+        ["--animate", str(tmp_path / "a.avi")],
+    ):
+        assert main([*argv, *bad]) == 2
+        captured = capsys.readouterr()
+        assert captured.out == "" and captured.err.count("\n") == 1

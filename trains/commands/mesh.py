@@ -15,42 +15,84 @@ from __future__ import annotations
 
 import argparse
 
-from gears import Gear, ShaperCutter
+from trains.commands._common import OK, finite, integer, non_negative, output_file, positive
 
 HELP = "3D mesh of one gear (spur, helical, herringbone, ring) to .stl/.3mf/.glb/.obj/.ply"
 
 FORMATS = (".stl", ".3mf", ".glb", ".obj", ".ply")
 
+NAMES = {
+    "profile_shift": "--shift",
+    "module": "--module",
+    "pressure_angle": "--pressure-angle",
+    "helix_angle": "--helix",
+    "face_width": "--face-width",
+    "tolerance": "--tolerance",
+    "backlash": "--backlash",
+    "bore": "--bore",
+    "rim": "--rim",
+    "method": "--method",
+    "z0": "--cutter-teeth",
+}
+"""The library's names in error messages -> this command's options (see trains.cli)."""
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("teeth", type=int, help="number of teeth")
-    parser.add_argument("--module", "-m", type=float, default=1.0, help="normal module, mm")
-    parser.add_argument("--shift", "-x", type=float, default=0.0, help="profile-shift coefficient")
-    parser.add_argument("--helix", type=float, default=0.0, help="helix angle, degrees (+ right)")
-    parser.add_argument("--pressure-angle", type=float, default=20.0, help="degrees")
-    parser.add_argument("--face-width", "-b", type=float, default=None,
-                        help="mm (default 10 modules)")  # fmt: skip
-    parser.add_argument("--herringbone", action="store_true", help="two opposite-hand halves")
+    parser.add_argument("teeth", type=integer("TEETH"), metavar="TEETH", help="number of teeth")
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
+    )
+    parser.add_argument(
+        "--shift", "-x", type=finite("--shift"), default=0.0, help="profile-shift coefficient"
+    )
+    parser.add_argument(
+        "--helix", type=finite("--helix"), default=0.0, help="helix angle, deg (+ right hand)"
+    )
+    parser.add_argument(
+        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
+        help="normal pressure angle, deg",
+    )  # fmt: skip
+    parser.add_argument(
+        "--face-width", "-b", type=positive("--face-width", "mm"), default=None,
+        help="face width, mm (default: 10 modules)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--herringbone", action="store_true", help="two opposite-hand halves meeting mid-face"
+    )
     parser.add_argument("--internal", action="store_true", help="an internal (ring) gear")
-    parser.add_argument("--rim", type=float, default=None, help="ring width outside the roots, mm")
+    parser.add_argument(
+        "--rim", type=positive("--rim", "mm"), default=None,
+        help="ring width outside the tooth roots, mm (with --internal)",
+    )  # fmt: skip
     parser.add_argument(
         "--method", choices=("analytic", "rack", "shaper"), default="analytic",
-        help="analytic envelope or simulated cutting (default analytic)",
+        help="analytic envelope or simulated cutting",
     )  # fmt: skip
-    parser.add_argument("--cutter-teeth", type=int, default=None, metavar="Z0",
-                        help="shaper cutter teeth (the gear is shaper-cut)")  # fmt: skip
-    parser.add_argument("--tolerance", type=float, default=0.01, help="mm (default 0.01)")
-    parser.add_argument("--backlash", type=float, default=0.0, help="pair normal backlash, mm")
-    parser.add_argument("--bore", type=float, default=None, help="bore diameter, mm")
     parser.add_argument(
-        "-o", "--output", default="gear.stl", help="file (.stl .3mf .glb .obj .ply)"
+        "--cutter-teeth", type=integer("--cutter-teeth"), default=None, metavar="Z0",
+        help="teeth of the shaper cutter (the gear is shaper-cut)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tolerance", type=positive("--tolerance", "mm"), default=0.01,
+        help="largest deviation of the outline and of the helix chords from the true ones, mm",
+    )  # fmt: skip
+    parser.add_argument(
+        "--backlash", type=non_negative("--backlash", "mm"), default=0.0,
+        help="normal backlash of the pair, mm (this gear takes half)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--bore", type=positive("--bore", "mm"), default=None, help="bore diameter, mm"
     )
+    parser.add_argument(
+        "-o", "--output", type=output_file(FORMATS), default="gear.stl",
+        help="file to write: .stl (binary), .3mf, .glb, .obj or .ply",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
-    from gears.export import check_output, save
+    from gears import Gear, ShaperCutter
+    from gears.export import save
 
-    out = check_output(args.output, FORMATS)
     cutter = None if args.cutter_teeth is None else ShaperCutter(args.cutter_teeth)
     g = Gear(
         args.teeth, args.module, args.pressure_angle, args.helix, args.shift,
@@ -61,11 +103,11 @@ def run(args: argparse.Namespace) -> int:
         b, args.tolerance, args.method, args.backlash, bore=args.bore,
         herringbone=args.herringbone, rim=args.rim,
     )  # fmt: skip
-    save(out, mesh)
+    out = save(args.output, mesh)
     kind = "herringbone" if args.herringbone else ("helical" if args.helix else "spur")
     print(
         f"wrote {out} ({kind}, {len(mesh.faces)} triangles, {out.stat().st_size} bytes, "
         f"volume {mesh.volume:.6g} mm^3, watertight {mesh.is_watertight}, "
         f"tolerance {args.tolerance:g} mm)"
     )
-    return 0
+    return OK

@@ -25,6 +25,7 @@ from trains.commands._common import (
     finite,
     integer,
     non_negative,
+    output_file,
     positive,
 )
 
@@ -32,6 +33,8 @@ if TYPE_CHECKING:
     from gears import Gear, GearPair
 
 HELP = "geometry, contact ratios and checks of a gear pair (external, internal, helical)"
+
+SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
 
 SPLITS = ("equal_sliding", "proportional", "keep")
 
@@ -101,6 +104,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--friction", type=bounded("--friction", 0, 1, high_open=True), default=0.1,
         help="friction coefficient for the mesh efficiency",
+    )  # fmt: skip
+    parser.add_argument(
+        "--scene", type=output_file(SCENE_FORMATS, "--scene"), default=None, metavar="FILE",
+        help="also write both gears in mesh in 3D (.glb .3mf .stl .obj .ply)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tolerance", type=positive("--tolerance", "mm"), default=0.02,
+        help="mesh tolerance of --scene, mm",
     )  # fmt: skip
 
 
@@ -213,4 +224,9 @@ def run(args: argparse.Namespace) -> int:
     )
     print()
     print(pair_report(pair, args.min_contact_ratio, args.min_tip_land, args.friction))
+    if args.scene is not None:
+        from gears.export import save
+
+        save(args.scene, pair.scene(tolerance=args.tolerance))
+        print(f"\nwrote {args.scene} (both gears in mesh, tolerance {args.tolerance:g} mm)")
     return OK if ok else CHECK_FAILED

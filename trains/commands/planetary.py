@@ -13,9 +13,18 @@ from __future__ import annotations
 
 import argparse
 
-from trains.commands._common import CHECK_FAILED, OK, integer, non_negative, positive
+from trains.commands._common import (
+    CHECK_FAILED,
+    OK,
+    integer,
+    non_negative,
+    output_file,
+    positive,
+)
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
+
+SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
 
 SCHEME_HELP = (
     "simple, stepped, external, internal or double-planet (or a textbook alias A, B, C, D); "
@@ -57,6 +66,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="with --coaxial: the common working centre distance in mm (default: the larger "
         "reference centre distance)",
     )  # fmt: skip
+    parser.add_argument(
+        "--scene", type=output_file(SCENE_FORMATS, "--scene"), default=None, metavar="FILE",
+        help="also write the stage in 3D, planets phased and instanced (.glb .3mf .stl .obj .ply)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--animate", type=output_file((".gif", ".mp4"), "--animate"), default=None,
+        metavar="FILE", help="also write the stage turning through one mesh cycle (.gif, .mp4)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
+        help="face width of the --scene gears, mm (default: 10 modules)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tolerance", type=positive("--tolerance", "mm"), default=0.02,
+        help="mesh tolerance of --scene and --animate, mm",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
@@ -82,4 +107,12 @@ def run(args: argparse.Namespace) -> int:
         stage = Planetary(sun, planet, ring, args.planets, args.module, **kw)
     ok = stage.check().ok
     print(stage.describe())
+    if args.scene is not None:
+        from gears.export import save
+
+        save(args.scene, stage.scene(face_width=args.face_width, tolerance=args.tolerance))
+        print(f"\nwrote {args.scene} (planets phased, tolerance {args.tolerance:g} mm)")
+    if args.animate is not None:
+        stage.animate(args.animate, tolerance=args.tolerance)
+        print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")
     return OK if ok else CHECK_FAILED
