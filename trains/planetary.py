@@ -1145,7 +1145,7 @@ class Planetary:
         for i, (phi, rot) in enumerate(zip(pl.planet2_angles, pl.planet2_rotations, strict=True)):
             t = math.radians(phi + c)
             centre = (pl.planet2_radius * math.cos(t), pl.planet2_radius * math.sin(t))
-            out.append((f"planet2_{i + 1}", "planet2", steps[1], centre,
+            out.append((f"outer{i + 1}", "planet2", steps[1], centre,
                         rot + turned("planet2"), 0.0))  # fmt: skip
         return out
 
@@ -1163,7 +1163,8 @@ class Planetary:
     def outlines(self, angle: float = 0.0, tolerance: float = 0.01, fixed: str = "ring") -> dict:
         """Every gear's 2D outline placed in mesh with the carrier turned by ``angle`` degrees
         (see :meth:`scene`): ``{"ring": ..., "sun": ..., "planet1": ..., ...}`` (shapely
-        Polygons; the ring with its default rim).
+        Polygons; the ring with its default rim). A stepped planet's ring-side step is
+        ``planet1'`` ..., the outer planets of a double-planet stage ``outer1`` ....
 
         Examples
         --------

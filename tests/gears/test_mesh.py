@@ -448,3 +448,24 @@ def test_cli_pair_and_planetary_scenes(tmp_path, capsys):
         assert main([*argv, *bad]) == 2
         captured = capsys.readouterr()
         assert captured.out == "" and captured.err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("args", "scheme", "nodes"),
+    [
+        ((26, (70, 21), 117), "stepped", 8),  # the stepped example of geartrain planetary
+        ((20, (20, 20), 80), "double-planet", 8),
+    ],
+)
+def test_stepped_and_double_planet_scenes_engage(args, scheme, nodes):
+    p = Planetary(*args, n_planets=3, module=1, scheme=scheme)
+    tol, b = 0.02, 4.0
+    sc = p.scene(face_width=b, tolerance=tol)
+    names = sorted(sc.graph.nodes_geometry)
+    assert len(names) == nodes and len(sc.geometry) == 4  # two planet geometries, instanced
+    solids = {n: _node_manifold(sc, n) for n in names}
+    for i, a in enumerate(names):  # no two gears overlap beyond the chord bound
+        for other in names[i + 1 :]:
+            assert _overlap(solids[a], solids[other]) <= tol * b * p.module, (a, other)
+    if scheme == "stepped":  # the ring-side step stands on the sun-side step
+        assert sc.graph["planet1'"][0][2, 3] - sc.graph["planet1"][0][2, 3] == pytest.approx(b)
