@@ -26,8 +26,11 @@ import sys
 import textwrap
 import threading
 from collections.abc import Callable, Iterator, Mapping
-from fractions import Fraction
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from fractions import Fraction
 
 # exit statuses, the same for every sub-command
 OK, CHECK_FAILED, BAD_INPUT, INTERNAL_ERROR = 0, 1, 2, 3
@@ -116,6 +119,8 @@ def integer(name: str, low: int = 1, high: int | None = None) -> Callable[[str],
 def exact(name: str, text: str) -> Fraction:
     """``text`` as an exact finite number (``1500``, ``2.5``, ``22/3``); ``ValueError`` naming
     ``name`` otherwise (the caller turns it into its own error)."""
+    from fractions import Fraction
+
     try:
         v = Fraction(text.strip())
     except (ValueError, ZeroDivisionError):
