@@ -118,12 +118,13 @@ def tooth_height_margin(tip_diameter, root_diameter, form_diameter, internal=Fal
 
 def gear_margins(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0,
                  internal=False, rack=None, tip_alteration=0.0, min_tip_land=0.2,
-                 form=None):  # fmt: skip
+                 form=None, root=None):  # fmt: skip
     """All margins of ``Gear.check()`` for rack-cut gears (arrays broadcast).
 
-    ``form`` gives the form-circle diameters when the caller has them (a shaper-cut gear);
-    by default they come from the rack: the closed form of :func:`gears.geometry.form_diameter`,
-    or :func:`undercut_form_diameter` for undercut external gears.
+    ``form`` and ``root`` give the form- and root-circle diameters when the caller has them (a
+    shaper-cut gear); by default they come from the rack: the closed form of
+    :func:`gears.geometry.form_diameter`, or :func:`undercut_form_diameter` for undercut
+    external gears.
 
     Examples
     --------
@@ -136,7 +137,7 @@ def gear_margins(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=
     internal = np.asarray(internal, bool)
     da = tip_diameter(z, m, x, helix_angle, rack.addendum, internal, tip_alteration)
     db = base_diameter(z, m, pressure_angle, helix_angle)
-    df = root_diameter(z, m, x, helix_angle, rack.dedendum, internal)
+    df = root_diameter(z, m, x, helix_angle, rack.dedendum, internal) if root is None else root
     x_min = min_profile_shift(z, pressure_angle, helix_angle, rack.straight_flank_depth)
     undercut = np.where(internal, np.inf, x - x_min)
     if form is None:

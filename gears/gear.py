@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+from gears.checks import gear_margins
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import (
@@ -348,17 +349,28 @@ class Gear:
 
     # --- checks -----------------------------------------------------------------------------
     def check(self, min_tip_land: float = 0.2) -> Report:
-        """Findings ``undercut``, ``pointed_tip`` (tip land >= ``min_tip_land`` m_n) and
-        ``tip_above_base``, each with a signed margin."""
+        """Findings ``undercut``, ``pointed_tip`` (tip land >= ``min_tip_land`` m_n),
+        ``tip_above_base`` and ``tooth_height`` (the tip above the root and the form circle),
+        each with a signed margin (from :func:`gears.checks.gear_margins`, the functions a
+        search over arrays of gears calls)."""
         return Report(self._findings(min_tip_land))
 
     def _findings(self, min_tip_land: float) -> list[Finding]:
         out = []
         m = self.module
+        try:
+            form = self.form_diameter
+        except GearError:  # the undercut fillet cuts the whole involute away
+            form = math.nan
+        g = gear_margins(
+            self.teeth, m, self.profile_shift, self.pressure_angle, self.helix_angle,
+            self.internal, self.rack, self.tip_alteration, min_tip_land, form,
+            self.root_diameter,
+        )  # fmt: skip
         if not self.internal and self.cutter is not None:
             out.extend(self.cutter.check(self).values())
         elif not self.internal:  # rings: cutter interference is checked on the pair
-            margin = self.profile_shift - self.min_profile_shift
+            margin = float(g.undercut)
             out.append(
                 Finding(
                     "undercut", margin,
@@ -367,7 +379,7 @@ class Gear:
                     unit="module",
                 )
             )  # fmt: skip
-        tip_margin = (self.tip_diameter - self.base_diameter) / 2
+        tip_margin = float(g.tip_above_base)
         out.append(
             Finding(
                 "tip_above_base", tip_margin,
@@ -376,11 +388,11 @@ class Gear:
             )
         )  # fmt: skip
         if tip_margin >= 0:
-            s_a = self.tip_thickness * math.cos(math.radians(self._tip_helix_angle()))
             need = min_tip_land * m
+            s_a = float(g.pointed_tip) + need
             out.append(
                 Finding(
-                    "pointed_tip", s_a - need,
+                    "pointed_tip", float(g.pointed_tip),
                     f"normal tip land s_an = {s_a:.4f} mm vs required {need:.4f} mm "
                     f"({min_tip_land:g} m_n)",
                 )
@@ -392,6 +404,15 @@ class Gear:
                     "tip inside the base circle: no involute tip land exists",
                 )
             )  # fmt: skip
+        where = "inside" if self.internal else "above"
+        form_text = "cut away by the undercut" if math.isnan(form) else f"{form:.4f} mm"
+        out.append(
+            Finding(
+                "tooth_height", float(g.tooth_height),
+                f"tip circle d_a = {self.tip_diameter:.4f} mm must lie {where} the root circle "
+                f"d_f = {self.root_diameter:.4f} mm and the form circle d_Ff = {form_text}",
+            )
+        )  # fmt: skip
         return out
 
     def _tip_helix_angle(self) -> float:

@@ -14,6 +14,7 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import brentq
 
+from gears.checks import form_lengths, tip_diameter_limits, tip_interference
 from gears.errors import GearError
 from gears.gear import Gear
 from gears.involute import inv
@@ -537,14 +538,13 @@ class GearPair:
     @cached_property
     def _form_lengths(self) -> tuple[float, float]:
         """Distances along the line of action from N1 to gear 1's form circle and from N2 to
-        gear 2's (0 for a rack): sqrt(r_Ff^2 - r_b^2)."""
+        gear 2's (0 for a rack): sqrt(r_Ff^2 - r_b^2) (:func:`gears.checks.form_lengths`)."""
         lengths = []
         for g in self.gears:
             if isinstance(g, Rack):
                 lengths.append(0.0)
                 continue
-            rb = g.base_diameter / 2
-            lengths.append(math.sqrt(max((g.form_diameter / 2) ** 2 - rb * rb, 0.0)))
+            lengths.append(float(form_lengths(g.form_diameter, g.base_diameter)))
         return lengths[0], lengths[1]
 
     @cached_property
@@ -563,17 +563,19 @@ class GearPair:
             angle = math.radians(self.working_pressure_angle)
             return math.inf, (p.pitch_point - u_f1) * math.sin(angle)
         rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
-        # a tip circle of radius sqrt(r_b^2 + (u - u_N)^2) cuts the line of action at u
-        limit1 = 2 * math.sqrt(rb1 * rb1 + (p.n2 - self._sigma * l2) ** 2)
-        limit2 = 2 * math.sqrt(rb2 * rb2 + (p.n2 - u_f1) ** 2)
-        return limit1, limit2
+        limit1, limit2 = tip_diameter_limits(rb1, rb2, p.n2, u_f1, l2, self.internal)
+        return float(limit1), float(limit2)
 
     def _interference_findings(self) -> list[Finding]:
         p = self.path_of_contact
         g1, g2 = self.gears
-        # gear 2's tip must meet gear 1's flank at or above gear 1's form circle
+        # gear 2's tip must meet gear 1's flank at or above gear 1's form circle; gear 1's tip
+        # (external) at least l2 before N2, (internal) within l2 of N2: gears.checks
         u_f1, l2 = self._form_lengths
-        margin1 = p.start - u_f1
+        n2 = 0.0 if self.is_rack else p.n2
+        margin1, margin2 = (
+            float(v) for v in tip_interference(p.start, p.end, n2, u_f1, l2, self.internal)
+        )
         clear = self.tip_diameter_limits[1]
         if self.is_rack:
             remedy = f"a rack addendum of at most {clear:.4f} mm clears it"
@@ -590,8 +592,6 @@ class GearPair:
         ]  # fmt: skip
         if self.is_rack:
             return out
-        # external: gear 1's tip point must stay at least l2 before N2; internal: within l2 of N2
-        margin2 = (p.n2 - p.end) - l2 if not self.internal else l2 - (p.end - p.n2)
         clear1 = self.tip_diameter_limits[0]
         out.append(
             Finding(

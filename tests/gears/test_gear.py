@@ -408,7 +408,7 @@ def test_helical_tip_land_is_normal():
 
 def test_gear_check_findings():
     r = Gear(12, 3, profile_shift=0.6).check()
-    assert list(r) == ["undercut", "tip_above_base", "pointed_tip"] and r.ok
+    assert list(r) == ["undercut", "tip_above_base", "pointed_tip", "tooth_height"] and r.ok
     ring = Gear(30, 1, internal=True).check()  # z < 34: ring tip inside its base circle
     assert "undercut" not in ring
     assert not ring["tip_above_base"].ok and not ring["pointed_tip"].ok
