@@ -75,6 +75,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="FILE", help="also write the stage turning through one mesh cycle (.gif, .mp4)",
     )  # fmt: skip
     parser.add_argument(
+        "--frames", type=integer("--frames"), default=48, metavar="N",
+        help="frames of the --animate picture (one mesh cycle)",
+    )  # fmt: skip
+    parser.add_argument(
         "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
         help="face width of the --scene gears, mm (default: 10 modules)",
     )  # fmt: skip
@@ -113,6 +117,6 @@ def run(args: argparse.Namespace) -> int:
         save(args.scene, stage.scene(face_width=args.face_width, tolerance=args.tolerance))
         print(f"\nwrote {args.scene} (planets phased, tolerance {args.tolerance:g} mm)")
     if args.animate is not None:
-        stage.animate(args.animate, tolerance=args.tolerance)
+        stage.animate(args.animate, frames=args.frames, tolerance=args.tolerance)
         print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")
     return OK if ok else CHECK_FAILED
