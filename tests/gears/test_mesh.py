@@ -483,3 +483,15 @@ def test_stepped_and_double_planet_scenes_engage(args, scheme, nodes):
             assert _overlap(solids[a], solids[other]) <= tol * b * p.module, (a, other)
     if scheme == "stepped":  # the ring-side step stands on the sun-side step
         assert sc.graph["planet1'"][0][2, 3] - sc.graph["planet1"][0][2, 3] == pytest.approx(b)
+
+
+@pytest.mark.parametrize("method", ["rack", "shaper"])
+def test_generated_teeth_export_as_cut(method):
+    # the simulated-cutting outline feeds the solid unchanged: a spur prism of that outline
+    g = Gear(14, 1, profile_shift=0.3)
+    m = g.mesh(face_width=3, tolerance=0.05, method=method)
+    _valid(m)
+    o = g.outline(0.05, method=method)
+    assert m.volume == pytest.approx(o.area * 3, rel=1e-9)  # prism volume, exact
+    sec = _section(m, 0.7)
+    assert _hausdorff(sec, o) <= 1e-9  # the section is the cut outline itself
