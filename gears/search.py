@@ -606,8 +606,10 @@ def pairs(
         r = check_real("ratio", ratio, 0.0)
         keep &= np.abs(z2 / z1 - r) <= ratio_tolerance * r * (1 + 1e-12)
     z1, z2 = z1[keep], z2[keep]
-    base = np.array([(m, b, a, c) for m in modules for b in helices for a, c in zip(z1, z2,
-                     strict=True)], float).reshape(-1, 4)  # fmt: skip
+    # module-major, then helix, then tooth pair (a chunk then holds few (m, beta) groups)
+    grid = np.meshgrid(modules, helices, np.arange(z1.size), indexing="ij")
+    base = np.stack([grid[0].ravel(), grid[1].ravel(), z1[grid[2].ravel()], z2[grid[2].ravel()]],
+                    axis=1).astype(float)  # fmt: skip
     x1, x2 = x, x
     if center_distance is not None:
         a = check_real("center_distance", center_distance, 0.0)
@@ -690,8 +692,8 @@ def _run_local(space, bounds, threads, report):
                 nxt = next(queue, None)
                 if nxt is not None:
                     pending.add(pool.submit(evaluate_chunk, space, *nxt))
-            if report:
-                report(done, len(bounds), examined)
+                if report:
+                    report(done, len(bounds), examined)
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
     return acc, feasible, examined
@@ -702,7 +704,7 @@ def _run_dask(space, bounds, client, report):
 
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
-    spec = client.scatter(space, broadcast=True)
+    spec = client.scatter(space, broadcast=True, hash=False)
     window = max(4, 4 * len(client.scheduler_info().get("workers", {}) or [0]))
     queue = iter(bounds)
     first = [client.submit(evaluate_chunk, spec, *b, pure=False) for b in

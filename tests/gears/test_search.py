@@ -1,0 +1,222 @@
+"""gears.search.pairs: the chunked pair search against brute force and textbook pairs.
+
+Reference values: brute force (``GearPair(...).check()`` on every candidate, an independent
+route), Joldasbekov §5.4 (12/28, x 0.3/0.2, m = 1: a_w = 20.46253, eps = 1.36264), KHK's
+profile-shifted example (12/24, x 0.6/0.36, m = 3: a_w = 56.4999 mm, alpha_w = 26.0886 deg).
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from gears import Gear, GearError, GearPair
+from gears.search import Limits, SearchResult, pairs
+
+
+def _feasible_by_brute_force(teeth, shifts, module=2.0, limits=None):
+    """{(z1, z2, x1, x2): report} of every candidate whose GearPair.check() holds."""
+    limits = limits or Limits()
+    out = {}
+    for z1, z2, x1, x2 in itertools.product(teeth, teeth, shifts, shifts):
+        try:
+            pair = GearPair(Gear(z1, module, profile_shift=x1), Gear(z2, module, profile_shift=x2))
+            report = pair.check(limits.min_contact_ratio, limits.min_tip_land)
+        except GearError:  # no working pressure angle, or no real gear: not a candidate
+            continue
+        if report.ok:
+            out[(z1, z2, round(x1, 9), round(x2, 9))] = report
+    return out
+
+
+def _column(name: str) -> str:
+    return name.replace(".", "_").replace("contact_ratio", "contact_ratio_margin")
+
+
+def test_feasible_set_and_margins_equal_brute_force():
+    # independent route: GearPair(...).check() on all 7 x 7 x 4 x 4 candidates (784)
+    teeth, shifts = [13, 16, 20, 27, 35, 44, 60], [-0.3, 0.0, 0.3, 0.6]
+    limits = Limits(min_contact_ratio=1.2, min_tip_land=0.25)
+    brute = _feasible_by_brute_force(teeth, shifts, limits=limits)
+    r = pairs(module=2, teeth=teeth, shifts=shifts, limits=limits, top=None, progress=False)
+    assert r.examined == 7 * 7 * 4 * 4
+    got = {(int(t["z1"]), int(t["z2"]), round(float(t["x1"]), 9), round(float(t["x2"]), 9)): t
+           for t in r.table}  # fmt: skip
+    assert set(got) == set(brute) and r.feasible == len(brute) > 100
+    for key, report in brute.items():
+        row = got[key]
+        for name, f in report.items():
+            assert row[_column(name)] == pytest.approx(f.margin, abs=1e-9), (key, name)
+    # the result's own pair view gives the same margins
+    p = r.pair(0)
+    assert p.check(1.2, 0.25)["tip_interference"].margin == pytest.approx(
+        r["tip_interference"][0], abs=1e-9
+    )
+
+
+def test_joldasbekov_pair_is_found():
+    # Joldasbekov §5.4, row 3: z 12/28, x 0.3/0.2, m = 1: a_w = 20.46253, eps = 1.36264
+    r = pairs(ratio=28 / 12, module=1, teeth=(10, 30), shifts=(0.0, 0.5, 0.1), top=None,
+              progress=False)  # fmt: skip
+    t = r.table
+    hit = t[(t["z1"] == 12) & (t["z2"] == 28) & np.isclose(t["x1"], 0.3) & np.isclose(t["x2"], 0.2)]
+    assert len(hit) == 1
+    assert hit["center_distance"][0] == pytest.approx(20.46253, abs=5e-6)
+    assert hit["contact_ratio"][0] == pytest.approx(1.36264, abs=5e-6)
+    assert hit["working_pressure_angle"][0] == pytest.approx(23.29917, abs=5e-6)
+
+
+def test_khk_pair_at_its_center_distance():
+    # KHK: 12/24, m = 3, x1 = 0.6 at a = 56.4999 mm gives x2 = 0.36, alpha_w = 26.0886 deg
+    r = pairs(ratio=2, center_distance=56.4999, module=3, teeth=(10, 30), shifts=(0.0, 1.0, 0.1),
+              split="keep", top=None, progress=False)  # fmt: skip
+    t = r.table
+    hit = t[(t["z1"] == 12) & np.isclose(t["x1"], 0.6)]
+    assert len(hit) == 1 and int(hit["z2"][0]) == 24
+    assert hit["x2"][0] == pytest.approx(0.36, abs=1e-4)
+    assert hit["center_distance"][0] == pytest.approx(56.4999, abs=1e-9)  # solved exactly
+    assert hit["working_pressure_angle"][0] == pytest.approx(26.0886, abs=5e-5)
+    # every row sits at the requested centre distance
+    assert np.allclose(t["center_distance"], 56.4999, atol=1e-9)
+
+
+def test_proportional_split_matches_at_center_distance():
+    # independent route: GearPair.at_center_distance(..., split="proportional") per tooth pair
+    r = pairs(ratio=2.5, center_distance=43.0, module=2, teeth=(8, 40), shifts=(-0.5, 1.0, 0.5),
+              split="proportional", limits={"allow_undercut": True, "min_contact_ratio": 1.0},
+              top=None, progress=False)  # fmt: skip
+    assert len(r) > 0
+    for row in r.table:
+        p = GearPair.at_center_distance(Gear(int(row["z1"]), 2), Gear(int(row["z2"]), 2), 43.0,
+                                        split="proportional")  # fmt: skip
+        assert row["x1"] == pytest.approx(p.g1.profile_shift, abs=1e-12)
+        assert row["x2"] == pytest.approx(p.g2.profile_shift, abs=1e-12)
+
+
+def test_chunk_size_and_threads_do_not_change_the_answer():
+    kw = dict(ratio=3.2, module=[2, 2.5], teeth=(12, 60), shifts=(-0.4, 1.0, 0.1),
+              progress=False)  # fmt: skip
+    a = pairs(**kw, top=15, chunk_size=1 << 16, threads=1)
+    b = pairs(**kw, top=15, chunk_size=97, threads=2)
+    assert a.chunks == 1 and b.chunks > 20
+    assert np.array_equal(a.table, b.table) and a.feasible == b.feasible
+    # a Pareto front of two objectives, too
+    c = pairs(**kw, objective=("sliding", "-contact_ratio"), top=None, chunk_size=1 << 16)
+    d = pairs(**kw, objective=("sliding", "-contact_ratio"), top=None, chunk_size=131)
+    assert np.array_equal(c.table, d.table) and len(c) > 3
+
+
+def test_top_k_is_the_head_of_the_full_ranking():
+    # brute force on the result itself: every feasible row, sorted, starts with the top 10
+    kw = dict(ratio=3.2, module=2, teeth=(12, 60), shifts=(-0.4, 1.0, 0.1), progress=False)
+    every = pairs(**kw, top=None, objective="sliding")
+    best = pairs(**kw, top=10, objective="sliding", chunk_size=50)
+    assert np.array_equal(every.table[:10], best.table)
+    assert np.all(np.diff(every["sliding"]) >= 0)
+
+
+def test_pareto_front_by_brute_force():
+    # independent route: the O(n^2) definition on all feasible rows
+    kw = dict(ratio=2.0, module=2, teeth=(14, 40), shifts=(-0.2, 0.8, 0.2), progress=False)
+    every = pairs(**kw, top=None)
+    o = np.stack([every["sliding"], -every["contact_ratio"], every["center_distance"]], axis=1)
+    dominated = [bool(np.any(np.all(o <= v, axis=1) & np.any(o < v, axis=1))) for v in o]
+    expected = {tuple(r) for r, d in zip(every.table[["z1", "z2", "x1", "x2"]].tolist(),
+                                         dominated, strict=True) if not d}  # fmt: skip
+    front = pairs(**kw, objective=("sliding", "-contact_ratio", "center_distance"), top=None,
+                  chunk_size=200)  # fmt: skip
+    assert {tuple(r) for r in front.table[["z1", "z2", "x1", "x2"]].tolist()} == expected
+
+
+def test_local_and_dask_cluster_agree():
+    from distributed import Client, LocalCluster
+
+    kw = dict(ratio=3.2, module=[2, 3], teeth=(12, 50), shifts=(-0.4, 1.0, 0.1),
+              progress=False, top=12, chunk_size=200)  # fmt: skip
+    local = pairs(**kw, client=False)
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                      dashboard_address=None) as cluster, Client(cluster) as client:  # fmt: skip
+        remote = pairs(**kw, client=client)
+        active = pairs(**kw)  # the active client is picked up
+        assert active.chunks == remote.chunks
+    assert remote.chunks > 2
+    assert np.array_equal(local.table, remote.table) and local.feasible == remote.feasible
+    assert np.array_equal(local.table, active.table)
+
+
+def test_progress_callback_and_off(capsys):
+    seen = []
+    r = pairs(ratio=2, module=2, teeth=(14, 40), chunk_size=500, progress=lambda d, n: seen.append(
+        (d, n)))  # fmt: skip
+    assert seen[-1] == (r.chunks, r.chunks) and len(seen) == r.chunks
+    pairs(ratio=2, module=2, teeth=(14, 40), progress=False)
+    assert capsys.readouterr().err == ""
+
+
+def test_oversized_local_search_is_refused_before_work():
+    # 4 modules x 496^2 tooth pairs x 1501^2 shift pairs = 2,217,097,176,064 candidates
+    with pytest.raises(GearError, match=r"has 2,217,097,176,064 candidates.*days.*client="):
+        pairs(module=[1, 2, 3, 4], teeth=(5, 500), shifts=(-1.0, 2.0, 0.002))
+    # a limit can be raised
+    with pytest.raises(GearError, match=r"max_seconds = 0\.001"):
+        pairs(ratio=2, module=2, teeth=(14, 400), max_seconds=0.001)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"module": -1}, "module = -1"),
+        ({"helix": 70}, "helix = 70"),
+        ({"teeth": (0, 10)}, "teeth"),
+        ({"objective": "speed"}, "objective 'speed' is not a column"),
+        ({"top": 0}, "top = 0"),
+        ({"split": "half"}, "split = 'half'"),
+        ({"shifts": (1.0, 0.0, 0.1)}, "shifts"),
+        ({"chunk_size": 0}, "chunk_size = 0"),
+        ({"limits": {"min_contact_ratio": -1}}, "min_contact_ratio"),
+        ({"client": 3}, "client must be"),
+    ],
+)
+def test_bad_input_is_refused(kwargs, match):
+    with pytest.raises(GearError, match=match):
+        pairs(**{"ratio": 2, "progress": False, **kwargs})
+
+
+def test_exports(tmp_path):
+    r = pairs(ratio=2, module=2, teeth=(14, 30), top=5, progress=False)
+    assert isinstance(r, SearchResult) and "z1" in r.columns and len(str(r).splitlines()) == 7
+    try:
+        import pandas  # noqa: F401
+    except ImportError:
+        with pytest.raises(GearError, match="pip install pandas"):
+            r.to_pandas()
+    else:
+        assert list(r.to_pandas()["z1"]) == list(r["z1"])
+    try:
+        import pyarrow.parquet as pq
+    except ImportError:
+        with pytest.raises(GearError, match="pip install pyarrow"):
+            r.to_parquet(tmp_path / "r.parquet")
+    else:
+        r.to_parquet(tmp_path / "r.parquet")
+        assert pq.read_table(tmp_path / "r.parquet").column("z1").to_pylist() == list(r["z1"])
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    teeth=st.lists(st.integers(8, 70), min_size=2, max_size=4, unique=True),
+    shifts=st.lists(
+        st.sampled_from([-0.5, -0.2, 0.0, 0.1, 0.4, 0.7, 1.0]), min_size=1, max_size=3, unique=True
+    ),
+    chunk=st.integers(1, 64),
+)
+def test_random_small_spaces_agree_with_brute_force(teeth, shifts, chunk):
+    brute = _feasible_by_brute_force(teeth, shifts)
+    r = pairs(module=2, teeth=teeth, shifts=shifts, top=None, chunk_size=chunk, progress=False)
+    got = {(int(t["z1"]), int(t["z2"]), round(float(t["x1"]), 9), round(float(t["x2"]), 9))
+           for t in r.table}  # fmt: skip
+    assert got == set(brute)
