@@ -337,12 +337,13 @@ def test_planetary_glb_stores_one_planet_and_3mf_keeps_names(tmp_path):
     glb = save(tmp_path / "stage.glb", sc)
     back = trimesh.load(glb)
     assert len(back.geometry) == 3  # sun, ring, ONE planet
-    assert len(back.graph.nodes_geometry) == 5
+    names = ["planet1", "planet2", "planet3", "ring", "sun"]
+    assert sorted(back.graph.nodes_geometry) == names
     single = sum(save(tmp_path / f"{k}.glb", sc.geometry[k]).stat().st_size for k in sc.geometry)
     assert glb.stat().st_size <= 1.2 * single  # the target
     m3f = trimesh.load(save(tmp_path / "stage.3mf", sc))
     assert {"sun", "ring", "planet"} <= set(m3f.geometry)
-    assert len(m3f.graph.nodes_geometry) == 5
+    assert sorted(m3f.graph.nodes_geometry) == names  # one named object per gear
     assert m3f.volume == pytest.approx(sc.volume, rel=1e-6)
 
 
