@@ -65,7 +65,7 @@ def test_cli_profile_writes_files(tmp_path, capsys):
     assert main([*args, "--tolerance", "0.01", "-o", str(out)]) == 0
     assert out.read_text().count("<path") == 1 and "shaper" in capsys.readouterr().out
     assert main(["profile", "40", "--internal", "--cutter-teeth", "40", "-o", str(out)]) == 2
-    assert "z0 < z" in capsys.readouterr().err
+    assert "--cutter-teeth < z" in capsys.readouterr().err  # the CLI names its option (issue 11)
 
 
 def test_plots_render(tmp_path):
