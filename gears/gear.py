@@ -23,6 +23,7 @@ from gears.geometry import (
     half_angle_at_reference,
     min_profile_shift,
     over_pins,
+    pin_contact_diameter,
     pointed_tip_diameter,
     reference_diameter,
     root_diameter,
@@ -116,6 +117,28 @@ class Gear:
             if not isinstance(self.cutter, ShaperCutter):
                 raise GearError(f"cutter must be a ShaperCutter or None; got {self.cutter!r}")
             _ = self._shaper_tool  # the cutter must fit this gear: a clear error now
+        self._require_real_dimensions()
+
+    def _require_real_dimensions(self) -> None:
+        """Refuse a gear no blank can carry: a root or tip diameter <= 0, or a tip at or below
+        the root (a merely bad tooth, e.g. a tip below the form circle, is a finding)."""
+        da, df = self.tip_diameter, self.root_diameter
+        s = -1.0 if self.internal else 1.0
+        zc = self.reference_diameter / (2 * self.module)  # d / (2 m_n)
+        ha, hf, k = self.rack.addendum, self.rack.dedendum, self.tip_alteration
+        where = f"z = {self.teeth}, m = {self.module:g}"
+        if (da - df) * s <= 0:  # tip at or below the root: k <= -(h_a + h_f)
+            raise GearError(
+                f"tip_alteration = {k:g} puts the tip (d_a = {da:.4f} mm) at or below the root "
+                f"(d_f = {df:.4f} mm) of {where}; valid is tip_alteration > {-(ha + hf):g}"
+            )
+        if min(da, df) <= 0:
+            lowest = (ha + k - zc) if self.internal else (hf - zc)
+            which = "tip" if self.internal else "root"
+            raise GearError(
+                f"profile_shift = {self.profile_shift:g} gives {where} a {which} diameter of "
+                f"{min(da, df):.4f} mm; valid is profile_shift > {lowest:.4f}"
+            )
 
     # --- basic quantities ------------------------------------------------------------------
     @property
@@ -202,7 +225,8 @@ class Gear:
     def tooth_thickness(self, diameter):
         """Transverse arc tooth thickness at ``diameter`` (mm; array in, array out).
 
-        Raises :class:`GearError` for a diameter inside the base circle.
+        Raises :class:`GearError` for a diameter inside the base circle or past the pointed tip
+        (no thickness exists there).
         """
         return tooth_thickness(
             diameter, self.teeth, self.module, self.profile_shift, self.pressure_angle,
@@ -222,8 +246,14 @@ class Gear:
     @property
     def tip_thickness(self) -> float:
         """Transverse arc thickness at the tip circle s_at (negative: the flanks cross below the
-        tip, the tooth is pointed). Raises for a tip inside the base circle."""
-        return float(self.tooth_thickness(self.tip_diameter))
+        tip, the tooth is pointed: a signed margin, not a size). Raises for a tip inside the base
+        circle."""
+        return float(
+            tooth_thickness(
+                self.tip_diameter, self.teeth, self.module, self.profile_shift,
+                self.pressure_angle, self.helix_angle, self.internal, signed=True,
+            )
+        )  # fmt: skip
 
     @cached_property
     def pointed_tip_diameter(self) -> float:
@@ -313,6 +343,25 @@ class Gear:
         """Dimension over two pins (spur) or balls (helical) of ``pin_diameter`` mm; between
         pins for an internal gear (standards.md §1.9)."""
         dp = check_real("pin_diameter", pin_diameter, 0.0)
+        dc = float(
+            pin_contact_diameter(
+                dp, self.teeth, self.module, self.profile_shift, self.pressure_angle,
+                self.helix_angle, self.internal,
+            )
+        )  # fmt: skip
+        low, high = sorted((self.form_diameter, self.tip_diameter))
+        if not low <= dc <= high:
+            where = (
+                "is too small to reach the involute"
+                if dc == 0
+                else (f"would touch the flanks at d = {dc:.4f} mm, off the involute")
+            )
+            raise GearError(
+                f"pin_diameter = {dp:g} mm {where} (it runs from d = {low:.4f} to {high:.4f} "
+                "mm); choose a pin that touches it there"
+                + ("" if self.internal or self.helix_angle else
+                   f", e.g. ideal_pin_diameter() = {self.ideal_pin_diameter():.4f} mm")
+            )  # fmt: skip
         return float(
             over_pins(
                 dp, self.teeth, self.module, self.profile_shift, self.pressure_angle,
@@ -423,7 +472,7 @@ class Gear:
     def outline(
         self, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
         bore: float | None = None, rim: float | None = None, angle: float = 0.0,
-        center=(0.0, 0.0), cutter=None,
+        center=(0.0, 0.0), cutter=None, progress=None,
     ):  # fmt: skip
         """Transverse tooth outline as a shapely Polygon (see :func:`gears.profile.outline`,
         :func:`gears.generate.rack_outline`, :func:`gears.generate.shaper_outline`).
@@ -432,9 +481,14 @@ class Gear:
         deviation from the exact curves in mm; ``backlash`` the pair's normal backlash (this
         gear takes half); ``bore`` a hole (external); ``rim`` the ring width (internal);
         ``cutter`` a :class:`gears.cutter.ShaperCutter` (for ``"shaper"``, and for
-        ``"analytic"`` to draw that shaper's exact envelope instead of the rack's).
+        ``"analytic"`` to draw that shaper's exact envelope instead of the rack's);
+        ``progress(done, total)`` is called as a simulation advances. The finest tolerance is
+        :data:`gears.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
+        tolerance that fits.
         """
-        return gear_outline(self, tolerance, method, backlash, bore, rim, angle, center, cutter)
+        return gear_outline(
+            self, tolerance, method, backlash, bore, rim, angle, center, cutter, progress
+        )
 
     def mesh(
         self, face_width: float | None = None, tolerance: float = 0.01, method: str = "analytic",

@@ -38,10 +38,11 @@ from gears.measure import thickness_on
 from gears.profile import (
     ShaperProfile,
     ToothProfile,
-    _check_tolerance,
     _refuse_protuberance,
     arc_segments,
     assemble,
+    check_size,
+    check_tolerance,
     circle_points,
     involute_rolls,
     rim_width,
@@ -185,11 +186,31 @@ def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
     return np.array(out), float(need[-1])
 
 
-def _space(prof: ToothProfile, tolerance: float) -> shapely.Polygon:
+#: Largest simulation, in tool vertices placed (positions x tool polygon): about 30 s of
+#: shapely unions on one core. Work grows as 1/tolerance (docs/profiles.md, "Bounded work").
+MAX_PLACED_VERTICES = 20_000_000
+_UNION_CHUNKS = 32
+
+
+def _union_positions(tool, phis, place, progress=None) -> shapely.Polygon:
+    """Union of the tool polygon ``tool`` placed at the angles ``phis`` (``place(tool, phis)``),
+    in chunks of positions so memory stays bounded; ``progress(done, total)`` after each chunk."""
+    chunks = np.array_split(np.asarray(phis), min(_UNION_CHUNKS, len(phis)))
+    parts = []
+    for i, chunk in enumerate(chunks):
+        parts.append(shapely.union_all(shapely.polygons(place(tool, chunk))))
+        if progress is not None:
+            progress(i + 1, len(chunks))
+    return shapely.union_all(parts)
+
+
+def _space(prof: ToothProfile, tolerance: float, progress=None) -> shapely.Polygon:
     """Union of all rack-tool positions: one tooth space, centred on +y."""
     tool = rack_tool_polygon(prof, tolerance)
-    rings = prof.tool.place(tool, rack_positions(prof, tolerance))
-    return shapely.union_all(shapely.polygons(rings))
+    phis = rack_positions(prof, tolerance)
+    what = f"the rack simulation of z = {prof.z}"
+    check_size(len(tool) * len(phis), what, tolerance, MAX_PLACED_VERTICES)
+    return _union_positions(tool, phis, prof.tool.place, progress)
 
 
 def _pattern(space, z: int, angle: float):
@@ -212,17 +233,20 @@ def _pattern(space, z: int, angle: float):
 
 def rack_outline(
     gear, tolerance: float = 0.001, backlash: float = 0.0, bore: float | None = None,
-    angle: float = 0.0, center=(0.0, 0.0),
+    angle: float = 0.0, center=(0.0, 0.0), progress=None,
 ) -> shapely.Polygon:  # fmt: skip
     """Outline of an external ``gear`` cut by its rack cutter (simulated generation).
 
-    Parameters are those of :func:`gears.profile.outline`. The result reproduces the undercut
-    and pointed tips exactly as the tool leaves them; it agrees with the analytic outline within
-    the tolerance (tests/gears/test_generate.py).
+    Parameters are those of :func:`gears.profile.outline`, plus ``progress``, a callable
+    ``progress(done, total)`` called as the tool positions are united (the long part). The
+    result reproduces the undercut and pointed tips exactly as the tool leaves them; it agrees
+    with the analytic outline within the tolerance (tests/gears/test_generate.py).
 
     Raises
     ------
     GearError
+        Also when the work (tool vertices placed) would exceed :data:`MAX_PLACED_VERTICES`; the
+        message names the coarsest tolerance that fits.
         For an internal gear (a rack cannot cut a ring).
 
     Examples
@@ -232,7 +256,7 @@ def rack_outline(
     >>> p.is_valid, round(p.area / (math.pi * 10**2), 2)
     (True, 0.98)
     """
-    tol = _check_tolerance(tolerance)
+    tol = check_tolerance(tolerance)
     _refuse_protuberance(gear)
     if gear.internal:
         raise GearError(
@@ -240,7 +264,7 @@ def rack_outline(
             "rack-limit outline of a shaper-cut ring)"
         )
     prof = ToothProfile(gear, backlash)
-    space = _space(prof, tol)
+    space = _space(prof, tol, progress)
     if space.geom_type != "Polygon":
         raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
     blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
@@ -384,18 +408,25 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     return np.concatenate([-half[:0:-1], half])
 
 
-def _shaper_space(prof, tolerance: float) -> shapely.Polygon:
+def _shaper_space(prof, tolerance: float, progress=None) -> shapely.Polygon:
     """Union of all shaper-cutter positions: one tooth space, centred on +y."""
+    what = f"the shaper simulation of z = {prof.z} (cutter z0 = {prof.tool.z0})"
+    coarse = 100 * tolerance  # the position rule itself is costly at fine tolerances: estimate
+    if coarse < 0.01 * prof.gear.module:  # from a coarser run (both counts grow as tol^-1/2)
+        n = len(shaper_tool_polygon(prof, coarse)) * len(shaper_positions(prof, coarse))
+        check_size(n * coarse / tolerance, what, tolerance, MAX_PLACED_VERTICES)
     tooth = shaper_tool_polygon(prof, tolerance)
     phis = shaper_positions(prof, tolerance)
-    return shapely.union_all(shapely.polygons(prof.tool.place(tooth, phis)))
+    check_size(len(tooth) * len(phis), what, tolerance, MAX_PLACED_VERTICES)
+    return _union_positions(tooth, phis, prof.tool.place, progress)
 
 
 def shaper_outline(
     gear, tolerance: float = 0.001, backlash: float = 0.0, bore: float | None = None,
-    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0), cutter=None,
+    rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0), cutter=None, progress=None,
 ) -> shapely.Polygon:  # fmt: skip
-    """Outline of ``gear`` cut by a shaper (pinion-type) cutter, simulated.
+    """Outline of ``gear`` cut by a shaper (pinion-type) cutter, simulated (``progress`` as in
+    :func:`rack_outline`; the work is bounded the same way).
 
     The cutter (:class:`gears.cutter.ShaperCutter`; default
     :meth:`~gears.cutter.ShaperCutter.default_for`) turns with the work at the cutting centre
@@ -418,12 +449,12 @@ def shaper_outline(
     >>> p.is_valid, len(p.interiors)
     (True, 1)
     """
-    tol = _check_tolerance(tolerance)
+    tol = check_tolerance(tolerance)
     _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
     t = prof.tool
     m = gear.module
-    space = _shaper_space(prof, tol)
+    space = _shaper_space(prof, tol, progress)
     if t.s > 0:
         blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
         space = space.intersection(shapely.Polygon(circle_points(prof.ra + 0.1 * m, tol)))

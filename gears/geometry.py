@@ -31,6 +31,7 @@ __all__ = [
     "half_angle_at_reference",
     "min_profile_shift",
     "over_pins",
+    "pin_contact_diameter",
     "pointed_tip_diameter",
     "reference_diameter",
     "root_diameter",
@@ -105,9 +106,14 @@ def half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, inter
 
 
 def tooth_thickness(
-    diameter, z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0, internal=False
-):
+    diameter, z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0, internal=False,
+    signed=False,
+):  # fmt: skip
     """Transverse arc tooth thickness s_y at diameter d_y (standards.md §1.4).
+
+    ``signed=True`` returns the formula's value past the pointed tip too (negative: the flanks
+    have crossed), for margins such as the pointed-tip check; by default no thickness is given
+    where none exists.
 
     s_y = d_y (s_t/d + inv alpha_t - inv alpha_yt) for external gears and
     s_y = d_y (s_t/d - inv alpha_t + inv alpha_yt) for internal gears, cos alpha_yt = d_b/d_y.
@@ -115,14 +121,34 @@ def tooth_thickness(
     Raises
     ------
     GearError
-        If ``diameter`` lies inside the base circle (the involute does not exist there).
+        If ``diameter`` lies inside the base circle (the involute does not exist there), or where
+        the tooth has come to a point (beyond the pointed-tip diameter; towards the centre of an
+        internal gear): no thickness exists there.
     """
     alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
     db = base_diameter(z, module, pressure_angle, helix_angle)
-    alpha_y = pressure_angle_at(db, diameter)
+    d = np.asarray(diameter, float)
+    inside = ~(d >= db)  # NaN too
+    if np.any(inside):
+        bad = float(np.ravel(np.broadcast_to(d, inside.shape))[np.argmax(np.ravel(inside))])
+        raise GearError(
+            f"diameter = {bad:g} mm lies inside the base circle (d_b = "
+            f"{float(np.max(db)):.6g} mm); an involute and its thickness exist only for "
+            "diameter >= d_b"
+        )
+    alpha_y = pressure_angle_at(db / 2, d / 2)
     psi = half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, internal)
     s = _sign(internal)
-    return _out(np.asarray(diameter) * (psi + s * (inv(alpha_t) - inv(alpha_y))))
+    thickness = d * (psi + s * (inv(alpha_t) - inv(alpha_y)))
+    pointed = ~(thickness >= -1e-9 * d)  # rounding at the pointed diameter itself is no tooth
+    if not signed and np.any(pointed):
+        bad = float(np.ravel(np.broadcast_to(d, pointed.shape))[np.argmax(np.ravel(pointed))])
+        where = "beyond" if not np.any(internal) else "inside"
+        raise GearError(
+            f"diameter = {bad:g} mm lies {where} the diameter where the tooth comes to a point "
+            "(pointed_tip_diameter): no tooth thickness exists there"
+        )
+    return _out(thickness if signed else np.maximum(thickness, 0.0))
 
 
 def pointed_tip_diameter(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0):
@@ -231,15 +257,47 @@ def over_pins(
         + s * (dp / (z * m * np.cos(an)) - np.pi / (2 * z))
         + 2 * np.asarray(profile_shift) * np.tan(an) / z
     )
-    if np.any(inv_phi < 0):
+    if not np.all(inv_phi >= 0):
         raise GearError(
-            f"pin diameter {dp} mm is too small to reach the flanks of this gear "
-            "(inv phi < 0); use a larger pin"
+            f"pin_diameter = {np.ravel(dp)[0]:g} mm is too small to reach the flanks of this "
+            "gear (inv phi < 0); use a larger pin"
         )
     phi = inv_inverse(inv_phi)
     centre = base_diameter(z, m, pressure_angle, helix_angle) / np.cos(phi)
     centre = np.where(z % 2 == 0, centre, centre * np.cos(np.pi / (2 * z)))
     return _out(centre + s * dp)
+
+
+def pin_contact_diameter(
+    pin_diameter, z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0,
+    internal=False,
+):  # fmt: skip
+    """Diameter where a pin of :func:`over_pins` touches the flanks (transverse section).
+
+    The pin centre lies on the involute's offset at pressure angle phi (:func:`over_pins`); its
+    contact point is half a pin diameter back along the normal, which is tangent to the base
+    circle: roll ``tan phi -+ d_p / (d_b cos beta_b)`` (- external; the same term as in inv phi),
+    so ``d_c = d_b sqrt(1 + roll^2)``; 0 where the roll is negative (no contact on the involute).
+    A pin measures the involute only when ``d_c`` lies on it.
+
+    >>> round(float(pin_contact_diameter(5.0, 12, 3, 0.6)), 4)   # Gear(12, 3, x = 0.6)
+    37.5766
+    """
+    z = np.asarray(z)
+    s = _sign(internal)
+    an = np.radians(pressure_angle)
+    alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
+    dp = np.asarray(pin_diameter, float)
+    inv_phi = (
+        inv(alpha_t)
+        + s * (dp / (z * np.asarray(module) * np.cos(an)) - np.pi / (2 * z))
+        + 2 * np.asarray(profile_shift) * np.tan(an) / z
+    )
+    phi = inv_inverse(np.maximum(inv_phi, 0.0))
+    db = base_diameter(z, module, pressure_angle, helix_angle)
+    cos_bb = np.cos(np.arctan(np.tan(np.radians(helix_angle)) * np.cos(alpha_t)))
+    roll = np.tan(phi) - s * dp / (db * cos_bb)
+    return _out(np.where(roll >= 0, db * np.sqrt(1.0 + roll * roll), 0.0))
 
 
 def check_real(name: str, value, low=None, high=None, low_open=True, high_open=True) -> float:

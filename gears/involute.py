@@ -80,6 +80,7 @@ _NEWTON_MAX = 60
 _FAST_MAX = 0.5  # inv(55.6 deg): below it Cheng-10 + one Newton step reaches ~1e-15
 _FAST_NEWTON = 0.3  # rad; below it the Cheng-10 seed alone is exact to rounding
 
+_HALF_PI = np.pi / 2
 INV_MAX = float(np.tan(np.radians(89.9)) - np.radians(89.9))
 """inv(89.9 deg): the top of the range over which :func:`inv_inverse` is proven to 1e-12."""
 
@@ -109,6 +110,9 @@ def inv(alpha):
     0.014904383867
     """
     a = np.asarray(alpha, dtype=float)
+    if not np.all(np.abs(a) < _HALF_PI):  # NaN fails too
+        bad = np.ravel(a)[np.argmax(~np.ravel(np.abs(a) < _HALF_PI))]
+        raise GearError(f"alpha = {bad!r} rad; valid is |alpha| < pi/2 (the involute function)")
     small = np.abs(a) < _SERIES_SWITCH
     a2 = a * a
     series = a * a2 * _horner(_TAN_SERIES, a2)

@@ -33,6 +33,7 @@ __all__ = [
     "InternalInterference",
     "PairGeometry",
     "center_distance_shift_sum",
+    "check_friction",
     "contact_ratio",
     "default_threads",
     "internal_interference",
@@ -78,7 +79,8 @@ def pair_geometry(
     PairGeometry
         Working transverse pressure angle alpha_wt (deg), centre distance a_w, y, k, tip
         diameters, working pitch diameters, transverse contact ratio. Tips inside the base
-        circle give a contact ratio of 0 (no involute contact); use :class:`GearPair` for a
+        circle, or tips too short to reach each other's flanks, give a contact ratio of 0 (no
+        involute contact); use :class:`GearPair` for a
         checked single pair.
 
     Examples
@@ -98,6 +100,7 @@ def pair_geometry(
     elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
         raise GearError(f"threads = {threads!r}; valid is an integer >= 1")
     if n < 2 * _CHUNK:
+        _check_rows(args, shape, 0)
         return PairGeometry(*_pair_geometry_block(*args, tip_shortening))
     # Large arrays: blocks of _CHUNK pairs, whose temporaries stay in cache, shared by the
     # threads (numpy ufuncs release the GIL). Measured in docs/performance.md.
@@ -107,6 +110,7 @@ def pair_geometry(
     def work(bounds: tuple[int, int]) -> None:
         i0, i1 = bounds
         part = [v if v.ndim == 0 else v[i0:i1] for v in flat]
+        _check_rows(part, (i1 - i0,), i0)
         for row, value in zip(out, _pair_geometry_block(*part, tip_shortening), strict=True):
             row[i0:i1] = value
 
@@ -118,6 +122,35 @@ def pair_geometry(
         for _ in _pool(threads).map(work, blocks):  # re-raises a GearError from any block
             pass
     return PairGeometry(*(row.reshape(shape) for row in out))
+
+
+_ROWS = (
+    ("z1", lambda a: (a[0] >= 1) & (a[0] < 1e9), "a tooth count >= 1"),
+    ("z2", lambda a: (a[1] >= 1) & (a[1] < 1e9), "a tooth count >= 1"),
+    ("module", lambda a: (a[2] > 0) & (a[2] < 1e6), "0 < module (mm)"),
+    ("x1", lambda a: np.abs(a[3]) < 1e3, "a finite shift"),
+    ("x2", lambda a: np.abs(a[4]) < 1e3, "a finite shift"),
+    ("pressure_angle", lambda a: (a[5] > 0) & (a[5] < 45), "0 < pressure_angle < 45 deg"),
+    ("helix_angle", lambda a: np.abs(a[6]) < 60, "-60 < helix_angle < 60 deg"),
+    ("addendum", lambda a: (a[7] > 0) & (a[7] < 10), "0 < addendum < 10 (module units)"),
+    ("z2", lambda a: ~a[8] | (a[1] > a[0]), "z2 > z1 for a ring (internal)"),
+)
+
+
+def _check_rows(args, shape, offset: int) -> None:
+    """Refuse rows that describe no real pair, naming the first bad index and its value, the
+    way :class:`gears.Gear` refuses one bad value (NaN fails every test)."""
+    for name, test, valid in _ROWS:
+        ok = test(args)
+        if not np.all(ok):
+            bad = np.broadcast_to(~ok, shape)
+            index = np.unravel_index(int(np.argmax(bad)), shape)
+            i = tuple(int(j) for j in index)
+            where = "" if not i else (f" at row {offset + i[0]}" if len(i) == 1 else f" at {i}")
+            values = {k: args[j] for j, k in enumerate(("z1", "z2", "module", "x1", "x2"))}
+            values.update(pressure_angle=args[5], helix_angle=args[6], addendum=args[7])
+            v = np.broadcast_to(values[name], shape)[index]
+            raise GearError(f"{name} = {float(v):g}{where}; valid is {valid}")
 
 
 _CHUNK = 1 << 15  # pairs per block: 32768 beat 16384 and 65536 (docs/performance.md)
@@ -216,7 +249,8 @@ def line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
 def contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
     u_a, u_e, _ = line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma)
     valid = (ra1 >= rb1) & (ra2 >= rb2)
-    return np.where(valid, (u_e - u_a) / base_pitch, 0.0)
+    # tips that do not reach each other's flanks give no contact: 0, never a negative ratio
+    return np.where(valid, np.maximum(u_e - u_a, 0.0) / base_pitch, 0.0)
 
 
 def center_distance_shift_sum(
@@ -234,18 +268,26 @@ def center_distance_shift_sum(
     s = _sigma(internal)
     z1 = np.asarray(z1, float)
     z2 = np.asarray(z2, float)
+    a_w = np.asarray(center_distance, float)
+    if not np.all((a_w > 0) & (a_w < np.inf)):
+        bad = np.ravel(a_w)[np.argmax(~np.ravel((a_w > 0) & (a_w < np.inf)))]
+        raise GearError(f"center_distance = {float(bad):g} mm; valid is a finite distance > 0")
     an = np.radians(pressure_angle)
     cos_b = np.cos(np.radians(helix_angle))
     at = np.arctan(np.tan(an) / cos_b)
     zsum = np.abs(z1 + s * z2)
     a_d = zsum * np.asarray(module) / (2 * cos_b)
-    c = a_d * np.cos(at) / np.asarray(center_distance, float)
-    if np.any(~(c < 1.0)):
+    c = a_d * np.cos(at) / a_w
+    # alpha_wt = 0 is the limit pair_geometry accepts (inv alpha_wt >= 0); rounding may put a
+    # distance computed from such a pair a few ulps below a_d cos(alpha_t): the same boundary
+    if np.any(~(c <= 1.0 + 4 * np.finfo(float).eps)):
         lowest = np.min(a_d * np.cos(at))
         raise GearError(
-            f"centre distance {center_distance} mm cannot be reached by profile shift: it must "
-            f"exceed a_d cos(alpha_t) = {lowest:.6f} mm (working pressure angle 0)"
+            f"center_distance = {np.ravel(center_distance)[0]:g} mm cannot be reached by profile "
+            f"shift: it must be at least a_d cos(alpha_t) = {lowest:.6f} mm (working pressure "
+            "angle 0)"
         )
+    c = np.minimum(c, 1.0)
     awt = np.arccos(c)
     out = zsum * (inv(awt) - inv(at)) / (2 * np.tan(an))
     return out[()] if np.ndim(out) == 0 else out
@@ -270,13 +312,26 @@ def specific_sliding(u, rb1, rb2, tan_wt, ratio, internal=False):
     return z1_, z2_
 
 
+def check_friction(friction) -> float:
+    """``friction`` as a float, or a :class:`GearError` naming the valid range 0 <= f < 1."""
+    if isinstance(friction, bool) or not isinstance(friction, int | float | np.floating):
+        raise GearError(f"friction = {friction!r}; valid is a number 0 <= friction < 1")
+    f = float(friction)
+    if not 0.0 <= f < 1.0:  # NaN fails too
+        raise GearError(f"friction = {friction!r}; valid is 0 <= friction < 1")
+    return f
+
+
 def mesh_efficiency(z1, z2, contact_ratio, friction=0.1, internal=False):
     """Mesh efficiency estimate, Ozols (14.25) after Reshetov:
     eta = 1 - (pi f eps / 2)(1/z1 +- 1/z2), + external, - internal.
 
+    ``friction`` is the coefficient of sliding friction, 0 <= f < 1.
+
     >>> round(float(mesh_efficiency(20, 40, 1.6, 0.1)), 6)   # Ozols digest, derived case
     0.98115
     """
+    check_friction(friction)
     s = _sigma(internal)
     return 1.0 - np.pi * friction * contact_ratio / 2.0 * (1.0 / z1 + s / np.asarray(z2, float))
 

@@ -18,9 +18,10 @@ __all__ = ["gear_outline", "pair_outlines", "pair_placement"]
 def gear_outline(
     gear, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
     bore: float | None = None, rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0),
-    cutter=None,
+    cutter=None, progress=None,
 ) -> shapely.Polygon:  # fmt: skip
-    """Dispatch :meth:`Gear.outline` to the analytic outline or a simulated cutter.
+    """Dispatch :meth:`Gear.outline` to the analytic outline or a simulated cutter
+    (``progress(done, total)`` reports a simulation's progress).
 
     ``cutter`` (a :class:`gears.cutter.ShaperCutter`) selects the shaper for
     ``method='analytic'`` (its exact envelope) and ``method='shaper'`` (default: the cutter of
@@ -39,11 +40,11 @@ def gear_outline(
             raise GearError(
                 "this gear is cut by a shaper cutter; use method='shaper' or 'analytic', not 'rack'"
             )
-        return rack_outline(gear, tolerance, backlash, bore, angle, center)
+        return rack_outline(gear, tolerance, backlash, bore, angle, center, progress)
     if method == "shaper":
         return shaper_outline(
             gear, tolerance, backlash, bore=bore, rim=rim, angle=angle, center=center,
-            cutter=cutter,
+            cutter=cutter, progress=progress,
         )  # fmt: skip
     raise GearError(f"method = {method!r}; valid are 'analytic', 'rack', 'shaper'")
 

@@ -174,6 +174,21 @@ class GearPair:
         object.__setattr__(self, "g1", g1)
         object.__setattr__(self, "g2", g2)
         object.__setattr__(self, "tip_shortening", bool(tip_shortening))
+        if isinstance(g2, Gear) and not g2.internal and tip_shortening:
+            total = g1.profile_shift + g2.profile_shift
+            if total > 0 and any(
+                (g.tip_diameter - g.root_diameter) / (2 * g.module) + self.tip_alteration <= 0
+                for g in (g1, g2)
+            ):
+                _, high = self.center_distance_range(g1, g2)
+                most = float(center_distance_shift_sum(
+                    g1.teeth, g2.teeth, g1.module, high, g1.pressure_angle, g1.helix_angle
+                ))  # fmt: skip
+                raise GearError(
+                    f"x1 + x2 = {total:g} is too large for z = {g1.teeth}/{g2.teeth}: the tip "
+                    f"shortening k = {self.tip_alteration:.4f} it needs (DIN 3960) would take the "
+                    f"whole tooth; valid is x1 + x2 < {most:.4f}"
+                )
 
     # --- construction ------------------------------------------------------------------------
     @classmethod
@@ -201,6 +216,16 @@ class GearPair:
         if not isinstance(g2, Gear):
             raise GearError("at_center_distance needs two Gears (a rack has no centre distance)")
         cls(g1, g2)  # validates modules, hands, counts
+        if split not in ("equal_sliding", "proportional", "keep"):
+            raise GearError(f"split = {split!r}; valid are 'equal_sliding', 'proportional', 'keep'")
+        low, high = cls.center_distance_range(g1, g2, tip_shortening)
+        a_w = float(center_distance) if isinstance(center_distance, int | float) else math.nan
+        if not low <= a_w <= high:
+            raise GearError(
+                f"center_distance = {center_distance!r} mm cannot be reached by profile shift for "
+                f"z = {g1.teeth}/{g2.teeth}, m = {g1.module:g}; valid is {low:.6f} <= "
+                f"center_distance <= {high:.6f} mm"
+            )
         total = float(
             center_distance_shift_sum(
                 g1.teeth, g2.teeth, g1.module, center_distance, g1.pressure_angle,
@@ -219,16 +244,70 @@ class GearPair:
                 x1 = total / 2
             else:
                 x1 = total / 2 + (0.5 - total / 2) * math.log10(u) / denominator
-        elif split == "equal_sliding":
-            x1 = _equal_sliding_x1(g1, g2, total, tip_shortening)
         else:
-            raise GearError(f"split = {split!r}; valid are 'equal_sliding', 'proportional', 'keep'")
+            x1 = _equal_sliding_x1(g1, g2, total, tip_shortening)
         x2 = total - x1 if s > 0 else total + x1  # external x1 + x2 = S; internal x2 - x1 = S
-        return cls(
-            g1.with_(profile_shift=x1, tip_alteration=0.0),
-            g2.with_(profile_shift=x2, tip_alteration=0.0),
-            tip_shortening,
-        )
+        try:
+            return cls(
+                g1.with_(profile_shift=x1, tip_alteration=0.0),
+                g2.with_(profile_shift=x2, tip_alteration=0.0),
+                tip_shortening,
+            )
+        except GearError as exc:
+            raise GearError(
+                f"center_distance = {a_w:g} mm with split = {split!r} needs x1 = {x1:.4f}, "
+                f"x2 = {x2:.4f}, which no real gear has ({exc}); try another split"
+            ) from None
+
+    @staticmethod
+    def center_distance_range(
+        g1: Gear, g2: Gear, tip_shortening: bool = True
+    ) -> tuple[float, float]:
+        """The centre distances profile shift can reach, ``(low, high)`` in mm.
+
+        ``low`` is a_d cos(alpha_t) (working pressure angle 0, standards.md §1.2). The DIN 3960
+        tip shortening k = y - (x1 + x2) <= 0 of an external pair grows on both sides of a zero
+        shift sum; where it would take the whole tooth (k = -(h_a* + h_f*)) no tooth is left,
+        which bounds ``high`` (and, for large tooth sums, ``low``). Internal pairs (and pairs
+        without tip shortening) have no upper bound (``inf``).
+
+        >>> low, high = GearPair.center_distance_range(Gear(12, 3), Gear(24, 3))
+        >>> round(low, 4), round(high, 4)
+        (50.7434, 66.5654)
+        """
+        s = -1.0 if g2.internal else 1.0
+        zsum = g2.teeth + s * g1.teeth
+        a_d = zsum * g1.transverse_module / 2
+        low = a_d * math.cos(math.radians(g1.transverse_pressure_angle))
+        if g2.internal or not tip_shortening:
+            return low, math.inf
+        whole = min(g.rack.addendum + g.rack.dedendum for g in (g1, g2))
+
+        def left(total: float) -> float:  # tooth left after shortening, module units
+            k = pair_geometry(
+                g1.teeth, g2.teeth, g1.module, total, 0.0, g1.pressure_angle, g1.helix_angle
+            ).tip_alteration
+            return float(k) + whole
+
+        lowest = -zsum * float(inv(math.radians(g1.transverse_pressure_angle)))
+        lowest /= 2 * math.tan(math.radians(g1.pressure_angle))
+        lowest += 1e-9 * max(1.0, abs(lowest))  # just inside: inv alpha_wt >= 0 despite rounding
+        # the tooth left is whole at x1 + x2 = 0 and shrinks on both sides (k = y - sum <= 0)
+        top = max(1.0, zsum / 4)
+        while left(top) > 0 and top < 250:
+            top *= 2
+
+        def distance(total: float) -> float:
+            return float(
+                pair_geometry(
+                    g1.teeth, g2.teeth, g1.module, total, 0.0, g1.pressure_angle, g1.helix_angle
+                ).center_distance
+            )
+
+        high = distance(brentq(left, 0.0, top, xtol=1e-12)) if left(top) <= 0 else math.inf
+        if left(lowest) <= 0:
+            low = distance(brentq(left, lowest, 0.0, xtol=1e-12))
+        return low, high
 
     # --- basic quantities ----------------------------------------------------------------------
     @property
@@ -371,7 +450,7 @@ class GearPair:
     def contact_ratio(self) -> float:
         """Transverse contact ratio epsilon_alpha (Ozols 21.12; standards.md §1.5)."""
         p = self.path_of_contact
-        return p.length / p.base_pitch
+        return max(p.length, 0.0) / p.base_pitch  # tips too short to meet: no contact
 
     @property
     def overlap_ratio(self) -> float:

@@ -58,9 +58,13 @@ from gears.involute import inv
 from gears.rack import RackTool
 
 __all__ = [
+    "MAX_OUTLINE_VERTICES",
+    "MIN_TOLERANCE",
     "ShaperProfile",
     "ToothProfile",
     "assemble",
+    "check_size",
+    "check_tolerance",
     "outline",
     "tooth_profile",
     "undercut_form_diameter",
@@ -97,11 +101,37 @@ def rim_width(gear, rim: float | None) -> float:
     return width
 
 
-def _check_tolerance(tolerance: float) -> float:
+#: The finest tolerance honoured, mm. Double precision would allow less, but shapely's
+#: robustness on polygons of 10^6 vertices and the work of the simulations set the floor; a
+#: micrometre grinder needs 1e-4 mm (docs/profiles.md, "Bounded work").
+MIN_TOLERANCE = 1e-6
+#: Largest outline, in vertices (about 160 MB of coordinates with shapely's copy).
+MAX_OUTLINE_VERTICES = 10_000_000
+
+
+def check_tolerance(tolerance, name: str = "tolerance") -> float:
+    """``tolerance`` as a float in mm, or a :class:`GearError` naming the valid range
+    (``MIN_TOLERANCE <= tolerance``, finite)."""
+    if isinstance(tolerance, bool) or not isinstance(tolerance, int | float | np.floating):
+        raise GearError(f"{name} = {tolerance!r}; valid is a number of mm >= {MIN_TOLERANCE:g}")
     t = float(tolerance)
-    if not (math.isfinite(t) and t > 0):
-        raise GearError(f"tolerance = {tolerance!r} mm; valid is a finite number > 0")
+    if not (math.isfinite(t) and t >= MIN_TOLERANCE):
+        raise GearError(
+            f"{name} = {tolerance!r} mm; valid is a finite tolerance >= {MIN_TOLERANCE:g} mm "
+            "(the finest this library honours; 1e-4 mm already exceeds any grinder)"
+        )
     return t
+
+
+def check_size(vertices: float, what: str, tolerance: float, budget: float) -> None:
+    """Refuse work whose estimated ``vertices`` exceed ``budget`` before it is allocated, naming
+    the estimate and the coarsest tolerance that fits (work grows as 1/tolerance)."""
+    if vertices > budget:
+        raise GearError(
+            f"{what} at tolerance = {tolerance:g} mm would take about {vertices:.3g} vertices, "
+            f"over the budget of {budget:.3g}; use tolerance >= {tolerance * vertices / budget:.2g}"
+            " mm"
+        )
 
 
 def arc_segments(radius: float, angle: float, tolerance: float) -> int:
@@ -393,7 +423,7 @@ class ToothProfile:
         kind : ndarray of int
             Curve each point starts: 0 root arc, 1 fillet, 2 involute, 3 tip arc.
         """
-        tol = _check_tolerance(tolerance)
+        tol = check_tolerance(tolerance)
         rhos, etas, kinds = [], [], []
         # root arc, from the space centre to the end of the tip land's image
         eta_land = self._land_angle()
@@ -450,6 +480,8 @@ class ToothProfile:
         """The whole toothed boundary (closed ring without the repeated point), counter-clockwise,
         with tooth 0 centred at ``angle`` radians."""
         tooth = self.tooth_points(tolerance)[:-1]
+        size = len(tooth) * self.z
+        check_size(size, f"the outline of z = {self.z}", tolerance, MAX_OUTLINE_VERTICES)
         step = 2 * math.pi / self.z
         angles = angle + step * np.arange(self.z)
         c, s = np.cos(angles)[:, None], np.sin(angles)[:, None]
@@ -543,7 +575,7 @@ def outline(
     >>> p.is_valid, round(p.area / (math.pi * 10**2), 2)   # teeth and spaces nearly balance
     (True, 0.98)
     """
-    tol = _check_tolerance(tolerance)
+    tol = check_tolerance(tolerance)
     _refuse_protuberance(gear)
     if cutter is None:
         cutter = getattr(gear, "cutter", None)

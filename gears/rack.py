@@ -88,9 +88,14 @@ class BasicRack:
             raise GearError(f"protuberance = {self.protuberance} m; valid is >= 0")
         limit = self.max_root_radius
         if limit <= 0.0:
+            # the tool's teeth come to a point where pi/4 = h_fP tan(alpha)
+            steepest = math.degrees(math.atan(math.pi / (4 * self.dedendum)))
+            deepest = math.pi / (4 * math.tan(math.radians(self.pressure_angle)))
             raise GearError(
-                f"dedendum = {self.dedendum} m at {self.pressure_angle} deg leaves the tool no tip "
-                f"land (tool tooth thickness at its tip <= 0); reduce the dedendum"
+                f"pressure_angle = {self.pressure_angle:g} deg is too steep for a tool of "
+                f"dedendum {self.dedendum:g} m: its teeth come to a point; valid is "
+                f"pressure_angle < {steepest:.2f} deg with this dedendum, or a rack with "
+                f"dedendum < {deepest:.4f} m at {self.pressure_angle:g} deg"
             )
         if self.root_radius > limit + 1e-12:
             raise GearError(

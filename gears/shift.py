@@ -227,7 +227,7 @@ def blocking_contour(
         d = float(reference_diameter(z, m, beta))
         db = d * np.cos(at)
         above = da >= db
-        s_at = tooth_thickness(np.where(above, da, db), z, m, x, pressure_angle, beta)
+        s_at = tooth_thickness(np.where(above, da, db), z, m, x, pressure_angle, beta, signed=True)
         cos_ba = np.cos(np.arctan(np.tan(np.radians(beta)) * da / d))
         # a tip inside the base circle has no land: its (negative) depth below d_b instead
         lands.append(np.where(above, s_at * cos_ba, (da - db) / 2.0) / m)

@@ -170,7 +170,7 @@ def test_backlash_thins_teeth():
         Gear(12, 50, profile_shift=0.3),
         Gear(30, 1, internal=True),  # tip inside base circle: clear error
         Gear(40, 1, internal=True, profile_shift=0.8),
-        Gear(3, 1, profile_shift=-1.0),
+        Gear(3, 1, profile_shift=-0.2),  # root just above the centre (x > -0.25)
         Gear(200, 1, internal=True),
         # a 38-tooth shaper on a 40-tooth ring trims its tips (ShaperCutter.check)
         Gear(40, 1, internal=True, profile_shift=0.3, cutter=ShaperCutter(38)),
