@@ -89,7 +89,7 @@ def test_pair_from_center_distance_round_trip(capsys):
         (["pair", "12", "24", "--module", "0"], "--module 0 is out of range"),
         (["pair", "0", "24"], "Z1 0 is out of range"),
         (["pair", "30", "20", "--internal"], "Z2 = 20 <= Z1 = 30"),
-        (["pair", "12", "24", "--center-distance", "10"], "--center-distance = 10"),
+        (["pair", "12", "24", "--center-distance", "10"], "10.0 mm cannot be reached"),
         (["pair", "12", "24", "--pressure-angle", "50"], "--pressure-angle"),
     ],
 )
