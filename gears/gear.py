@@ -401,7 +401,8 @@ class Gear:
         """Findings ``undercut``, ``pointed_tip`` (tip land >= ``min_tip_land`` m_n),
         ``tip_above_base`` and ``tooth_height`` (the tip above the root and the form circle),
         each with a signed margin (from :func:`gears.checks.gear_margins`, the functions a
-        search over arrays of gears calls)."""
+        search over arrays of gears calls). ``min_tip_land`` is finite and >= 0."""
+        min_tip_land = check_real("min_tip_land", min_tip_land, 0.0, low_open=False)
         return Report(self._findings(min_tip_land))
 
     def _findings(self, min_tip_land: float) -> list[Finding]:

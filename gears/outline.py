@@ -6,10 +6,12 @@ Dispatches to the analytic envelope (:func:`gears.profile.outline`) or a simulat
 
 from __future__ import annotations
 
+import numpy as np
 import shapely
 
 from gears.errors import GearError
 from gears.generate import rack_outline, shaper_outline
+from gears.geometry import check_real
 from gears.profile import outline
 
 __all__ = ["gear_outline", "pair_outlines", "pair_placement"]
@@ -32,6 +34,13 @@ def gear_outline(
     GearError
         For an unknown ``method``, or a cutter given with ``method='rack'``.
     """
+    angle = check_real("angle", angle)
+    try:
+        ok = np.shape(center) == (2,) and bool(np.all(np.isfinite(np.asarray(center, float))))
+    except (TypeError, ValueError):
+        ok = False
+    if not ok:
+        raise GearError(f"center = {center!r}; valid is a pair of finite coordinates (mm)")
     if method == "analytic":
         return outline(gear, tolerance, backlash, bore, rim, angle, center, cutter)
 
@@ -69,6 +78,7 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     """
     if pair.is_rack:
         raise GearError("outlines of a pinion-and-rack pair are not drawn; use the gear alone")
+    angle = check_real("angle", angle)
     g1, g2 = pair.gears
     c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
     p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1)

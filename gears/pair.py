@@ -17,6 +17,7 @@ from scipy.optimize import brentq
 from gears.checks import form_lengths, tip_diameter_limits, tip_interference
 from gears.errors import GearError
 from gears.gear import Gear
+from gears.geometry import check_real
 from gears.involute import inv
 from gears.meshing import (
     PairGeometry,
@@ -595,7 +596,10 @@ class GearPair:
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
         """Both gears' findings (prefixed ``g1.``/``g2.``) plus ``contact_ratio``,
         ``tip_interference`` and, for internal pairs, ``involute_interference``,
-        ``trochoid_interference``, ``radial_interference`` and ``ring_tip_above_base``."""
+        ``trochoid_interference``, ``radial_interference`` and ``ring_tip_above_base``.
+        ``min_contact_ratio`` and ``min_tip_land`` are finite and >= 0."""
+        min_contact_ratio = check_real("min_contact_ratio", min_contact_ratio, 0.0, low_open=False)
+        min_tip_land = check_real("min_tip_land", min_tip_land, 0.0, low_open=False)
         m1, m2 = self.gears
         findings = list(m1.check(min_tip_land).prefixed("g1").values())
         if not self.is_rack:

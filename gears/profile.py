@@ -63,6 +63,7 @@ __all__ = [
     "ShaperProfile",
     "ToothProfile",
     "assemble",
+    "check_backlash",
     "check_size",
     "check_tolerance",
     "outline",
@@ -123,6 +124,23 @@ def check_tolerance(tolerance, name: str = "tolerance") -> float:
     return t
 
 
+def check_backlash(gear, backlash) -> float:
+    """``backlash`` (the pair's normal backlash, mm) as a float, or a :class:`GearError` naming
+    the valid range: 0 <= j < 2 s_t cos(alpha_t), beyond which this gear's half (each flank
+    thinned by j/4 along its normal) leaves no tooth on the reference circle."""
+    if isinstance(backlash, bool) or not isinstance(backlash, int | float | np.floating):
+        raise GearError(f"backlash = {backlash!r}; valid is a number of mm >= 0")
+    j = float(backlash)
+    at = math.radians(gear.transverse_pressure_angle)
+    most = 2 * gear.reference_thickness * math.cos(at)
+    if not 0.0 <= j < most:  # NaN fails too
+        raise GearError(
+            f"backlash = {backlash!r} mm; valid is 0 <= backlash < {most:.6g} mm (at that "
+            f"backlash z = {gear.teeth} keeps no tooth on its reference circle)"
+        )
+    return j
+
+
 def check_size(vertices: float, what: str, tolerance: float, budget: float) -> None:
     """Refuse work whose estimated ``vertices`` exceed ``budget`` before it is allocated, naming
     the estimate and the coarsest tolerance that fits (work grows as 1/tolerance)."""
@@ -165,10 +183,7 @@ class ToothProfile:
 
     def __init__(self, gear, backlash: float = 0.0) -> None:
         self.gear = gear
-        b = float(backlash)
-        if not (math.isfinite(b) and b >= 0):
-            raise GearError(f"backlash = {backlash!r} mm; valid is a finite number >= 0")
-        self.backlash = b
+        b = self.backlash = check_backlash(gear, backlash)
         self.tool = RackTool.for_gear(gear, b)
         self.z = gear.teeth
         self.rb = gear.base_diameter / 2
@@ -622,10 +637,7 @@ class ShaperProfile(ToothProfile):
 
     def __init__(self, gear, cutter: ShaperCutter | None = None, backlash: float = 0.0) -> None:
         self.gear = gear
-        b = float(backlash)
-        if not (math.isfinite(b) and b >= 0):
-            raise GearError(f"backlash = {backlash!r} mm; valid is a finite number >= 0")
-        self.backlash = b
+        b = self.backlash = check_backlash(gear, backlash)
         if cutter is None:
             cutter = getattr(gear, "cutter", None) or ShaperCutter.default_for(gear)
         self.cutter = cutter

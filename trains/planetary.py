@@ -1036,7 +1036,7 @@ class Planetary:
             asm = self.assembly()
             th = [s / 360.0 for s in asm.spacing]
         else:
-            th = [float(a) / 360.0 for a in angles]
+            th = _planet_turns(angles, self.n_planets)
         z1, zc, zd, z3 = self._z()
         pairs = self._pairs
         first = next(iter(pairs.values()))
@@ -1284,6 +1284,25 @@ class Planetary:
         lines.append("planet angles (deg): " + ", ".join(f"{a:.3f}" for a in pl.planet_angles))
         lines.append(str(self.check()))
         return "\n".join(lines)
+
+
+def _planet_turns(angles: Any, n_planets: int) -> list[float]:
+    """Planet centre angles (degrees) as fractions of a turn, refused unless there is one
+    finite angle per planet and no two planets share a place."""
+    try:
+        values = [float(a) for a in angles]
+    except (TypeError, ValueError):
+        raise TrainError(f"angles = {angles!r}; valid is one angle in degrees per planet") from None
+    if len(values) != n_planets or not all(math.isfinite(a) for a in values):
+        raise TrainError(f"angles = {values}; valid is {n_planets} finite planet angles in degrees")
+    turns = sorted(a / 360.0 % 1.0 for a in values)
+    gaps = [b - a for a, b in zip(turns, [*turns[1:], turns[0] + 1.0], strict=True)]
+    if n_planets > 1 and min(gaps) < 1e-9:
+        raise TrainError(
+            f"angles = {values}: two planets would sit at the same place; valid is "
+            f"{n_planets} distinct angles (mod 360 deg)"
+        )
+    return [a / 360.0 for a in values]
 
 
 def _count(n_planets: Any) -> int:
