@@ -21,6 +21,7 @@ from trains.catalog import (
 )
 from trains.coaxial import coaxial_shifts
 from trains.errors import TrainError
+from trains.gearbox import Gearbox, Gearboxes, synthesize_gearbox
 from trains.inertia import reduced_inertia
 from trains.planetary import Assembly, Placement, Planetary
 from trains.power import (
@@ -42,6 +43,8 @@ __all__ = [
     "Assembly",
     "Candidate",
     "Candidates",
+    "Gearbox",
+    "Gearboxes",
     "IllConditionedTrainWarning",
     "Motion",
     "Placement",
@@ -70,5 +73,6 @@ __all__ = [
     "stepped_planetary",
     "strain_wave",
     "synthesize",
+    "synthesize_gearbox",
     "wolfrom",
 ]
