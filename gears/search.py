@@ -656,6 +656,8 @@ def pairs(
     else:
         parts = _run_dask(space, bounds, client, report)
     table, feasible, examined = parts
+    if space.pareto and top is not None:  # the front is whole until here; then its head
+        table = table[:top]
     return SearchResult(table, examined, feasible, len(bounds), time.perf_counter() - t0, space)
 
 

@@ -220,3 +220,41 @@ def test_random_small_spaces_agree_with_brute_force(teeth, shifts, chunk):
     got = {(int(t["z1"]), int(t["z2"]), round(float(t["x1"]), 9), round(float(t["x2"]), 9))
            for t in r.table}  # fmt: skip
     assert got == set(brute)
+
+
+def test_command_line(tmp_path, capsys):
+    from trains.cli import main
+
+    out = tmp_path / "pairs.csv"
+    status = main(
+        [
+            "search",
+            "pairs",
+            "--ratio",
+            "2",
+            "--module",
+            "2",
+            "--teeth",
+            "14",
+            "40",
+            "--objective",
+            "sliding,-contact_ratio",
+            "--top",
+            "4",
+            "-o",
+            str(out),
+        ]
+    )
+    text = capsys.readouterr().out
+    assert status == 0 and "4 pairs of" in text
+    rows = out.read_text().splitlines()
+    assert rows[0].startswith("module,helix_angle,z1,z2,x1,x2") and len(rows) == 5
+    # nothing feasible: exit 1; bad input and an oversized search: exit 2, one line on stderr
+    assert (
+        main(["search", "pairs", "--ratio", "2", "--teeth", "14", "16", "--min-contact-ratio", "3"])
+        == 1
+    )
+    capsys.readouterr()
+    assert main(["search", "pairs", "--teeth", "5", "500", "--shifts", "-1", "2", "0.001"]) == 2
+    err = capsys.readouterr().err
+    assert "candidates" in err and "--max-seconds" in err and len(err.strip().splitlines()) == 1

@@ -132,3 +132,15 @@ def test_progress_and_table():
 def test_bad_input(kwargs, match):
     with pytest.raises(TrainError, match=match):
         synthesize_gearbox(**{"ratio": 12, "progress": False, **kwargs})
+
+
+def test_command_line(capsys):
+    from trains.cli import main
+
+    assert main(["search", "gearbox", "--ratio", "12", "--z-max", "100", "--top", "3"]) == 0
+    out = capsys.readouterr().out
+    assert out.count("ratio 12 ") == 3
+    assert main(["search", "gearbox", "--ratio", "37", "--z-max", "100"]) == 1  # none: exit 1
+    capsys.readouterr()
+    assert main(["search", "gearbox", "--ratio", "1/2"]) == 2
+    assert "ratio > 1" in capsys.readouterr().err
