@@ -167,7 +167,11 @@ def save(path, *objects) -> pathlib.Path:
         if len(objects) != 1:
             raise GearError(f"{ext} export takes one mesh or scene; got {len(objects)} objects")
         return save_mesh(path, objects[0])
-    outlines = objects
+    if ext not in OUTLINE_FORMATS:
+        raise GearError(
+            f"unknown export format {ext!r}; valid are {', '.join(OUTLINE_FORMATS + MESH_FORMATS)}"
+        )
+    outlines = _polygons(objects)  # a clear error for anything that is not an outline
     if ext == ".svg":
         return to_svg(path, *outlines)
     if ext == ".dxf":

@@ -411,8 +411,10 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
 def _shaper_space(prof, tolerance: float, progress=None) -> shapely.Polygon:
     """Union of all shaper-cutter positions: one tooth space, centred on +y."""
     what = f"the shaper simulation of z = {prof.z} (cutter z0 = {prof.tool.z0})"
-    coarse = 100 * tolerance  # the position rule itself is costly at fine tolerances: estimate
-    if coarse < 0.01 * prof.gear.module:  # from a coarser run (both counts grow as tol^-1/2)
+    # the position rule itself is costly at fine tolerances: estimate from a coarse run first
+    # (tool vertices and positions each grow as tol^-1/2, so their product as 1/tol)
+    coarse = max(100 * tolerance, 0.002 * prof.gear.module)
+    if tolerance < coarse / 10:
         n = len(shaper_tool_polygon(prof, coarse)) * len(shaper_positions(prof, coarse))
         check_size(n * coarse / tolerance, what, tolerance, MAX_PLACED_VERTICES)
     tooth = shaper_tool_polygon(prof, tolerance)

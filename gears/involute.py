@@ -112,7 +112,7 @@ def inv(alpha):
     a = np.asarray(alpha, dtype=float)
     if not np.all(np.abs(a) < _HALF_PI):  # NaN fails too
         bad = np.ravel(a)[np.argmax(~np.ravel(np.abs(a) < _HALF_PI))]
-        raise GearError(f"alpha = {bad!r} rad; valid is |alpha| < pi/2 (the involute function)")
+        raise GearError(f"alpha = {float(bad):g} rad; valid is |alpha| < pi/2 (involute function)")
     small = np.abs(a) < _SERIES_SWITCH
     a2 = a * a
     series = a * a2 * _horner(_TAN_SERIES, a2)

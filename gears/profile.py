@@ -145,10 +145,13 @@ def check_size(vertices: float, what: str, tolerance: float, budget: float) -> N
     """Refuse work whose estimated ``vertices`` exceed ``budget`` before it is allocated, naming
     the estimate and the coarsest tolerance that fits (work grows as 1/tolerance)."""
     if vertices > budget:
+        fits = tolerance * vertices / budget
+        fits = math.ceil(fits / 10 ** (math.floor(math.log10(fits)) - 1)) * 10 ** (
+            math.floor(math.log10(fits)) - 1
+        )  # rounded up to two digits, so the suggestion itself fits
         raise GearError(
             f"{what} at tolerance = {tolerance:g} mm would take about {vertices:.3g} vertices, "
-            f"over the budget of {budget:.3g}; use tolerance >= {tolerance * vertices / budget:.2g}"
-            " mm"
+            f"over the budget of {budget:.3g}; use tolerance >= {fits:.2g} mm"
         )
 
 
