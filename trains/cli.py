@@ -49,9 +49,19 @@ class HelpFormatter(argparse.RawDescriptionHelpFormatter, argparse.ArgumentDefau
     and ``False`` of optional values and switches, whose help says what they do)."""
 
     def _get_help_string(self, action: argparse.Action) -> str:
-        if action.default is None or action.default is False:
+        if action.default is None or action.default is False or "(default" in (action.help or ""):
             return action.help or ""
         return super()._get_help_string(action)
+
+
+def _use_formatter(parser: argparse.ArgumentParser) -> None:
+    """``parser`` and the parsers of its own sub-commands (``search pairs``) format their help
+    with :class:`HelpFormatter`."""
+    parser.formatter_class = HelpFormatter
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for nested in action.choices.values():
+                _use_formatter(nested)
 
 
 class UsageError(Exception):
@@ -105,6 +115,7 @@ def build_parser() -> argparse.ArgumentParser:
             formatter_class=HelpFormatter,
         )  # fmt: skip
         module.add_arguments(p)
+        _use_formatter(p)
         p.set_defaults(run=module.run, names=getattr(module, "NAMES", {}))
     return parser
 

@@ -178,13 +178,16 @@ def input_file(name: str = "FILE") -> Callable[[str], Path]:
 
 def translate(message: str, names: Mapping[str, str]) -> str:
     """``message`` with each API name of ``names`` (a regular expression) replaced by the CLI's
-    words; a name is replaced only as a whole word.
+    words; a name is replaced only as a whole word and not inside quotes (a quoted name is a
+    field of a file, which keeps its own name).
 
     >>> translate("split='keep' needs x1", {r"split='(\\w+)'": r"--split \\1", "x1": "X1"})
     '--split keep needs X1'
+    >>> translate("[run], 'mesh_efficiency': must be a number", {"mesh_efficiency": "--efficiency"})
+    "[run], 'mesh_efficiency': must be a number"
     """
     for api, cli in names.items():
-        message = re.sub(rf"(?<![\w.-]){api}(?![\w(])", cli, message)
+        message = re.sub(rf"(?<![\w.'-]){api}(?![\w('])", cli, message)
     return message
 
 
