@@ -108,16 +108,27 @@ class ShaperCutter:
     def default_for(cls, gear) -> ShaperCutter:
         """The cutter used when none is given: the tooth count nearest a 76 mm pitch diameter,
         between 12 and 100 teeth, and for an internal gear at most half the ring's teeth (so the
-        cutter clears the ring's tips on its way out)."""
+        cutter clears the ring's tips on its way out). For a ring, the nearest such cutter that
+        passes its own :meth:`check` (no trimming, no tip past N1, radial infeed) is taken, so
+        the default never rounds or trims the ring it cuts when a cutter exists that does not
+        (issue 11: a 12-tooth default rounded a z = 215, m = 10 ring's tips by 19 tolerances).
+        """
         z0 = round(_DEFAULT_PITCH_DIAMETER / gear.transverse_module)
-        z0 = min(max(z0, _DEFAULT_TEETH[0]), _DEFAULT_TEETH[1])
-        if gear.internal:
-            z0 = min(z0, gear.teeth // 2)
-            if z0 < 5:
-                raise GearError(
-                    f"internal z = {gear.teeth}: no default shaper cutter fits (it needs at most "
-                    "z/2 >= 5 teeth); pass cutter=ShaperCutter(...)"
-                )
+        low, high = _DEFAULT_TEETH
+        z0 = min(max(z0, low), high)
+        if not gear.internal:
+            return cls(z0)
+        high = min(high, gear.teeth // 2)
+        if high < 5:
+            raise GearError(
+                f"internal z = {gear.teeth}: no default shaper cutter fits (it needs at most "
+                "z/2 >= 5 teeth); pass cutter=ShaperCutter(...)"
+            )
+        low = min(low, high)
+        z0 = min(z0, high)
+        for candidate in sorted(range(low, high + 1), key=lambda k: (abs(k - z0), k)):
+            if cls(candidate).check(gear).ok:
+                return cls(candidate)
         return cls(z0)
 
     # --- geometry with a given work gear ------------------------------------------------------

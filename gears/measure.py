@@ -82,6 +82,7 @@ def thickness_on(outline, diameter: float, center=(0.0, 0.0)) -> np.ndarray:
     nxt = np.concatenate([ang[1:], ang[:1] + 2 * math.pi])
     mid = 0.5 * (ang + nxt)
     pts = shapely.points(center[0] + r * np.cos(mid), center[1] + r * np.sin(mid))
+    shapely.prepare(outline)  # many points against one large polygon: index it once
     inside = shapely.contains(outline, pts)
     widths = (nxt - ang)[inside] * r
     return widths[np.argsort(np.mod(mid[inside], 2 * math.pi))]

@@ -18,6 +18,7 @@ from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter, pair_geome
 from gears.export import save
 from gears.geometry import pin_contact_diameter
 from gears.involute import inv
+from gears.measure import thickness_on
 from gears.meshing import center_distance_shift_sum, contact_ratio, line_positions
 from gears.profile import MIN_TOLERANCE
 from trains import Planetary, Train, TrainError, power_flow
@@ -351,3 +352,17 @@ def test_planetary_is_checked_or_refused(sun, planet, ring, n, module):
         assert str(exc)
         return
     assert all(not math.isnan(f.margin) for f in report.values())
+
+
+def test_default_shaper_does_not_silently_round_a_ring():
+    # issue 11 §8: ring z = 215, m = 10, x = -1, rack C at 1e-4 m: the old default cutter
+    # (z0 = 12) failed its own tip_past_n1 check and rounded the ring's tips 15-19 tolerances
+    # thin at d = 2115 mm. The default is now the nearest cutter that passes its check, and the
+    # simulation agrees with the thickness formula (standards.md §1.4) within 2 tolerances.
+    ring = Gear(215, 10, profile_shift=-1, rack=BasicRack.iso53("C"), internal=True)
+    cutter = ShaperCutter.default_for(ring)
+    assert cutter.check(ring).ok and not ShaperCutter(12).check(ring).ok
+    tol = 1e-3
+    s = thickness_on(ring.outline(tol, method="shaper"), 2115.0)
+    assert len(s) == 215
+    assert abs(s.mean() - float(ring.tooth_thickness(2115.0))) < 2 * tol
