@@ -141,6 +141,17 @@ def test_an_internal_bug_exits_3_from_the_console_process():
     assert "Traceback" in p.stderr and "ZeroDivisionError" in p.stderr and p.stdout == ""
 
 
+def test_a_request_too_large_for_memory_is_bad_input_not_a_bug(capsys, monkeypatch):
+    from trains.commands import synthesize
+
+    def huge(args):
+        raise MemoryError("Unable to allocate 7.28 TiB for an array")
+
+    monkeypatch.setattr(synthesize, "run", huge)
+    err = _bad_input(capsys, "synthesize", "--ratio", "7", "--z-max", "1000000")
+    assert "7.28 TiB" in err and "less work" in err
+
+
 def test_the_convention_is_documented_in_help_and_readme(capsys):
     code, out, _ = _run(capsys, "--help")
     assert code == 0
@@ -443,6 +454,20 @@ def test_progress_bar_on_a_terminal(monkeypatch):
     assert "synthesize" in fake.getvalue() and "4/4" in fake.getvalue()
 
 
+def test_busy_spinner_on_a_terminal_only(monkeypatch):
+    from trains.commands import _common
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    for stream, shown in ((Tty(), True), (io.StringIO(), False)):
+        monkeypatch.setattr(sys, "stderr", stream)
+        with _common.busy("rack outline", delay=0):
+            pass
+        assert ("rack outline" in stream.getvalue()) == shown
+
+
 # ---------------------------------------------------------------------------------------------
 # 6. missing from the CLI: an internal pair drawn; PNG fill respects holes
 
@@ -559,7 +584,7 @@ def _argv(draw, command: str) -> list[str]:
 
 
 @pytest.mark.parametrize("command", sorted(_OPTIONS))
-@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_random_argv_gets_a_clear_answer(command, data):
     argv = data.draw(_argv(command))

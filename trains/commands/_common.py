@@ -257,9 +257,9 @@ def progress_bar(
 
 
 @contextlib.contextmanager
-def busy(desc: str) -> Iterator[None]:
+def busy(desc: str, delay: float = 1.0) -> Iterator[None]:
     """A tqdm spinner with the elapsed time on stderr while a call without a progress callback
-    runs (off when stderr is not a terminal)."""
+    runs (off when stderr is not a terminal; shown after ``delay`` s)."""
     if not show_progress():
         yield
         return
@@ -272,7 +272,7 @@ def busy(desc: str) -> Iterator[None]:
         file=sys.stderr,
         leave=False,
         bar_format="{desc} {elapsed}",
-        delay=1.0,
+        delay=delay,
     )
 
     def tick() -> None:
