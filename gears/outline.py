@@ -79,7 +79,7 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     if pair.is_rack:
         raise GearError("outlines of a pinion-and-rack pair are not drawn; use the gear alone")
     angle = check_real("angle", angle)
-    g1, g2 = pair.gears
+    g1, g2 = pair.mounted
     c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
     p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1)
     m2 = "shaper" if (g2.internal and method == "rack") else method

@@ -380,9 +380,11 @@ class GearPair:
         return 0.0 if self.is_rack else float(self._geometry.tip_alteration)
 
     @cached_property
-    def gears(self) -> tuple[Gear, Gear | Rack]:
-        """``(g1, g2)`` as mounted in this pair: the pair's tip shortening k added to each gear's
-        own ``tip_alteration`` (e.g. a ring tip shortened against fillet interference)."""
+    def mounted(self) -> tuple[Gear, Gear | Rack]:
+        """The gears as mounted in this pair: ``g1`` and ``g2`` (the gears as given) with the
+        pair's tip shortening k added to each gear's own ``tip_alteration``. Every quantity of
+        the pair (tip diameters, contact ratio, :meth:`check`) is of these; measure a gear as
+        mounted with ``pair.mounted[0].chordal_thickness()``, as given with ``pair.g1``."""
         k = self.tip_alteration
         if k == 0.0:
             return self.g1, self.g2
@@ -396,7 +398,7 @@ class GearPair:
     def tip_diameters(self) -> tuple[float, float]:
         """Tip diameters of the gears as mounted (after tip shortening and each gear's own tip
         alteration); a rack's is ``inf``."""
-        m1, m2 = self.gears
+        m1, m2 = self.mounted
         if self.is_rack:
             return m1.tip_diameter, math.inf
         return m1.tip_diameter, m2.tip_diameter
@@ -528,7 +530,7 @@ class GearPair:
     def _placement(self, angle: float) -> tuple[float, tuple[float, float]]:
         if self.is_rack:
             raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
-        g1, g2 = self.gears
+        g1, g2 = self.mounted
         return pair_placement(g1.teeth, g2.teeth, self.center_distance, self.internal, angle)
 
     def scene(
@@ -555,7 +557,7 @@ class GearPair:
         angle2, centre2 = self._placement(angle)
         parts = []
         outlines = self._unplaced(tolerance, method, backlash, cutter)
-        for i, (gear, shape) in enumerate(zip(self.gears, outlines, strict=True)):
+        for i, (gear, shape) in enumerate(zip(self.mounted, outlines, strict=True)):
             b = face_width if face_width is not None else gear.face_width
             b = check_positive("face_width", b if b is not None else 10.0 * gear.module)
             twist = helix_twist(b, gear.helix_angle, gear.reference_diameter)
@@ -600,7 +602,7 @@ class GearPair:
         ``min_contact_ratio`` and ``min_tip_land`` are finite and >= 0."""
         min_contact_ratio = check_real("min_contact_ratio", min_contact_ratio, 0.0, low_open=False)
         min_tip_land = check_real("min_tip_land", min_tip_land, 0.0, low_open=False)
-        m1, m2 = self.gears
+        m1, m2 = self.mounted
         findings = list(m1.check(min_tip_land).prefixed("g1").values())
         if not self.is_rack:
             findings += list(m2.check(min_tip_land).prefixed("g2").values())
@@ -623,7 +625,7 @@ class GearPair:
         """Distances along the line of action from N1 to gear 1's form circle and from N2 to
         gear 2's (0 for a rack): sqrt(r_Ff^2 - r_b^2) (:func:`gears.checks.form_lengths`)."""
         lengths = []
-        for g in self.gears:
+        for g in self.mounted:
             if isinstance(g, Rack):
                 lengths.append(0.0)
                 continue
@@ -639,7 +641,7 @@ class GearPair:
         addendum in mm. A tip beyond its limit reaches the mate's fillet (``tip_interference``).
         """
         p = self.path_of_contact
-        g1, g2 = self.gears
+        g1, g2 = self.mounted
         u_f1, l2 = self._form_lengths
         if self.is_rack:
             # the rack's tip line cuts the line of action (u_C - u) sin(alpha) above the pitch line
@@ -651,7 +653,7 @@ class GearPair:
 
     def _interference_findings(self) -> list[Finding]:
         p = self.path_of_contact
-        g1, g2 = self.gears
+        g1, g2 = self.mounted
         # gear 2's tip must meet gear 1's flank at or above gear 1's form circle; gear 1's tip
         # (external) at least l2 before N2, (internal) within l2 of N2: gears.checks
         u_f1, l2 = self._form_lengths
@@ -695,7 +697,7 @@ class GearPair:
 
     def _internal_findings(self) -> list[Finding]:
         """The KHK internal-gear checks (standards.md §1.8), each as a signed angle margin."""
-        g1, g2 = self.gears
+        g1, g2 = self.mounted
         a = self.center_distance
         ra1, ra2 = g1.tip_diameter / 2, g2.tip_diameter / 2
         rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2

@@ -92,7 +92,7 @@ def pair_figure(pair, angle: float = 0.0, tolerance: float = 1e-3, ax=None):
     p1, p2 = pair.outlines(angle, tolerance)
     fig = outlines_figure(p1, p2, ax=ax)
     ax = fig.axes[0]
-    g1 = pair.gears[0]
+    g1 = pair.mounted[0]
     rb1 = g1.base_diameter / 2
     aw = math.radians(pair.working_pressure_angle)
     s = -1.0 if pair.internal else 1.0

@@ -132,7 +132,7 @@ def test_unreachable_center_distance_names_the_reachable_range():
         )  # fmt: skip
     # at the high end the mounted pinion's tip reaches its root: no tooth left beyond it
     p = GearPair.at_center_distance(Gear(12, 3), Gear(24, 3), high * (1 - 1e-10), split="keep")
-    assert p.tip_diameters[0] - p.gears[0].root_diameter == pytest.approx(0.0, abs=1e-6)
+    assert p.tip_diameters[0] - p.mounted[0].root_diameter == pytest.approx(0.0, abs=1e-6)
 
 
 def test_thickness_and_pins_only_where_they_exist():

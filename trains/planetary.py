@@ -1273,7 +1273,7 @@ class Planetary:
         except TrainError as exc:
             lines.append(f"ratio (ring fixed): {exc}")
         for name, pair in self._pairs.items():
-            g1, g2 = pair.gears
+            g1, g2 = pair.mounted
             lines.append(
                 f"{name}: z {g1.teeth}/{g2.teeth}, x {g1.profile_shift:+.4f}/"
                 f"{g2.profile_shift:+.4f}, a_w {pair.center_distance:.4f} mm, alpha_w "

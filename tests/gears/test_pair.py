@@ -36,7 +36,7 @@ JOLDASBEKOV_5_4 = [
 def test_joldasbekov_5_4_pair_table(row):
     z1, z2, x1, x2, aw, a, rw1, rw2, ri1, ri2, re1, re2, eps, sa1, sa2 = row
     p = _pair(z1, z2, x1, x2)
-    g1, g2 = p.gears
+    g1, g2 = p.mounted
     assert p.working_pressure_angle == pytest.approx(aw, abs=5e-6)
     assert p.center_distance == pytest.approx(a, abs=5e-6)
     assert np.array(p.working_diameters) / 2 == pytest.approx([rw1, rw2], abs=5e-6)
@@ -47,7 +47,7 @@ def test_joldasbekov_5_4_pair_table(row):
     # tip shortening = the book's constant-clearance tips (6.46)-(6.47): R_e1 = A - R_i2 - 0.25 m
     assert g1.tip_diameter / 2 == pytest.approx(p.center_distance - g2.root_diameter / 2 - 0.25)
     assert g2.tip_diameter / 2 == pytest.approx(p.center_distance - g1.root_diameter / 2 - 0.25)
-    # pair.gears carries the shortened tips
+    # pair.mounted carries the shortened tips
     assert (g1.tip_diameter, g2.tip_diameter) == pytest.approx(p.tip_diameters, rel=1e-15)
 
 
@@ -58,7 +58,7 @@ def test_joldasbekov_5_4_module_independence_and_tip_rule():
     assert np.array(p.tip_diameters) / 2 == pytest.approx([14.52506, 30.32506], abs=1e-5)
     assert p.contact_ratio == pytest.approx(1.36264, abs=5e-6)
     # last row: s_a1 = 0.279 < 0.3 m, so the book's §12 rule (tip land >= 0.3 m) flags it
-    g1, g2 = _pair(10, 30, 0.4118, -0.4118).gears
+    g1, g2 = _pair(10, 30, 0.4118, -0.4118).mounted
     assert g1.check(min_tip_land=0.3).failed() == ["undercut", "pointed_tip"]
     assert g2.check(min_tip_land=0.3).ok
     # (x1 = 0.4118 is the book's rounded (17 - z)/17: a 0.003 m undercut by the exact rule)
@@ -132,7 +132,7 @@ LECTURE_G = [
 def test_lecture_pairs(row):
     _, z1, z2, m, x1, x2, aw, a, y, dy, da1, da2, df1, df2, sa1, sa2, eps = row
     p = _pair(z1, z2, x1, x2, m=m)
-    g1, g2 = p.gears
+    g1, g2 = p.mounted
     assert p.working_pressure_angle == pytest.approx(aw, abs=1e-6)
     assert p.center_distance == pytest.approx(a, abs=1e-6)
     assert p.center_distance_modification == pytest.approx(y, abs=1e-6)
@@ -561,10 +561,10 @@ def test_pair_check_names_and_configurable_limits():
     assert not p.check(min_contact_ratio=1.25).ok
     assert p.check(min_contact_ratio=1.25).failed() == ["contact_ratio"]
     assert p.check(min_tip_land=0.5)["g1.pointed_tip"].margin == pytest.approx(
-        p.gears[0].tip_thickness - 1.5, rel=1e-12
+        p.mounted[0].tip_thickness - 1.5, rel=1e-12
     )
-    # the pointed-tip check runs on the shortened tip (pair.gears), not on the blank
-    assert p.gears[0].tip_diameter < p.g1.tip_diameter
+    # the pointed-tip check runs on the shortened tip (pair.mounted), not on the blank
+    assert p.mounted[0].tip_diameter < p.g1.tip_diameter
     ri = GearPair(Gear(20, 1), Gear(80, 1, internal=True)).check()
     assert {
         "ring_tip_above_base", "involute_interference", "trochoid_interference",
@@ -580,7 +580,7 @@ def test_tip_interference_margin_meaning():
     # contact-start diameter of gear 1 must not be below its form diameter
     for z1, z2, x1 in [(20, 40, 0.0), (14, 60, 0.2), (25, 25, -0.2)]:
         p = _pair(z1, z2, x1)
-        g1 = p.gears[0]
+        g1 = p.mounted[0]
         start_d = 2 * math.hypot(g1.base_diameter / 2, p.path_of_contact.start)
         margin = p.check()["tip_interference"].margin
         assert (margin >= 0) == (start_d >= g1.form_diameter)
@@ -592,7 +592,7 @@ def test_tip_interference_margin_meaning():
 def test_tip_shortening_switch():
     long = _pair(12, 24, 0.6, 0.36, m=3, tip_shortening=False)
     assert long.tip_diameters == pytest.approx((45.6, 80.16))
-    assert long.gears[0].tip_diameter == pytest.approx(45.6)
+    assert long.mounted[0].tip_diameter == pytest.approx(45.6)
     short = _pair(12, 24, 0.6, 0.36, m=3)
     assert short.contact_ratio < long.contact_ratio
 

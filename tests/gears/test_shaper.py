@@ -203,7 +203,7 @@ def test_gear_with_cutter_drives_checks():
     g1 = Gear(20, 2, profile_shift=0.3, cutter=c)
     g2 = Gear(80, 2, internal=True, profile_shift=0.6, cutter=c)
     assert g1.form_diameter == pytest.approx(c.form_diameter(g1))
-    assert g1.form_diameter > rack_pair.gears[0].form_diameter + 0.1
+    assert g1.form_diameter > rack_pair.mounted[0].form_diameter + 0.1
     assert g1.root_diameter == pytest.approx(c.root_diameter(g1))
     pair = GearPair(g1, g2)
     assert pair.check().failed() == ["tip_interference"]
@@ -221,7 +221,7 @@ def _mesh_check(pair, method, tol=1e-4):
     # source: issue 5: no overlap (< 1e-4 mm^2), touching flanks at zero backlash; 0.5 deg more
     # turn of gear 1 either way overlaps (far beyond the tolerance). Overlaps can only occur near
     # the pitch point, so both outlines are clipped to a box there first (fast intersections).
-    g1 = pair.gears[0]
+    g1 = pair.mounted[0]
     m, rw1 = g1.module, pair.working_diameters[0] / 2
     zone = shapely.box(rw1 - 4 * m, -4 * m, rw1 + 4 * m, 4 * m)
     for angle in (0.0, 4.0, 11.0):

@@ -27,7 +27,7 @@ def _pair(x1, x2, z1=12, z2=28):
 
 
 def _mounted_tip_thickness(x1, x2, which):
-    return _pair(x1, x2).gears[which].tip_thickness
+    return _pair(x1, x2).mounted[which].tip_thickness
 
 
 @pytest.fixture(scope="module")

@@ -105,7 +105,7 @@ def test_pair_finite_or_gear_error(z1, z2, x1, x2, m, beta, internal, shortening
     )  # fmt: skip
     if geometry is None:
         return
-    for g in p.gears:
+    for g in p.mounted:
         _gear_quantities(g)
     _attempt(lambda: (p.contact_ratio, p.total_contact_ratio, p.overlap_ratio if beta else 0.0))
     _attempt(lambda: p.max_specific_sliding)

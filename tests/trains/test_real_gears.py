@@ -661,7 +661,7 @@ def test_coaxial_shifts_property(z, m, split, extra):
         return
     for p in pairs:
         assert abs(p.center_distance - target) < 1e-9
-        assert all(math.isfinite(g.profile_shift) for g in p.gears)
+        assert all(math.isfinite(g.profile_shift) for g in p.mounted)
 
 
 def test_closed_differential_friction_equals_per_mesh_mapping():

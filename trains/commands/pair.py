@@ -179,7 +179,7 @@ def _gear_rows(g: Gear) -> list[tuple[str, str, Callable[[], object]]]:
 def pair_report(pair: GearPair, min_contact_ratio=1.1, min_tip_land=0.2, friction=0.1) -> str:
     """A readable report of ``pair``: both gears' dimensions (as mounted, after tip
     shortening), the mesh quantities and ``pair.check()`` with every margin."""
-    g1, g2 = pair.gears
+    g1, g2 = pair.mounted
     lines = []
     rows1, rows2 = _gear_rows(g1), _gear_rows(g2)
     lines.append(f"{'':28s} {'gear 1':>18s} {'gear 2':>18s}")
@@ -217,7 +217,7 @@ def run(args: argparse.Namespace) -> int:
     pair = build_pair(args)
     ok = pair.check(args.min_contact_ratio, args.min_tip_land).ok
     kind = "internal" if pair.internal else "external"
-    g1, g2 = pair.gears
+    g1, g2 = pair.mounted
     print(
         f"gear pair {g1.teeth}/{g2.teeth} ({kind}), m_n = {g1.module:g} mm, "
         f"x = {g1.profile_shift:.4f} / {g2.profile_shift:.4f}"
