@@ -152,6 +152,24 @@ def test_a_request_too_large_for_memory_is_bad_input_not_a_bug(capsys, monkeypat
     assert "7.28 TiB" in err and "less work" in err
 
 
+def test_a_reader_that_closes_early_is_no_error():
+    # `geartrain ... | head -1` with a report larger than the pipe buffer (1 MB here)
+    code = (
+        "import sys\n"
+        "from trains.commands import pair\n"
+        "pair.run = lambda args: print('x' * 100 + '\\n') or print('y\\n' * 500_000) or 0\n"
+        "from trains.cli import main\n"
+        "sys.exit(main(['pair', '12', '24']))\n"
+    )
+    p = subprocess.Popen(
+        [sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT
+    )
+    p.stdout.readline()
+    p.stdout.close()
+    err = p.stderr.read().decode()
+    assert p.wait() == 0 and "Traceback" not in err and "BrokenPipe" not in err, err
+
+
 def test_the_convention_is_documented_in_help_and_readme(capsys):
     code, out, _ = _run(capsys, "--help")
     assert code == 0

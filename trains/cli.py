@@ -22,6 +22,7 @@ import argparse
 import contextlib
 import importlib
 import io
+import os
 import pkgutil
 import sys
 import traceback
@@ -163,8 +164,12 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{prog}: internal error (a bug in geartrain; please report it)", file=sys.stderr)
         return INTERNAL_ERROR
     text = out.getvalue()
-    if text:
-        sys.stdout.write(wrap(text.rstrip("\n")) + "\n")
+    try:
+        if text:
+            sys.stdout.write(wrap(text.rstrip("\n")) + "\n")
+        sys.stdout.flush()
+    except BrokenPipeError:  # `geartrain ... | head`: the reader has gone, which is no error
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
     return status
 
 
