@@ -38,10 +38,17 @@ from gears.rack import BasicRack
 
 __all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs"]
 
-#: candidates per second per local thread assumed by the size check (docs/performance.md)
-LOCAL_RATE = 5.0e5
+#: candidates per second per local thread assumed by the size check (measured 1.2e6 on one
+#: shared core, docs/performance.md)
+LOCAL_RATE = 1.0e6
 #: default limit on the estimated time of a local search, seconds
 MAX_SECONDS = 600.0
+
+#: candidates checked at once inside a chunk on a Dask worker: temporaries of 64 kB stay on
+#: the heap (workers set MALLOC_TRIM_THRESHOLD_, which maps and unmaps larger ones per call);
+#: local threads take larger blocks (less Python, so less time holding the GIL)
+_BLOCK = 8192
+_LOCAL_BLOCK = 1 << 15
 
 _KEYS = ("module", "helix_angle", "z1", "z2", "x1", "x2")
 _GEOMETRY = (
@@ -125,24 +132,28 @@ def _dtype(columns: Sequence[str]) -> np.dtype:
     return np.dtype([(c, np.int64 if c in ("z1", "z2") else np.float64) for c in columns])
 
 
-def evaluate_chunk(space: _Space, start: int, stop: int) -> tuple[np.ndarray, int, int]:
+def evaluate_chunk(
+    space: _Space, start: int, stop: int, block: int = _BLOCK
+) -> tuple[np.ndarray, int, int]:
     """Check candidates ``start .. stop-1`` of ``space`` and reduce them.
 
     Returns ``(rows, feasible, checked)``: the chunk's best rows (its top-k, its Pareto set, or
     all its feasible rows when ``top`` is None), the number of feasible candidates and the
-    number checked. This one function runs on local threads and as a Dask task.
+    number checked. This one function runs on local threads and as a Dask task; it checks
+    ``block`` candidates at a time.
     """
-    idx = np.arange(start, stop, dtype=np.int64)
-    ib, i1, i2 = np.unravel_index(idx, space.shape)
-    # base rows are ordered module-major, then helix: a chunk holds a few (m, beta) groups,
-    # each checked with scalar m and beta (the trigonometry of the helix is then scalar)
-    mb = space.base[ib, 0] * 1e3 + space.base[ib, 1]
-    cuts = np.flatnonzero(mb[1:] != mb[:-1]) + 1
-    found = [
-        _check_group(space, ib[a:b], i1[a:b], i2[a:b])
-        for a, b in itertools.pairwise([0, *cuts.tolist(), len(idx)])
-    ]
-    found = [f for f in found if f is not None]
+    found = []
+    for lo in range(start, stop, block):
+        idx = np.arange(lo, min(lo + block, stop), dtype=np.int64)
+        ib, i1, i2 = np.unravel_index(idx, space.shape)
+        # base rows are ordered module-major, then helix: a block holds a few (m, beta)
+        # groups, each checked with scalar m and beta (the helix trigonometry is then scalar)
+        mb = space.base[ib, 0] * 1e3 + space.base[ib, 1]
+        cuts = np.flatnonzero(mb[1:] != mb[:-1]) + 1
+        for a, b in itertools.pairwise([0, *cuts.tolist(), len(idx)]):
+            f = _check_group(space, ib[a:b], i1[a:b], i2[a:b])
+            if f is not None:
+                found.append(f)
     if not found:
         return np.empty(0, _dtype(space.columns)), 0, stop - start
     values = {c: np.concatenate([f[c] for f in found]) for c in space.columns}
@@ -672,7 +683,7 @@ def _run_local(space, bounds, threads, report):
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
     if threads == 1:
-        results = (evaluate_chunk(space, *b) for b in bounds)
+        results = (evaluate_chunk(space, *b, _LOCAL_BLOCK) for b in bounds)
         for rows, f, c in results:
             acc, feasible, examined, done = _merge(acc, rows, space), feasible + f, examined + c, \
                 done + 1  # fmt: skip
@@ -684,7 +695,7 @@ def _run_local(space, bounds, threads, report):
         pending = set()
         queue = iter(bounds)
         for b in itertools.islice(queue, 2 * threads):
-            pending.add(pool.submit(evaluate_chunk, space, *b))
+            pending.add(pool.submit(evaluate_chunk, space, *b, _LOCAL_BLOCK))
         while pending:
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for fut in finished:
@@ -693,7 +704,7 @@ def _run_local(space, bounds, threads, report):
                 feasible, examined, done = feasible + f, examined + c, done + 1
                 nxt = next(queue, None)
                 if nxt is not None:
-                    pending.add(pool.submit(evaluate_chunk, space, *nxt))
+                    pending.add(pool.submit(evaluate_chunk, space, *nxt, _LOCAL_BLOCK))
                 if report:
                     report(done, len(bounds), examined)
     finally:
