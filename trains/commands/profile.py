@@ -16,7 +16,16 @@ from __future__ import annotations
 
 import argparse
 
-from trains.commands._common import OK, busy, finite, integer, non_negative, output_file, positive
+from trains.commands._common import (
+    OK,
+    busy,
+    finite,
+    integer,
+    non_negative,
+    output_file,
+    positive,
+    progress_bar,
+)
 
 HELP = "tooth outline (analytic, simulated rack or shaper cutting) to .svg/.dxf/.png/.npz"
 
@@ -111,10 +120,14 @@ def run(args: argparse.Namespace) -> int:
         args.teeth, args.module, args.pressure_angle, args.helix, args.shift,
         internal=args.internal, cutter=cutter,
     )  # fmt: skip
-    with busy(f"{args.method} outline"):
-        if args.mate is None:
-            shapes = [g.outline(args.tolerance, args.method, args.backlash, bore=args.bore)]
-        else:
+    if args.mate is None:
+        with progress_bar(f"{args.method} outline") as progress:
+            shapes = [
+                g.outline(args.tolerance, args.method, args.backlash, bore=args.bore,
+                          progress=progress)
+            ]  # fmt: skip
+    else:
+        with busy(f"{args.method} outlines"):  # GearPair.outlines has no progress callback
             # the mate is external; an internal gear is the ring of the pair (gear 2)
             helix = args.helix if args.internal else -args.helix
             mate = Gear(
