@@ -168,8 +168,10 @@ def _stage_set(scheme, hi, n_planets, z_min, z_max, module, mesh_checks, min_con
         found = synthesize(mid, n_planets, scheme, tolerance=cover, z_min=z_min, z_max=z_max,
                            module=module, mesh_checks=mesh_checks, limit=10**9,
                            min_contact_ratio=min_contact_ratio)  # fmt: skip
-    except TrainError:  # this scheme cannot reach the range with these roles
-        return []
+    except TrainError as exc:  # this scheme cannot reach the range with these roles
+        if "cannot be reached" in str(exc):
+            return []
+        raise
     return [c for c in found if 1 < c.ratio <= hi]
 
 

@@ -57,8 +57,11 @@ from trains.planetary import (
 
 __all__ = ["Candidate", "Candidates", "synthesize"]
 
-#: Tooth-count sets examined per vectorised block (bounds the memory of a stepped search).
+#: Tooth-count sets examined per vectorised block (bounds the memory of every search).
 BLOCK = 1_000_000
+#: Sets per second assumed for the size check (measured 1.2-3.4 x 10^7 on a shared core,
+#: docs/performance.md); a search estimated over ``max_seconds`` is refused before any work.
+SETS_PER_SECOND = 1.0e7
 
 
 @dataclass(frozen=True)
@@ -264,6 +267,7 @@ def synthesize(
     mesh_checks: str = "geometry",
     limit: int = 20,
     progress: Callable[[int, int], object] | None = None,
+    max_seconds: float = 30.0,
 ) -> Candidates:
     """Tooth numbers of a planetary stage that meet a target ratio under every condition.
 
@@ -310,6 +314,11 @@ def synthesize(
     progress : callable, optional
         Called as ``progress(done, total)`` after each block of tooth-number sets is filtered
         (the command line draws its progress bar with it).
+    max_seconds : float
+        The search is refused before any work when its estimated time (its tooth-number sets
+        at :data:`SETS_PER_SECOND`) exceeds this: the error names the estimate, the z_max that
+        fits and this parameter. Sets are examined in blocks of :data:`BLOCK`, so memory does
+        not grow with ``z_max``.
 
     Returns
     -------
@@ -382,6 +391,11 @@ def synthesize(
     if allow_shift and scheme not in ("simple", "stepped"):
         raise TrainError("allow_shift applies to the simple and stepped schemes")
 
+    budget = float(max_seconds) if isinstance(max_seconds, numbers.Real) else math.nan
+    if not (budget > 0 and math.isfinite(budget)):
+        raise TrainError(f"max_seconds = {max_seconds!r}; valid is a number > 0")
+    _check_size(scheme, z_min, z_max, 5 if allow_shift else 1, budget)
+
     rack = BasicRack.iso53()
     search = _Search(scheme, target, tol, ks, z_min, z_max, c, min_internal_difference,
                      min_contact_ratio, rack.addendum, rack.pressure_angle, fixed, input,
@@ -425,6 +439,37 @@ def synthesize(
     if mesh_checks == "full":
         removed["full checks"] = dropped_full
     return Candidates(out, search.examined, removed)
+
+
+def _check_size(scheme: str, z_min: int, z_max: int, shifts: int, budget: float) -> None:
+    """Refuse a search whose estimated time exceeds ``budget`` seconds (issue 11): n^2 sets for
+    a simple stage, n^3 for the three-index schemes (a double-planet search expands the planet
+    grid of about n (z1, z3) survivors), n = z_max - z_min + 1, times the shift variants."""
+    n = z_max - z_min + 1
+    dims = 2 if scheme == "simple" else 3
+    sets = n**dims * shifts
+    seconds = sets / SETS_PER_SECOND
+    if seconds <= budget:
+        return
+    fits = z_min - 1 + int((budget * SETS_PER_SECOND / shifts) ** (1 / dims))
+    raise TrainError(
+        f"the {scheme} search over z_min = {z_min} ... z_max = {z_max} examines about "
+        f"{sets:.3g} tooth-number sets, about {_duration(seconds)} at {SETS_PER_SECOND:.0e} "
+        f"sets/s, over the budget max_seconds = {budget:g} s; lower z_max (about {fits} fits) "
+        f"or raise max_seconds"
+    )
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 2 * 86400:
+        return f"{seconds / 3600:.1f} h"
+    if seconds < 2 * 3.15e7:
+        return f"{seconds / 86400:.0f} days"
+    return f"{seconds / 3.15e7:.3g} years"
 
 
 def _rules_ok(stage: Planetary, report, z_min: int) -> bool:
@@ -471,23 +516,22 @@ class _Search:
 
     # --- enumeration
     def _blocks(self):
+        """Tooth-count sets in blocks of at most BLOCK (memory does not grow with z_max): the
+        flat index over (z1, z2) or (z1, z2, z2'), in the order of a meshgrid."""
         z = np.arange(self.z_min, self.z_max + 1, dtype=np.int64)
-        n = len(z)
         s = self.scheme
-        self.n_blocks = 1  # for progress reports
-        if s == "simple":
-            z1, z2 = (a.ravel() for a in np.meshgrid(z, z, indexing="ij"))
-            yield {"z1": z1, "z2": z2, "z2p": z2}
-        elif s == "double-planet":
-            z1, z3 = (a.ravel() for a in np.meshgrid(z, z, indexing="ij"))
-            yield {"z1": z1, "z3": z3}
-        else:
-            per = max(1, BLOCK // (n * n))
-            self.n_blocks = -(-n // per)
-            for start in range(0, n, per):
-                z1, z2, z2p = (a.ravel() for a in
-                               np.meshgrid(z[start:start + per], z, z, indexing="ij"))  # fmt: skip
-                yield {"z1": z1, "z2": z2, "z2p": z2p}
+        dims = 2 if s in ("simple", "double-planet") else 3
+        total = len(z) ** dims
+        self.n_blocks = max(1, -(-total // BLOCK))  # for progress reports
+        for start in range(0, total, BLOCK):
+            idx = np.arange(start, min(start + BLOCK, total), dtype=np.int64)
+            zs = [z[i] for i in np.unravel_index(idx, (len(z),) * dims)]
+            if s == "simple":
+                yield {"z1": zs[0], "z2": zs[1], "z2p": zs[1]}
+            elif s == "double-planet":
+                yield {"z1": zs[0], "z3": zs[1]}
+            else:
+                yield {"z1": zs[0], "z2": zs[1], "z2p": zs[2]}
 
     def run(self, progress=None) -> dict[str, np.ndarray]:
         parts = []
