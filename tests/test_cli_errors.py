@@ -586,6 +586,15 @@ _OPTIONS = {
               "sun=nan", "sun", "ring=1/0", "=3", "arm=-2.5"], "--output": ["arm", "sun", "x"],
               "--efficiency": _NUMBERS, "--torque": _NUMBERS},
     "demo": {"--verbose": None},
+    "mesh": {"--module": _NUMBERS, "--shift": _NUMBERS, "--helix": ["0", "20", "-15", "nan"],
+             "--face-width": _NUMBERS, "--herringbone": None, "--internal": None,
+             "--rim": _NUMBERS, "--method": ["analytic", "rack", "x"], "--bore": _NUMBERS,
+             "--backlash": _NUMBERS, "--tolerance": ["0.05", "nan", "0", "-1"]},
+    "search": {"--ratio": _NUMBERS, "--ratio-tolerance": ["0", "0.05", "nan"],
+               "--center-distance": [*_NUMBERS, "30", "50"], "--split": ["keep", "x"],
+               "--helix": ["0", "15", "nan"], "--min-contact-ratio": _NUMBERS,
+               "--min-tip-land": _NUMBERS, "--allow-undercut": None,
+               "--objective": ["sliding", "-contact_ratio", "bogus"], "--top": ["0", "3", "x"]},
 }  # fmt: skip
 _POSITIONAL = {
     "pair": st.lists(st.sampled_from(_TEETH), min_size=0, max_size=3),
@@ -594,6 +603,8 @@ _POSITIONAL = {
     "profile": st.lists(st.sampled_from(_TEETH[:9]), min_size=0, max_size=2),
     "train": st.sampled_from([[TRAIN_FILE], [str(ROOT)], ["missing.toml"], []]),
     "demo": st.just([]),
+    "mesh": st.lists(st.sampled_from(_TEETH[:9]), min_size=0, max_size=2),
+    "search": st.sampled_from([["pairs"], ["gearbox"], ["nothing"], []]),
 }
 _TMP = tempfile.mkdtemp(prefix="geartrain-cli-")
 
@@ -612,6 +623,13 @@ def _argv(draw, command: str) -> list[str]:
             argv += [name, draw(st.sampled_from(values))]
     if command == "profile":
         argv += ["--tolerance", "0.05", "-o", os.path.join(_TMP, "h.npz")]
+    if command == "mesh":  # bounded work: a coarse mesh
+        argv += ["--tolerance", "0.05", "-o", os.path.join(_TMP, "h.stl")]
+    if command == "search" and argv[1:2] == ["pairs"]:  # bounded work: a small grid
+        argv += ["--teeth", "12", "24", "--shifts", "0", "0.5", "0.5", "--module", "2"]
+    if command == "search" and argv[1:2] == ["gearbox"]:
+        argv = [a for a in argv if a not in _OPTIONS["search"]]
+        argv += ["--ratio", "7", "--stages", "1", "--z-max", "40"]
     return argv
 
 
