@@ -51,6 +51,7 @@ from gears.rack import BasicRack, RackTool
 __all__ = [
     "GearMargins",
     "PairMargins",
+    "equal_sliding_split",
     "form_lengths",
     "gear_margins",
     "has_working_angle",
@@ -272,6 +273,61 @@ def proportional_split(z1, z2, total):
     with np.errstate(divide="ignore", invalid="ignore"):
         x1 = total / 2 + (0.5 - total / 2) * np.log10(z2 / z1) / np.where(flat, 1.0, den)
     return _out(np.where(flat, total / 2, x1))
+
+
+def equal_sliding_split(z1, z2, module, total, pressure_angle=20.0, helix_angle=0.0,
+                        internal=False, addendum=1.0, tip_shortening=True):  # fmt: skip
+    """x1 of the ``"equal_sliding"`` split of a shift sum (arrays): the largest specific sliding
+    of both flanks is equal, |zeta_1(u_A)| = |zeta_2(u_E)| (Joldasbekov §12 rule 3), the rule of
+    ``GearPair.at_center_distance(..., split="equal_sliding")``. As there: log|zeta_1| -
+    log|zeta_2| on 61 values of x1 (S/2 +- 1.5 external, -1.5 ... 1.5 internal), the first sign
+    change between two finite values, then bisection to machine precision. NaN where no split
+    balances (the pair method raises there).
+
+    >>> round(float(equal_sliding_split(12, 30, 4, 0.8)), 4)   # GearPair.at_center_distance
+    0.5271
+    """
+    args = np.broadcast_arrays(*(np.asarray(v, float) for v in (z1, z2, module, total)))
+    shape = args[0].shape
+    z1, z2, m, total = (v.ravel() for v in args)
+    s = -1.0 if internal else 1.0
+    grid = np.linspace(-1.5, 1.5, 61)[None, :] + (
+        total[:, None] / 2 if s > 0 else 0.0 * total[:, None]
+    )
+
+    def imbalance(x1):
+        x2 = total[:, None] - x1 if s > 0 else total[:, None] + x1
+        g = pair_geometry(z1[:, None], z2[:, None], m[:, None], x1, x2, pressure_angle,
+                          helix_angle, internal, addendum, tip_shortening, threads=1)  # fmt: skip
+        rb1 = base_diameter(z1, m, pressure_angle, helix_angle)[:, None] / 2
+        rb2 = base_diameter(z2, m, pressure_angle, helix_angle)[:, None] / 2
+        ra1, ra2 = g.tip_diameter_1 / 2, g.tip_diameter_2 / 2
+        tan_wt = np.tan(np.radians(g.working_pressure_angle))
+        u_a, u_e, _ = line_positions(ra1, ra2, rb1, rb2, tan_wt, s)
+        u = (z2 / z1)[:, None]
+        with np.errstate(all="ignore"):
+            zeta1, _ = specific_sliding(u_a, rb1, rb2, tan_wt, u, internal)
+            _, zeta2 = specific_sliding(u_e, rb1, rb2, tan_wt, u, internal)
+            a, b = np.abs(zeta1), np.abs(zeta2)
+            v = np.log(a) - np.log(b)
+        return np.where((ra1 >= rb1) & (ra2 >= rb2) & (a > 0) & (b > 0), v, np.nan)
+
+    v = imbalance(grid)
+    ok = np.isfinite(v)
+    hit = ok[:, :-1] & ok[:, 1:] & (v[:, :-1] * v[:, 1:] <= 0)
+    found = hit.any(axis=1)
+    i = np.argmax(hit, axis=1)
+    rows = np.arange(len(z1))
+    lo, hi = grid[rows, i][:, None], grid[rows, i + 1][:, None]
+    f_lo = v[rows, i][:, None]
+    exact = f_lo == 0
+    for _ in range(_BISECT):
+        mid = 0.5 * (lo + hi)
+        fm = imbalance(mid)
+        same = np.sign(fm) == np.sign(f_lo)
+        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    x1 = np.where(exact, lo, 0.5 * (lo + hi))[:, 0]
+    return _out(np.where(found, x1, np.nan).reshape(shape))
 
 
 def form_lengths(form_diameter, base_diameter):

@@ -30,7 +30,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from gears.checks import has_working_angle, pair_margins, proportional_split
+from gears.checks import (
+    equal_sliding_split,
+    has_working_angle,
+    pair_margins,
+    proportional_split,
+)
 from gears.errors import GearError
 from gears.geometry import check_real, min_profile_shift, transverse_pressure_angle
 from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
@@ -64,7 +69,7 @@ _INTERNAL = (
     "involute_interference", "trochoid_interference", "radial_interference",
     "ring_tip_above_base",
 )  # fmt: skip
-_SPLITS = ("proportional", "keep")
+_SPLITS = ("proportional", "equal_sliding", "keep")
 
 
 @dataclass(frozen=True)
@@ -178,9 +183,15 @@ def _check_group(space: _Space, ib, i1, i2) -> dict[str, np.ndarray] | None:
         total = np.asarray(total, float)
         if space.split == "proportional":
             x1 = proportional_split(z1, z2, total)
+        elif space.split == "equal_sliding":
+            x1 = equal_sliding_split(z1, z2, m, total, space.pressure_angle, beta,
+                                     space.internal, space.rack.addendum,
+                                     space.tip_shortening)  # fmt: skip
         x2 = total + x1 if space.internal else total - x1
     lo, hi = space.shift_range
-    keep = has_working_angle(z1, z2, x1, x2, space.pressure_angle, beta, space.internal)
+    keep = np.isfinite(x1) & np.isfinite(x2)  # a split may not exist (equal sliding)
+    x1, x2 = np.where(keep, x1, 0.0), np.where(keep, x2, 0.0)
+    keep &= has_working_angle(z1, z2, x1, x2, space.pressure_angle, beta, space.internal)
     keep &= (x1 >= lo - 1e-12) & (x1 <= hi + 1e-12) & (x2 >= lo - 1e-12) & (x2 <= hi + 1e-12)
     lim = space.limits
     if not lim.allow_undercut:  # cheap first: both gears' undercut finding (x >= x_min)
@@ -527,10 +538,11 @@ def pairs(
         Target gear ratio z2/z1; tooth pairs within ``ratio_tolerance`` (relative) are tried.
     center_distance : float or None
         None: x1 and x2 both run over ``shifts``. A number (mm): the shift sum that gives this
-        centre distance is solved exactly per tooth pair and split by ``split``
-        (``"proportional"``: the DIN 3992 style rule of ``GearPair.at_center_distance``;
-        ``"keep"``: x1 runs over ``shifts``, x2 takes the rest); both shifts must lie within
-        the range of ``shifts``.
+        centre distance is solved exactly per tooth pair and split by ``split``, the rules of
+        ``GearPair.at_center_distance`` (``"proportional"``: the DIN 3992 style rule;
+        ``"equal_sliding"``: equal largest specific sliding of both flanks; ``"keep"``: x1
+        runs over ``shifts``, x2 takes the rest); both shifts must lie within the range of
+        ``shifts``.
     module, helix : float or sequence
         Normal modules (mm) and helix angles of gear 1 (degrees) to try.
     teeth : (z_min, z_max) or sequence of int

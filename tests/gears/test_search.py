@@ -97,6 +97,25 @@ def test_proportional_split_matches_at_center_distance():
         assert row["x2"] == pytest.approx(p.g2.profile_shift, abs=1e-12)
 
 
+@pytest.mark.parametrize("internal", [False, True])
+def test_equal_sliding_split_matches_at_center_distance(internal):
+    # independent route: GearPair.at_center_distance(..., split="equal_sliding") (Brent per
+    # pair on the scalar path of contact); the search's rows and margins agree with it
+    a, teeth = (43.0, (12, 40)) if not internal else (31.0, (14, 70))
+    r = pairs(center_distance=a, module=2, teeth=teeth, shifts=(-1.0, 1.5, 0.5),
+              split="equal_sliding", internal=internal, top=None, progress=False,
+              limits={"allow_undercut": True, "min_contact_ratio": 1.0})  # fmt: skip
+    assert len(r) > 3
+    for row in r.table[:12]:
+        g2 = Gear(int(row["z2"]), 2, internal=internal)
+        p = GearPair.at_center_distance(Gear(int(row["z1"]), 2), g2, a, split="equal_sliding")
+        assert row["x1"] == pytest.approx(p.g1.profile_shift, abs=1e-9)
+        assert row["x2"] == pytest.approx(p.g2.profile_shift, abs=1e-9)
+        margins = p.check(1.0)
+        assert row["tip_interference"] == pytest.approx(margins["tip_interference"].margin,
+                                                        abs=1e-8)  # fmt: skip
+
+
 def test_chunk_size_and_threads_do_not_change_the_answer():
     kw = dict(ratio=3.2, module=[2, 2.5], teeth=(12, 60), shifts=(-0.4, 1.0, 0.1),
               progress=False)  # fmt: skip

@@ -65,7 +65,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p.add_argument("--center-distance", "-a", type=positive("--center-distance", "mm"),
                    default=None, help="centre distance in mm: the shift sum is solved exactly "
                    "and split by --split")  # fmt: skip
-    p.add_argument("--split", choices=("proportional", "keep"), default="proportional",
+    p.add_argument("--split", choices=("proportional", "equal_sliding", "keep"),
+                   default="proportional",
                    help="how the shift sum is split at a centre distance")  # fmt: skip
     p.add_argument("--module", "-m", type=positive("--module", "mm"), nargs="+", default=[1.0],
                    help="normal modules to try, mm")  # fmt: skip
