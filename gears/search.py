@@ -41,7 +41,7 @@ from gears.geometry import check_real, min_profile_shift, transverse_pressure_an
 from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
 from gears.rack import BasicRack
 
-__all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs"]
+__all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs", "write_table"]
 
 #: candidates per second per local thread assumed by the size check (measured 1.2e6 on one
 #: shared core, docs/performance.md)
@@ -367,14 +367,7 @@ class SearchResult:
 
     def to_parquet(self, path) -> None:
         """Write the table to a Parquet file (needs pyarrow: ``pip install pyarrow``)."""
-        try:
-            import pyarrow as pa
-            import pyarrow.parquet as pq
-        except ImportError:
-            raise GearError(
-                "to_parquet needs pyarrow: pip install pyarrow (or pandas with pyarrow)"
-            ) from None
-        pq.write_table(pa.table({c: self.table[c] for c in self.columns}), str(path))
+        write_table(self.table, path, ".parquet")
 
     def format(self, columns: Sequence[str] | None = None) -> str:
         """A ranked text table (default: the parameters, a, eps, sliding, efficiency)."""
@@ -402,6 +395,33 @@ class SearchResult:
     def __repr__(self) -> str:
         return (f"SearchResult({len(self)} rows, examined={self.examined}, "
                 f"feasible={self.feasible})")  # fmt: skip
+
+
+def write_table(table: np.ndarray, path, suffix: str | None = None) -> None:
+    """Write a structured array to ``path``: Parquet (``.parquet``, needs pyarrow) or CSV
+    (``.csv``, a header line of column names); the format follows the suffix."""
+    import pathlib
+
+    path = pathlib.Path(path)
+    kind = (suffix or path.suffix).lower()
+    if kind == ".csv":
+        import csv
+
+        with path.open("w", newline="") as f:
+            out = csv.writer(f)
+            out.writerow(table.dtype.names)
+            out.writerows(row.tolist() if hasattr(row, "tolist") else row for row in table)
+        return
+    if kind != ".parquet":
+        raise GearError(f"file {str(path)!r}: valid suffixes are .parquet and .csv")
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ImportError:
+        raise GearError(
+            "writing Parquet needs pyarrow: pip install pyarrow (or pandas with pyarrow)"
+        ) from None
+    pq.write_table(pa.table({c: table[c] for c in table.dtype.names}), str(path))
 
 
 # --- input -------------------------------------------------------------------------------------

@@ -159,7 +159,8 @@ def _validate(ratio, stages, tolerance, objective, top, schemes) -> tuple:
     return target, int(stages), tol, tuple(dict.fromkeys(canonical_scheme(s) for s in names))
 
 
-def _stage_set(scheme, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio):
+def _stage_set(scheme, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio,
+               max_seconds=30.0):  # fmt: skip
     """Every stage of ``scheme`` with 1 < ratio <= hi (one synthesize call; the chunk that
     runs on a thread or as a Dask task). Returns a list of Candidates (empty if out of reach)."""
     mid = (1 + hi) / 2
@@ -167,7 +168,8 @@ def _stage_set(scheme, hi, n_planets, z_min, z_max, module, mesh_checks, min_con
     try:
         found = synthesize(mid, n_planets, scheme, tolerance=cover, z_min=z_min, z_max=z_max,
                            module=module, mesh_checks=mesh_checks, limit=10**9,
-                           min_contact_ratio=min_contact_ratio)  # fmt: skip
+                           min_contact_ratio=min_contact_ratio,
+                           max_seconds=max_seconds)  # fmt: skip
     except TrainError as exc:  # this scheme cannot reach the range with these roles
         if "cannot be reached" in str(exc):
             return []
@@ -180,7 +182,7 @@ def synthesize_gearbox(
     *, tolerance: float = 0.0, z_min: int = 17, z_max: int = 150, module: float = 1.0,
     objective: str = "ring", top: int = 10, mesh_checks: str = "geometry",
     min_contact_ratio: float = 1.1, full_checks: bool = True, client=None,
-    progress: Callable[[int, int], object] | bool | None = None,
+    progress: Callable[[int, int], object] | bool | None = None, max_seconds: float = 30.0,
 ) -> Gearboxes:  # fmt: skip
     """Planetary stages in series whose ratios multiply to ``ratio``, ranked.
 
@@ -212,6 +214,9 @@ def synthesize_gearbox(
     progress : callable, bool or None
         ``progress(done, total)`` after each stage set and each checked gearbox; True: a tqdm
         bar; None: a bar when stderr is a terminal; False: none.
+    max_seconds : float
+        The time budget of each stage-set search (:func:`trains.synthesize` refuses a larger
+        one before any work).
 
     Returns
     -------
@@ -236,8 +241,8 @@ def synthesize_gearbox(
     # (a simple stage, ring fixed, gives 1 + z3/z1 > 2; the other schemes more than 1)
     lowest = min(_MIN_RATIO.get(s, 1.0) for s in names)
     hi = float(target) * (1 + tol) / lowest ** (k - 1)
-    args = [(s, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio)
-            for s in names]  # fmt: skip
+    args = [(s, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio,
+             max_seconds) for s in names]  # fmt: skip
     sets = _run(args, client, report, len(names) + top)
     pool = [c for found in sets for c in found]
     by_ratio: dict[Fraction, list[Candidate]] = {}

@@ -138,27 +138,6 @@ def _common(p: argparse.ArgumentParser) -> None:
     )
 
 
-def _write(table, path) -> None:
-    import numpy as np
-
-    if path.suffix.lower() == ".csv":
-        names = table.dtype.names
-        with open(path, "w") as f:
-            f.write(",".join(names) + "\n")
-            for row in table:
-                f.write(",".join(str(v.item() if isinstance(v, np.generic) else v) for v in row))
-                f.write("\n")
-        return
-    from gears.errors import GearError
-
-    try:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-    except ImportError:
-        raise GearError("writing .parquet needs pyarrow: pip install pyarrow") from None
-    pq.write_table(pa.table({c: table[c] for c in table.dtype.names}), str(path))
-
-
 def run(args: argparse.Namespace) -> int:
     client = args.scheduler or None
     if args.what == "pairs":
@@ -192,5 +171,7 @@ def run(args: argparse.Namespace) -> int:
         table = found.to_array()
         print(found.table())
     if args.output is not None:
-        _write(table, args.output)
+        from gears.search import write_table
+
+        write_table(table, args.output)
     return OK if len(found) else CHECK_FAILED
