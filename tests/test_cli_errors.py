@@ -261,6 +261,8 @@ def test_unreadable_train_files_and_inputs_are_named(capsys, argv, named):
         (["pair", "12", "24", "--helix", "70"], "--helix", "helix_angle"),
         # the library says z_min / z_max; the CLI says --z-min / --z-max
         (["synthesize", "--ratio", "7", "--z-min", "30", "--z-max", "20"], "--z-min", "z_min"),
+        # an oversized search is refused before any work, naming the options that bound it
+        (["synthesize", "--ratio", "7", "--z-max", "100000"], "--max-seconds", "max_seconds"),
     ],
 )
 def test_errors_speak_the_cli_words_not_the_api(capsys, argv, words, api):

@@ -43,6 +43,7 @@ NAMES = {
     r"tolerance(?=\s*=)": "--tolerance",
     r"module(?=\s*=)": "--module",
     "mesh_checks": "--mesh-checks",
+    "max_seconds": "--max-seconds",
     "allow_shift": "--allow-shift",
     r"scheme(?=\s*=)": "--scheme",
     r"fixed(?=\s*=)": "--fixed",
@@ -120,6 +121,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "geometry, the textbook's tooth-count rules only, or every check of each stage",
     )  # fmt: skip
     parser.add_argument("--limit", type=integer("--limit"), default=10, help="rows to print")
+    parser.add_argument(
+        "--max-seconds", type=positive("--max-seconds", "s"), default=30.0,
+        help="refuse, before any work, a search estimated to take longer than this",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
@@ -130,7 +135,7 @@ def run(args: argparse.Namespace) -> int:
             args.ratio, args.planets, scheme=args.scheme, tolerance=args.tolerance,
             z_min=args.z_min, z_max=args.z_max, module=args.module, allow_shift=args.allow_shift,
             fixed=args.fixed, input=args.input, output=args.output, mesh_checks=args.mesh_checks,
-            limit=args.limit, progress=progress,
+            limit=args.limit, max_seconds=args.max_seconds, progress=progress,
         )  # fmt: skip
     if not found:
         print(found.reason)
