@@ -37,6 +37,8 @@ from typing import Any
 
 import numpy as np
 
+from gears.errors import GearError
+from gears.meshing import check_friction
 from trains.errors import TrainError
 from trains.willis import FRAME, Motion, Train
 
@@ -138,11 +140,10 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
     mesh's :class:`gears.GearPair`, else 1 (lossless)."""
     rel = train.relations
     if friction is not None:
-        if isinstance(friction, bool) or not isinstance(friction, numbers.Real):
-            raise TrainError(f"friction = {friction!r}; valid is a number 0 <= f < 1")
-        friction = float(friction)
-        if not (0.0 <= friction < 1.0):
-            raise TrainError(f"friction = {friction!r}; valid is a number 0 <= f < 1")
+        try:
+            friction = check_friction(friction)  # the range lives once, beside (14.25)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
     geometric: dict[str, float] = {}
     if friction is not None:
         for r in rel:
