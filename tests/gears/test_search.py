@@ -38,12 +38,12 @@ def _column(name: str) -> str:
 
 
 def test_feasible_set_and_margins_equal_brute_force():
-    # independent route: GearPair(...).check() on all 7 x 7 x 4 x 4 candidates (784)
-    teeth, shifts = [13, 16, 20, 27, 35, 44, 60], [-0.3, 0.0, 0.3, 0.6]
+    # independent route: GearPair(...).check() on all 7 x 7 x 6 x 6 candidates (1764)
+    teeth, shifts = [13, 16, 20, 27, 35, 44, 60], [-0.3, 0.0, 0.2, 0.4, 0.6, 0.9]
     limits = Limits(min_contact_ratio=1.2, min_tip_land=0.25)
     brute = _feasible_by_brute_force(teeth, shifts, limits=limits)
     r = pairs(module=2, teeth=teeth, shifts=shifts, limits=limits, top=None, progress=False)
-    assert r.examined == 7 * 7 * 4 * 4
+    assert r.examined == 7 * 7 * 6 * 6
     got = {(int(t["z1"]), int(t["z2"]), round(float(t["x1"]), 9), round(float(t["x2"]), 9)): t
            for t in r.table}  # fmt: skip
     assert set(got) == set(brute) and r.feasible == len(brute) > 100
