@@ -3,8 +3,11 @@
 The public surface (see ``docs/``)::
 
     from gears import BasicRack, Gear, GearPair, ShaperCutter
+    from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
+    from gears import search; search.pairs(...)        # design search (docs/search.md)
 """
 
+from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
@@ -18,10 +21,14 @@ __all__ = [
     "Finding",
     "Gear",
     "GearError",
+    "GearMargins",
     "GearPair",
     "PairGeometry",
+    "PairMargins",
     "Rack",
     "Report",
     "ShaperCutter",
+    "gear_margins",
     "pair_geometry",
+    "pair_margins",
 ]
