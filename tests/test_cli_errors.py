@@ -608,7 +608,8 @@ _POSITIONAL = {
     "mesh": st.lists(st.sampled_from(_TEETH[:9]), min_size=0, max_size=2),
     "search": st.sampled_from([["pairs"], ["gearbox"], ["nothing"], []]),
 }
-_TMP = tempfile.mkdtemp(prefix="geartrain-cli-")
+_TMP_DIR = tempfile.TemporaryDirectory(prefix="geartrain-cli-")  # removed when the run ends
+_TMP = _TMP_DIR.name
 
 
 @st.composite
