@@ -35,7 +35,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from gears.errors import GearError
 from gears.geometry import base_diameter, half_angle_at_reference, tip_diameter
@@ -251,6 +250,8 @@ class ShaperTool:
     """
 
     def __init__(self, gear, cutter: ShaperCutter, backlash: float = 0.0) -> None:
+        from scipy.optimize import brentq  # heavy: imported where used
+
         self.gear, self.cutter = gear, cutter
         self.s = -1.0 if gear.internal else 1.0
         self.sigma = -self.s  # cutter tooth direction in the cutter frame (+y internal)

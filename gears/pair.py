@@ -12,7 +12,6 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import brentq
 
 from gears.checks import form_lengths, tip_diameter_limits, tip_interference
 from gears.errors import GearError
@@ -276,6 +275,8 @@ class GearPair:
         >>> round(low, 4), round(high, 4)
         (50.7434, 66.5654)
         """
+        from scipy.optimize import brentq  # heavy: imported where used
+
         s = -1.0 if g2.internal else 1.0
         zsum = g2.teeth + s * g1.teeth
         a_d = zsum * g1.transverse_module / 2
@@ -743,6 +744,8 @@ class GearPair:
 
 def _equal_sliding_x1(g1: Gear, g2: Gear, total: float, tip_shortening: bool) -> float:
     """x1 that balances the maximum specific sliding of both flanks for a fixed shift sum."""
+    from scipy.optimize import brentq  # heavy: imported where used
+
     s = -1.0 if g2.internal else 1.0
 
     def imbalance(x1: float) -> float:

@@ -49,7 +49,6 @@ from functools import cached_property
 
 import numpy as np
 import shapely
-from scipy.optimize import brentq
 
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
@@ -240,6 +239,8 @@ class ToothProfile:
     @cached_property
     def tau_form(self) -> float:
         """Fillet parameter where the flank (involute) takes over."""
+        from scipy.optimize import brentq  # heavy: imported where used
+
         if not self.undercut:
             return self._tau_tangent()
         tau = np.linspace(0.0, 2.0, 801)[:-1]
@@ -283,6 +284,8 @@ class ToothProfile:
         it first reaches the form radius, and the fold (inside the space by less than 1e-4 of the
         module) is dropped.
         """
+        from scipy.optimize import brentq  # heavy: imported where used
+
         tau = np.linspace(0.0, 1.0, 801)
         rho = self.fillet(tau)[0] * self.tool.s
         r_form = self._tangent_radius * self.tool.s
@@ -310,6 +313,8 @@ class ToothProfile:
         along that branch to where it crosses the involute (``tau_x``), then up the involute.
         Returns ``(tau_r, tau_x)`` or None when the fillet stays inside the root circle.
         """
+        from scipy.optimize import brentq  # heavy: imported where used
+
         if self.tool.s > 0 or self._tangent_radius <= self.rf * (1 + 1e-12):
             return None
         tau = np.linspace(0.0, 1.0, 801)
@@ -350,6 +355,8 @@ class ToothProfile:
     @cached_property
     def tip_radius(self) -> float:
         """Radius where the flank ends: the tip circle, or where the flanks meet (pointed)."""
+        from scipy.optimize import brentq  # heavy: imported where used
+
         half = math.pi / self.z
         if self.tool.s * (half - self.eta_involute(self.ra)) >= 0 or self.tool.s < 0:
             return self.ra
