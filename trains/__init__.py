@@ -6,73 +6,63 @@
 >>> t.mesh("planet", "ring", teeth=(30, 80), carrier="arm", internal=True)
 >>> t.ratio("sun", "arm", fixed=["ring"])
 Fraction(5, 1)
+
+The names below are imported on first use (PEP 562), so that ``import trains.cli`` and
+``geartrain --help`` do not load numpy, shapely and the whole library (issue 11 §7).
 """
 
-from trains.catalog import (
-    bevel_differential,
-    biplanetary,
-    double_planet,
-    ferguson,
-    khv,
-    simple_planetary,
-    stepped_planetary,
-    strain_wave,
-    wolfrom,
-)
-from trains.coaxial import coaxial_shifts
-from trains.errors import TrainError
-from trains.gearbox import Gearbox, Gearboxes, synthesize_gearbox
-from trains.inertia import reduced_inertia
-from trains.planetary import Assembly, Placement, Planetary
-from trains.power import (
-    PowerFlow,
-    RelationPower,
-    parallel_efficiency,
-    planetary_efficiency,
-    power_flow,
-    self_locking_range,
-    series_efficiency,
-)
-from trains.synthesis import Candidate, Candidates, synthesize
-from trains.toml_format import read_train
-from trains.trajectory import point_path
-from trains.willis import IllConditionedTrainWarning, Motion, Relation, Structure, Train
+from __future__ import annotations
 
-# Kinematics and statics (issue 3). Planetary design and synthesis (issue 4) add their names here.
-__all__ = [
-    "Assembly",
-    "Candidate",
-    "Candidates",
-    "Gearbox",
-    "Gearboxes",
-    "IllConditionedTrainWarning",
-    "Motion",
-    "Placement",
-    "Planetary",
-    "PowerFlow",
-    "Relation",
-    "RelationPower",
-    "Structure",
-    "Train",
-    "TrainError",
-    "bevel_differential",
-    "biplanetary",
-    "coaxial_shifts",
-    "double_planet",
-    "ferguson",
-    "khv",
-    "parallel_efficiency",
-    "planetary_efficiency",
-    "point_path",
-    "power_flow",
-    "read_train",
-    "reduced_inertia",
-    "self_locking_range",
-    "series_efficiency",
-    "simple_planetary",
-    "stepped_planetary",
-    "strain_wave",
-    "synthesize",
-    "synthesize_gearbox",
-    "wolfrom",
-]
+import importlib
+
+_WHERE = {
+    "Assembly": "trains.planetary",
+    "Candidate": "trains.synthesis",
+    "Candidates": "trains.synthesis",
+    "Gearbox": "trains.gearbox",
+    "Gearboxes": "trains.gearbox",
+    "IllConditionedTrainWarning": "trains.willis",
+    "Motion": "trains.willis",
+    "Placement": "trains.planetary",
+    "Planetary": "trains.planetary",
+    "PowerFlow": "trains.power",
+    "Relation": "trains.willis",
+    "RelationPower": "trains.power",
+    "Structure": "trains.willis",
+    "Train": "trains.willis",
+    "TrainError": "trains.errors",
+    "bevel_differential": "trains.catalog",
+    "biplanetary": "trains.catalog",
+    "coaxial_shifts": "trains.coaxial",
+    "double_planet": "trains.catalog",
+    "ferguson": "trains.catalog",
+    "khv": "trains.catalog",
+    "parallel_efficiency": "trains.power",
+    "planetary_efficiency": "trains.power",
+    "point_path": "trains.trajectory",
+    "power_flow": "trains.power",
+    "read_train": "trains.toml_format",
+    "reduced_inertia": "trains.inertia",
+    "self_locking_range": "trains.power",
+    "series_efficiency": "trains.power",
+    "simple_planetary": "trains.catalog",
+    "stepped_planetary": "trains.catalog",
+    "strain_wave": "trains.catalog",
+    "synthesize": "trains.synthesis",
+    "synthesize_gearbox": "trains.gearbox",
+    "wolfrom": "trains.catalog",
+}
+
+__all__ = sorted(_WHERE)
+
+
+def __getattr__(name: str):
+    if name in _WHERE:
+        value = getattr(importlib.import_module(_WHERE[name]), name)
+        globals()[name] = value  # once: later lookups are plain attributes
+        return value
+    raise AttributeError(f"module 'trains' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_WHERE))

@@ -8,9 +8,8 @@ source tree first on ``PYTHONPATH`` (e.g. an export of an older commit, for befo
 
 The target (issue 11): ``geartrain --help`` under 0.3 s. What it costs beyond the interpreter is
 the import of ``trains.cli``; the rows ``import trains`` and ``import numpy`` show how much of it
-is the package facade, which the CLI cannot avoid while ``trains/__init__.py`` imports the whole
-library. The row "CLI alone" runs ``--help`` with that facade replaced by an empty package: the
-cost of the command line's own modules.
+is the package facade (now lazy: PEP 562) and numpy. The row "CLI alone" runs ``--help`` with
+that facade replaced by an empty package: the cost of the command line's own modules.
 """
 
 from __future__ import annotations
