@@ -383,6 +383,17 @@ def test_command_modules_import_the_library_only_inside_run():
                 assert ok, f"{path.name} imports {n} at module level"
 
 
+def test_help_loads_neither_numpy_nor_the_library():
+    # the end-to-end form of the rule above, through the lazy trains facade (PEP 562): a fresh
+    # interpreter builds every parser and has imported no numpy, scipy, shapely or gears
+    code = (
+        "import sys, trains.cli; trains.cli.build_parser(); "
+        "print(sorted(m for m in ('numpy', 'scipy', 'shapely', 'gears') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
+
+
 # ---------------------------------------------------------------------------------------------
 # 4. report text: wrapped at the terminal width, the synthesis table explained, summary true
 
