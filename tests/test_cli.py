@@ -108,6 +108,18 @@ def test_demo_runs_the_default_pair(capsys):
     assert "all conditions hold" in out
 
 
+def test_demo_writes_its_stage_as_a_scene(capsys, tmp_path):
+    # issue 10: the README's demo also writes a small scene; the GLB holds one planet geometry
+    # for three planet nodes (instancing), checked by loading the file
+    import trimesh  # the mesh extra is part of the test extra
+
+    path = tmp_path / "stage.glb"
+    assert main(["demo", "--scene", str(path)]) == 0
+    assert f"wrote {path}" in capsys.readouterr().out
+    loaded = trimesh.load(path)
+    assert len(loaded.graph.nodes_geometry) == 5 and len(loaded.geometry) == 3
+
+
 def test_demo_sections_are_extensible():
     from trains.commands import demo
 

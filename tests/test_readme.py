@@ -13,7 +13,7 @@ def test_readme_starts_with_the_two_commands():
     text = README.read_text()
     first = re.search(r"```bash\n(.*?)```", text, flags=re.S).group(1).strip().splitlines()
     assert first == [
-        'pip install -e ".[all]" && geartrain demo',
+        'pip install -e ".[all]" && geartrain demo --scene stage.glb',
         'pip install -e ".[test]" && pytest',
     ]
     ci = (README.parent / ".ci" / "run").read_text()

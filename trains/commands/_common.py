@@ -133,6 +133,10 @@ def exact(name: str, text: str) -> Fraction:
     raise ValueError(f"{name} {text} is too large; valid is a finite number below 1e308")
 
 
+#: what a 3D scene can be written as (trimesh's exporters, gears.export.save)
+SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
+
+
 def output_file(suffixes: tuple[str, ...], name: str = "--output") -> Callable[[str], Path]:
     """An option type for a file to write: its suffix is one of ``suffixes``, it is not a
     directory and its directory exists and is writable (checked before any work starts)."""

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from trains.commands._common import (
     CHECK_FAILED,
     OK,
+    SCENE_FORMATS,
     bounded,
     finite,
     integer,
@@ -34,7 +35,6 @@ if TYPE_CHECKING:
 
 HELP = "geometry, contact ratios and checks of a gear pair (external, internal, helical)"
 
-SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
 
 SPLITS = ("equal_sliding", "proportional", "keep")
 

@@ -16,6 +16,7 @@ import argparse
 from trains.commands._common import (
     CHECK_FAILED,
     OK,
+    SCENE_FORMATS,
     integer,
     non_negative,
     output_file,
@@ -24,7 +25,6 @@ from trains.commands._common import (
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
 
-SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
 
 SCHEME_HELP = (
     "simple, stepped, external, internal or double-planet (or a textbook alias A, B, C, D); "
