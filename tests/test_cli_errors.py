@@ -347,7 +347,7 @@ def test_every_help_example_runs(capsys, monkeypatch, tmp_path, where, example):
     monkeypatch.chdir(ROOT)  # the examples name files relative to the repository
     argv = shlex.split(example)[1:]
     for i, a in enumerate(argv[:-1]):
-        if a in ("-o", "--output") and "." in argv[i + 1]:
+        if a in ("-o", "--output", "--scene", "--animate") and "." in argv[i + 1]:
             argv[i + 1] = str(tmp_path / pathlib.Path(argv[i + 1]).name)
     code, out, err = _run(capsys, *argv)
     assert code == 0, f"{where} --help example {example!r} exits {code}: {err}"
