@@ -161,8 +161,8 @@ def evaluate_chunk(
                 found.append(f)
     if not found:
         return np.empty(0, _dtype(space.columns)), 0, stop - start
-    values = {c: np.concatenate([f[c] for f in found]) for c in space.columns}
-    n_ok = len(values["z1"])
+    n_ok = sum(n for _, n in found)
+    values = {c: np.concatenate([f[c] for f, _ in found]) for c in space.columns}
     pick = _preselect(values, space)
     rows = np.empty(len(pick), _dtype(space.columns))
     for c in space.columns:
@@ -170,8 +170,9 @@ def evaluate_chunk(
     return _reduce(rows, space), n_ok, stop - start
 
 
-def _check_group(space: _Space, ib, i1, i2) -> dict[str, np.ndarray] | None:
-    """The feasible candidates of one (module, helix) group, as columns."""
+def _check_group(space: _Space, ib, i1, i2) -> tuple[dict[str, np.ndarray], int] | None:
+    """The feasible candidates of one (module, helix) group, as columns (only those that can
+    reach the top-k when there is one), and how many were feasible."""
     m, beta = (float(v) for v in space.base[ib[0], :2])
     z1, z2 = space.base[ib, 2], space.base[ib, 3]
     x1 = space.x1[i1]
@@ -227,11 +228,18 @@ def _check_group(space: _Space, ib, i1, i2) -> dict[str, np.ndarray] | None:
         "efficiency": mesh_efficiency(z1, z2, pm.contact_ratio, space.friction, space.internal),
         "contact_ratio_margin": f["contact_ratio"],
     }  # fmt: skip
-    out = {}
-    for c in space.columns:
-        v = values[c] if c in values else f[c.replace("g1_", "g1.").replace("g2_", "g2.")]
-        out[c] = np.broadcast_to(v, ok.shape)[ok]
-    return out
+
+    def column(c: str) -> np.ndarray:
+        return values[c] if c in values else f[c.replace("g1_", "g1.").replace("g2_", "g2.")]
+
+    n_ok = int(ok.sum())
+    if not space.pareto and space.top is not None and n_ok > space.top:
+        # only rows that can reach the top-k leave the group (ties on the k-th value stay)
+        o = space.objective[0]
+        key = np.broadcast_to(column(o.removeprefix("-")), ok.shape)
+        key = np.where(ok, -key if o.startswith("-") else key, np.inf)
+        ok &= key <= np.partition(key, space.top - 1)[space.top - 1]
+    return {c: np.broadcast_to(column(c), ok.shape)[ok] for c in space.columns}, n_ok
 
 
 def _preselect(values: dict[str, np.ndarray], space: _Space) -> np.ndarray:
