@@ -366,3 +366,26 @@ def test_default_shaper_does_not_silently_round_a_ring():
     s = thickness_on(ring.outline(tol, method="shaper"), 2115.0)
     assert len(s) == 215
     assert abs(s.mean() - float(ring.tooth_thickness(2115.0))) < 2 * tol
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(
+    ratio=st.one_of(st.floats(-5, 60), st.sampled_from([math.nan, math.inf, 0.0, 1.0])),
+    n=st.integers(-1, 7), scheme=st.sampled_from(["simple", "stepped", "bogus"]),
+    tolerance=st.one_of(st.floats(-0.1, 0.2), st.just(math.nan)),
+    z_min=st.integers(-2, 40), z_max=st.one_of(st.integers(-2, 60), st.just(10**6)),
+)  # fmt: skip
+def test_synthesize_finds_or_refuses_quickly(ratio, n, scheme, tolerance, z_min, z_max):
+    # every answer is a list of real stages or the library's own error, and a search too large
+    # for its time budget (z_max = 10^6 once tried to allocate 7.28 TiB) is refused at once
+    from trains import synthesize
+
+    t0 = time.perf_counter()
+    try:
+        found = synthesize(ratio, n, scheme=scheme, tolerance=tolerance, z_min=z_min, z_max=z_max)
+    except (TrainError, GearError) as exc:
+        assert str(exc)
+        assert time.perf_counter() - t0 < 5.0
+        return
+    for c in found:
+        assert math.isfinite(float(c.ratio)) and abs(float(c.ratio) - ratio) <= tolerance * ratio
