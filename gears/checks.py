@@ -37,9 +37,10 @@ from gears.geometry import (
     reference_diameter,
     root_diameter,
     tip_diameter,
+    tooth_thickness,
     transverse_pressure_angle,
 )
-from gears.involute import inv, pressure_angle_at
+from gears.involute import inv
 from gears.meshing import (
     internal_interference,
     line_positions,
@@ -93,14 +94,11 @@ def pointed_tip_margin(z, module, profile_shift, pressure_angle, helix_angle, in
     db = base_diameter(z, m, pressure_angle, helix_angle)
     tip = (da - db) / 2.0
     above = tip >= 0
-    # the signed thickness of geometry.tooth_thickness (which refuses a pointed tip): negative
-    # where the flanks have crossed below the tip, the pointed_tip finding's margin
+    # the signed thickness: negative where the flanks have crossed below the tip
     dy = np.where(above, da, db)
-    alpha_y = pressure_angle_at(db / 2, dy / 2)
-    psi = half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, internal)
-    sign = np.where(np.asarray(internal, bool), -1.0, 1.0)
-    alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
-    s_at = dy * (psi + sign * (inv(alpha_t) - inv(alpha_y)))
+    s_at = tooth_thickness(
+        dy, z, m, profile_shift, pressure_angle, helix_angle, internal, signed=True
+    )
     d = reference_diameter(z, m, helix_angle)
     beta_a = np.arctan(np.tan(np.radians(helix_angle)) * da / d)
     land = s_at * np.cos(beta_a) - np.asarray(min_tip_land, float) * m

@@ -13,7 +13,13 @@ from functools import cached_property
 
 import numpy as np
 
-from gears.checks import form_lengths, tip_diameter_limits, tip_interference
+from gears.checks import (
+    equal_sliding_split,
+    form_lengths,
+    proportional_split,
+    tip_diameter_limits,
+    tip_interference,
+)
 from gears.errors import GearError
 from gears.gear import Gear
 from gears.geometry import check_real
@@ -238,14 +244,19 @@ class GearPair:
         elif split == "proportional":
             if g2.internal:
                 raise GearError("split='proportional' is defined for external pairs; use 'keep'")
-            u = g2.teeth / g1.teeth
-            denominator = math.log10(g1.teeth * g2.teeth / 100.0)
-            if u == 1.0 or abs(denominator) < 1e-9:
-                x1 = total / 2
-            else:
-                x1 = total / 2 + (0.5 - total / 2) * math.log10(u) / denominator
+            x1 = float(proportional_split(g1.teeth, g2.teeth, total))
         else:
-            x1 = _equal_sliding_x1(g1, g2, total, tip_shortening)
+            x1 = float(
+                equal_sliding_split(
+                    g1.teeth, g2.teeth, g1.module, total, g1.pressure_angle, g1.helix_angle,
+                    g2.internal, g1.rack.addendum, tip_shortening,
+                )
+            )  # fmt: skip
+            if not math.isfinite(x1):
+                raise GearError(
+                    f"no split of the shift sum {total:.4f} balances the specific sliding of "
+                    f"z1 = {g1.teeth} and z2 = {g2.teeth}; use split='keep' or 'proportional'"
+                )
         x2 = total - x1 if s > 0 else total + x1  # external x1 + x2 = S; internal x2 - x1 = S
         try:
             return cls(
@@ -740,37 +751,3 @@ class GearPair:
             Finding("radial_interference", float(m.radial), msg + " (margin in rad)", unit="rad")
         )
         return out
-
-
-def _equal_sliding_x1(g1: Gear, g2: Gear, total: float, tip_shortening: bool) -> float:
-    """x1 that balances the maximum specific sliding of both flanks for a fixed shift sum."""
-    from scipy.optimize import brentq  # heavy: imported where used
-
-    s = -1.0 if g2.internal else 1.0
-
-    def imbalance(x1: float) -> float:
-        x2 = total - x1 if s > 0 else total + x1
-        pair = GearPair(g1.with_(profile_shift=x1), g2.with_(profile_shift=x2), tip_shortening)
-        try:
-            a, b = pair.max_specific_sliding
-        except GearError:
-            return math.nan
-        return math.log(a) - math.log(b) if a > 0 and b > 0 else math.nan
-
-    grid = (
-        np.linspace(total / 2 - 1.5, total / 2 + 1.5, 61) if s > 0 else np.linspace(-1.5, 1.5, 61)
-    )
-    values = []
-    for x1 in grid:
-        with np.errstate(all="ignore"):
-            v = imbalance(float(x1))
-        values.append(v)
-    values = np.array(values)
-    ok = np.isfinite(values)
-    for i in range(len(grid) - 1):
-        if ok[i] and ok[i + 1] and values[i] * values[i + 1] <= 0:
-            return float(brentq(imbalance, grid[i], grid[i + 1], xtol=1e-12))
-    raise GearError(
-        f"no split of the shift sum {total:.4f} balances the specific sliding of z1 = {g1.teeth} "
-        f"and z2 = {g2.teeth}; use split='keep' or 'proportional'"
-    )
