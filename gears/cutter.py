@@ -1,4 +1,4 @@
-"""Layer 2, generating tools: the shaper (pinion-type, Fellows) cutter and its own geometry.
+"""Layer 3, generating tools: the shaper (pinion-type, Fellows) cutter and its own geometry.
 
 A shaper cutter is an involute gear of ``z0`` teeth with a long addendum (``h_a0 = 1.25 m_n`` by
 default, the rack tool's), tip rounds of radius ``rho_a0`` tangent to its flanks and its tip

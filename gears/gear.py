@@ -1,4 +1,4 @@
-"""Layer 7, classes: :class:`Gear`, one involute gear as a thin immutable view.
+"""Layer 8, classes: :class:`Gear`, one involute gear as a thin immutable view.
 
 External or internal, spur or helical, with profile shift. Every quantity is computed by the
 vectorised formulas of :mod:`gears.geometry` (ISO 21771 symbols are mapped there); the cutter,

@@ -1,4 +1,4 @@
-"""Layer 1, formulas: the vectorised ISO 21771 formulas of one gear, and input validation.
+"""Layer 2, formulas: the vectorised ISO 21771 formulas of one gear, and input validation.
 
 Symbols follow ISO 21771 (the textbooks' notation is mapped in the docstrings): ``z`` teeth,
 ``m_n`` normal module, ``alpha_n`` normal pressure angle, ``beta`` helix angle at the reference

@@ -1,4 +1,4 @@
-"""Layer 1, formulas: the vectorised formulas of a meshing pair (ISO 21771 / DIN 3960 / KHK).
+"""Layer 2, formulas: the vectorised formulas of a meshing pair (ISO 21771 / DIN 3960 / KHK).
 
 
 Formulas (standards.md §1.2-1.5, §1.8; ISO 21771 / DIN 3960 / KHK; Ozols §21-3...21-8;

@@ -1,4 +1,4 @@
-"""Layer 5, outlines: a gear's outline by any method, and both outlines of a pair in mesh.
+"""Layer 6, outlines: a gear's outline by any method, and both outlines of a pair in mesh.
 
 Dispatches to the analytic envelope (:func:`gears.profile.outline`) or a simulated cutter
 (:mod:`gears.generate`), and places a pair's gears at their working centre distance.

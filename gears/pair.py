@@ -1,4 +1,4 @@
-"""Layer 8, classes: :class:`GearPair` (and :class:`Rack`), one mesh as a thin view.
+"""Layer 9, classes: :class:`GearPair` (and :class:`Rack`), one mesh as a thin view.
 
 External, internal (gear 2 is the ring) or pinion-and-rack, spur or helical. The formulas are
 the vectorised functions of :mod:`gears.meshing` (its docstring defines the positions on the line

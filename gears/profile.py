@@ -1,4 +1,4 @@
-"""Layer 3, envelopes: the exact tooth profile a rack or shaper cutter generates, sampled to a
+"""Layer 4, envelopes: the exact tooth profile a rack or shaper cutter generates, sampled to a
 tolerance, and the analytic outline built from it (involute flanks, generated root fillet,
 undercut, tip and root arcs).
 

@@ -1,4 +1,4 @@
-"""Layer 2, generating tools: the basic rack (ISO 53) and the rack tool derived from it.
+"""Layer 3, generating tools: the basic rack (ISO 53) and the rack tool derived from it.
 
 All lengths of a :class:`BasicRack` are coefficients of the normal module (``addendum = 1.0``
 means ``h_aP = 1.0 m_n``). The generating tool (rack cutter, hob) is the rack's mirror image: its

@@ -177,9 +177,10 @@ def test_every_module_opens_with_its_layer(package):
         if not module or module.startswith("commands."):
             continue  # a command's docstring is its --help text; commands/__init__ names the layer
         doc = ast.get_docstring(ast.parse(path.read_text())) or ""
-        if not re.match(r"Layer \d+", doc):
-            missing.append(str(path.relative_to(ROOT)))
-    assert not missing, f"first docstring line must name the layer ('Layer N, ...'): {missing}"
+        found = re.match(r"Layer (\d+)", doc)
+        if not found or int(found.group(1)) != _layer(package, module):
+            missing.append(f"{path.relative_to(ROOT)} (layer {_layer(package, module)})")
+    assert not missing, f"first docstring line must name its layer ('Layer N, ...'): {missing}"
 
 
 def test_the_checker_sees_a_wrong_way_import(tmp_path):
