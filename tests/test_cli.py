@@ -124,3 +124,15 @@ def test_demo_sections_are_extensible():
     from trains.commands import demo
 
     assert all(callable(f) and isinstance(t, str) for t, f in demo.SECTIONS)
+
+
+def test_synthesize_stages_prints_the_ranked_gearboxes(capsys):
+    # issue 13: geartrain synthesize --ratio 37 --stages 2 prints what synthesize_gearbox ranks
+    # (that function is checked against a brute-force product of single-stage synthesize results
+    # in tests/trains/test_gearbox.py)
+    from trains import synthesize_gearbox
+
+    assert main(["synthesize", "--ratio", "37", "--stages", "2", "--limit", "3"]) == 0
+    out = capsys.readouterr().out
+    want = synthesize_gearbox(37, 2, 3, "simple", z_max=200, top=3, progress=False).table()
+    assert out.split() == want.split()  # the same words; the CLI wraps at the terminal width

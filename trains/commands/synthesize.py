@@ -7,6 +7,7 @@ Examples:
     geartrain synthesize --ratio 7 --planets 3
     geartrain synthesize --ratio 16 --planets 3 --scheme stepped --z-max 120
     geartrain synthesize --ratio 7.2 --planets 3-5 --tolerance 0.01 --allow-shift
+    geartrain synthesize --ratio 37 --stages 2 --limit 3
 """
 
 from __future__ import annotations
@@ -125,9 +126,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--max-seconds", type=positive("--max-seconds", "s"), default=30.0,
         help="refuse, before any work, a search estimated to take longer than this",
     )  # fmt: skip
+    parser.add_argument(
+        "--stages", type=integer("--stages", 1, 3), default=1,
+        help="stages in series (2 or 3: the ranked gearboxes of trains.synthesize_gearbox, "
+        "every stage of --scheme, ring fixed, sun in, carrier out; as 'search gearbox')",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.stages > 1:
+        return _gearboxes(args)
     from trains.synthesis import synthesize
 
     with progress_bar("synthesize") as progress:
@@ -145,3 +153,18 @@ def run(args: argparse.Namespace) -> int:
     print()
     print(found.reason)
     return OK
+
+
+def _gearboxes(args: argparse.Namespace) -> int:
+    """``--stages k`` (k > 1): k stages in series for the total ratio, ranked by ring size."""
+    from trains.gearbox import synthesize_gearbox
+
+    with progress_bar("gearbox search") as progress:
+        found = synthesize_gearbox(
+            args.ratio, args.stages, args.planets, args.scheme, tolerance=args.tolerance,
+            z_min=args.z_min, z_max=args.z_max,
+            module=args.module or 1.0, top=args.limit, mesh_checks=args.mesh_checks,
+            progress=progress, max_seconds=args.max_seconds,
+        )  # fmt: skip
+    print(found.table())
+    return OK if len(found) else CHECK_FAILED
