@@ -112,3 +112,21 @@ class Report(Mapping[str, Finding]):
 
     def __repr__(self) -> str:
         return f"Report(ok={self.ok}, findings={list(self._findings)})"
+
+
+def format_duration(seconds: float) -> str:
+    """A duration as a person reads it: ``"45 s"``, ``"12 min"``, ``"3.5 h"``, ``"9 days"``,
+    ``"2.1e+03 years"`` (for the size and time of refused searches).
+
+    >>> format_duration(45), format_duration(720), format_duration(12600), format_duration(1e6)
+    ('45 s', '12 min', '3.5 h', '12 days')
+    """
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 2 * 86400:
+        return f"{seconds / 3600:.1f} h"
+    if seconds < 2 * 3.15e7:
+        return f"{seconds / 86400:.0f} days"
+    return f"{seconds / 3.15e7:.3g} years"

@@ -40,6 +40,7 @@ from gears.errors import GearError
 from gears.geometry import check_real, min_profile_shift, transverse_pressure_angle
 from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
 from gears.rack import BasicRack
+from gears.report import format_duration
 
 __all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs", "write_table"]
 
@@ -483,8 +484,9 @@ def _objective(objective) -> tuple[str, ...]:
     return obj
 
 
-def _client(client):
-    """The Dask client to use: the given one, one at this address, the active one, or None."""
+def dask_client(client):
+    """The Dask client to use: the given one, one at this address, the active one, or None
+    (``client=False``: local threads even with an active client)."""
     if client is False:
         return None
     if isinstance(client, str):
@@ -508,12 +510,16 @@ def _client(client):
     return None
 
 
-def _progress(progress) -> Callable[[int, int, int], None] | None:
-    """``progress`` as a callback ``(chunks done, chunks, candidates done)`` or None."""
+def progress_callback(
+    progress, desc: str = "pair search", unit: str = "chunk"
+) -> Callable[..., None] | None:
+    """``progress`` as a callback ``(done, total, items=None)`` or None: a user's callable gets
+    ``(done, total)``; None shows a tqdm bar on a terminal (with items/s when ``items`` is
+    given) and nothing otherwise; False nothing."""
     if progress is False:
         return None
     if callable(progress):
-        return lambda done, total, n: progress(done, total)
+        return lambda done, total, n=None: progress(done, total)
     if progress is None and not sys.stderr.isatty():
         return None
     if progress not in (None, True):
@@ -522,30 +528,20 @@ def _progress(progress) -> Callable[[int, int, int], None] | None:
 
     state = {}
 
-    def update(done: int, total: int, n: int) -> None:
+    def update(done: int, total: int, n: int | None = None) -> None:
         if "bar" not in state:
-            state["bar"] = tqdm(total=total, desc="pair search", unit="chunk", leave=False,
-                                file=sys.stderr)  # fmt: skip
+            state["bar"] = tqdm(total=total, desc=desc, unit=unit, leave=False, file=sys.stderr)
             state["t0"] = time.perf_counter()
         bar = state["bar"]
-        bar.n = done
-        rate = n / max(time.perf_counter() - state["t0"], 1e-9)
-        bar.set_postfix_str(f"{rate:.3g} candidates/s", refresh=False)
+        bar.total, bar.n = total, done
+        if n is not None:
+            rate = n / max(time.perf_counter() - state["t0"], 1e-9)
+            bar.set_postfix_str(f"{rate:.3g} candidates/s", refresh=False)
         bar.refresh()
         if done >= total:
             bar.close()
 
     return update
-
-
-def _format_seconds(s: float) -> str:
-    if s < 120:
-        return f"{s:.0f} s"
-    if s < 7200:
-        return f"{s / 60:.0f} min"
-    if s < 2 * 86400:
-        return f"{s / 3600:.1f} h"
-    return f"{s / 86400:.1f} days"
 
 
 # --- the search ----------------------------------------------------------------------------------
@@ -686,7 +682,7 @@ def pairs(
         (float(x.min()), float(x.max())), columns,
     )  # fmt: skip
     n = space.size
-    client = _client(client)
+    client = dask_client(client)
     if threads is None:
         threads = default_threads()
     elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
@@ -695,13 +691,13 @@ def pairs(
         estimate = n / (LOCAL_RATE * threads)
         if estimate > max_seconds:
             raise GearError(
-                f"the search has {n:,} candidates: about {_format_seconds(estimate)} on "
+                f"the search has {n:,} candidates: about {format_duration(estimate)} on "
                 f"{threads} local thread(s) at {LOCAL_RATE:.3g} candidates/s each, over the "
                 f"limit max_seconds = {max_seconds:g} s; pass client= (a dask.distributed "
                 "Client or scheduler address), narrow the space, or raise max_seconds"
             )
     bounds = [(i, min(i + chunk_size, n)) for i in range(0, n, chunk_size)]
-    report = _progress(progress)
+    report = progress_callback(progress)
     if client is None:
         parts = _run_local(space, bounds, threads, report)
     else:

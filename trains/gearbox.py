@@ -28,7 +28,6 @@ import heapq
 import itertools
 import math
 import numbers
-import sys
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -37,6 +36,8 @@ from typing import Any
 
 import numpy as np
 
+from gears.errors import GearError
+from gears.search import dask_client, progress_callback
 from trains.errors import TrainError
 from trains.planetary import canonical_scheme
 from trains.synthesis import Candidate, _as_ratio, synthesize
@@ -236,7 +237,7 @@ def synthesize_gearbox(
     for name, v in (("z_min", z_min), ("z_max", z_max)):
         if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 1:
             raise TrainError(f"{name} = {v!r}; valid is an integer >= 1")
-    report = _progress(progress)
+    report = _as_train_error(progress_callback, progress, "gearbox search", "stage set")
     # the largest stage ratio: the target over the smallest ratio the other stages can have
     # (a simple stage, ring fixed, gives 1 + z3/z1 > 2; the other schemes more than 1)
     lowest = min(_MIN_RATIO.get(s, 1.0) for s in names)
@@ -369,7 +370,7 @@ def _ratio_tuples(ratios: list[Fraction], target: Fraction, k: int, tol: float) 
 
 def _run(args: list[tuple], client, report, total: int) -> list[list[Candidate]]:
     """The stage sets: one chunk per scheme, on threads or as Dask tasks."""
-    client = _client(client)
+    client = _as_train_error(dask_client, client)
     if client is not None:
         from distributed import as_completed
 
@@ -392,52 +393,9 @@ def _run(args: list[tuple], client, report, total: int) -> list[list[Candidate]]
     return results
 
 
-def _client(client):
-    if client is False:
-        return None
-    if isinstance(client, str):
-        try:
-            from distributed import Client
-        except ImportError:
-            raise TrainError(
-                "client='address' needs dask: pip install 'geartrain[scale]'"
-            ) from None
-        return Client(client)
-    if client is not None:
-        if not hasattr(client, "submit"):
-            raise TrainError(f"client must be a dask.distributed.Client or an address; "
-                             f"got {client!r}")  # fmt: skip
-        return client
-    if "distributed" in sys.modules:
-        try:
-            from distributed import get_client
-
-            return get_client()
-        except (ValueError, ImportError):
-            return None
-    return None
-
-
-def _progress(progress) -> Callable[[int, int], object] | None:
-    if progress is False:
-        return None
-    if callable(progress):
-        return progress
-    if progress is None and not sys.stderr.isatty():
-        return None
-    if progress not in (None, True):
-        raise TrainError(f"progress = {progress!r}; valid are None, True, False or a callable")
-    from tqdm import tqdm
-
-    state: dict = {}
-
-    def update(done: int, total: int) -> None:
-        if "bar" not in state:
-            state["bar"] = tqdm(total=total, desc="gearbox search", leave=False, file=sys.stderr)
-        state["bar"].total = total
-        state["bar"].n = done
-        state["bar"].refresh()
-        if done >= total:
-            state["bar"].close()
-
-    return update
+def _as_train_error(fn, *args):
+    """``fn(*args)`` with a bad argument reported as this package's error."""
+    try:
+        return fn(*args)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None

@@ -45,6 +45,7 @@ import numpy as np
 
 from gears.meshing import pair_geometry
 from gears.rack import BasicRack
+from gears.report import format_duration
 from trains.errors import TrainError
 from trains.planetary import (
     Planetary,
@@ -454,22 +455,10 @@ def _check_size(scheme: str, z_min: int, z_max: int, shifts: int, budget: float)
     fits = z_min - 1 + int((budget * SETS_PER_SECOND / shifts) ** (1 / dims))
     raise TrainError(
         f"the {scheme} search over z_min = {z_min} ... z_max = {z_max} examines about "
-        f"{sets:.3g} tooth-number sets, about {_duration(seconds)} at {SETS_PER_SECOND:.0e} "
+        f"{sets:.3g} tooth-number sets, about {format_duration(seconds)} at {SETS_PER_SECOND:.0e} "
         f"sets/s, over the budget max_seconds = {budget:g} s; lower z_max (about {fits} fits) "
         f"or raise max_seconds"
     )
-
-
-def _duration(seconds: float) -> str:
-    if seconds < 120:
-        return f"{seconds:.0f} s"
-    if seconds < 7200:
-        return f"{seconds / 60:.0f} min"
-    if seconds < 2 * 86400:
-        return f"{seconds / 3600:.1f} h"
-    if seconds < 2 * 3.15e7:
-        return f"{seconds / 86400:.0f} days"
-    return f"{seconds / 3.15e7:.3g} years"
 
 
 def _rules_ok(stage: Planetary, report, z_min: int) -> bool:
