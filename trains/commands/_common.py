@@ -291,3 +291,32 @@ def busy(desc: str, delay: float = 1.0) -> Iterator[None]:
         done.set()
         thread.join()
         bar.close()
+
+
+#: the library's names for one gear's fields -> the options of gear_arguments
+GEAR_NAMES = {
+    "profile_shift": "--shift",
+    "module": "--module",
+    "pressure_angle": "--pressure-angle",
+    "helix_angle": "--helix",
+}
+
+
+def gear_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options that describe one gear, shared by ``profile`` and ``mesh``: TEETH,
+    ``--module``, ``--shift``, ``--helix``, ``--pressure-angle`` and ``--internal``."""
+    parser.add_argument("teeth", type=integer("TEETH"), metavar="TEETH", help="number of teeth")
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
+    )
+    parser.add_argument(
+        "--shift", "-x", type=finite("--shift"), default=0.0, help="profile-shift coefficient"
+    )
+    parser.add_argument(
+        "--helix", type=finite("--helix"), default=0.0, help="helix angle, deg (+ right hand)"
+    )
+    parser.add_argument(
+        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
+        help="normal pressure angle, deg",
+    )  # fmt: skip
+    parser.add_argument("--internal", action="store_true", help="an internal (ring) gear")

@@ -15,17 +15,23 @@ from __future__ import annotations
 
 import argparse
 
-from trains.commands._common import OK, finite, integer, non_negative, output_file, positive
+from trains.commands._common import (
+    GEAR_NAMES,
+    OK,
+    SCENE_FORMATS,
+    gear_arguments,
+    integer,
+    non_negative,
+    output_file,
+    positive,
+)
 
 HELP = "3D mesh of one gear (spur, helical, herringbone, ring) to .stl/.3mf/.glb/.obj/.ply"
 
-FORMATS = (".stl", ".3mf", ".glb", ".obj", ".ply")
+FORMATS = SCENE_FORMATS  # one mesh or a scene: the same exporters
 
 NAMES = {
-    "profile_shift": "--shift",
-    "module": "--module",
-    "pressure_angle": "--pressure-angle",
-    "helix_angle": "--helix",
+    **GEAR_NAMES,
     "face_width": "--face-width",
     "tolerance": "--tolerance",
     "backlash": "--backlash",
@@ -38,20 +44,7 @@ NAMES = {
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("teeth", type=integer("TEETH"), metavar="TEETH", help="number of teeth")
-    parser.add_argument(
-        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
-    )
-    parser.add_argument(
-        "--shift", "-x", type=finite("--shift"), default=0.0, help="profile-shift coefficient"
-    )
-    parser.add_argument(
-        "--helix", type=finite("--helix"), default=0.0, help="helix angle, deg (+ right hand)"
-    )
-    parser.add_argument(
-        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
-        help="normal pressure angle, deg",
-    )  # fmt: skip
+    gear_arguments(parser)
     parser.add_argument(
         "--face-width", "-b", type=positive("--face-width", "mm"), default=None,
         help="face width, mm (default: 10 modules)",
@@ -59,7 +52,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--herringbone", action="store_true", help="two opposite-hand halves meeting mid-face"
     )
-    parser.add_argument("--internal", action="store_true", help="an internal (ring) gear")
     parser.add_argument(
         "--rim", type=positive("--rim", "mm"), default=None,
         help="ring width outside the tooth roots, mm (with --internal)",

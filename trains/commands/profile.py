@@ -17,9 +17,11 @@ from __future__ import annotations
 import argparse
 
 from trains.commands._common import (
+    GEAR_NAMES,
     OK,
     busy,
     finite,
+    gear_arguments,
     integer,
     non_negative,
     output_file,
@@ -32,10 +34,7 @@ HELP = "tooth outline (analytic, simulated rack or shaper cutting) to .svg/.dxf/
 FORMATS = (".svg", ".dxf", ".png", ".npz")
 
 NAMES = {
-    "profile_shift": "--shift",
-    "module": "--module",
-    "pressure_angle": "--pressure-angle",
-    "helix_angle": "--helix",
+    **GEAR_NAMES,
     "tolerance": "--tolerance",
     "backlash": "--backlash",
     "bore": "--bore",
@@ -53,19 +52,7 @@ NAMES = {
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("teeth", type=integer("TEETH"), metavar="TEETH", help="number of teeth")
-    parser.add_argument(
-        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
-    )
-    parser.add_argument(
-        "--shift", "-x", type=finite("--shift"), default=0.0, help="profile-shift coefficient"
-    )
-    parser.add_argument("--helix", type=finite("--helix"), default=0.0, help="helix angle, deg")
-    parser.add_argument(
-        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
-        help="normal pressure angle, deg",
-    )  # fmt: skip
-    parser.add_argument("--internal", action="store_true", help="an internal (ring) gear")
+    gear_arguments(parser)
     parser.add_argument(
         "--method", choices=("analytic", "rack", "shaper"), default="analytic",
         help="analytic envelope or simulated cutting",
