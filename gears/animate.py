@@ -46,6 +46,22 @@ def polygon_path(polygon):
     return Path(np.concatenate(verts), np.concatenate(codes))
 
 
+#: Most frames one animation writes (matplotlib renders about 30 ms a frame: 2000 is a minute).
+MAX_FRAMES = 2000
+
+
+def check_frames(frames, name: str = "frames") -> int:
+    """``frames`` as an int in ``1 ... MAX_FRAMES``, or a :class:`GearError` naming the range."""
+    if isinstance(frames, bool) or not isinstance(frames, int | float | np.integer | np.floating):
+        raise GearError(f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES}")
+    if not (math.isfinite(frames) and frames == int(frames) and 1 <= frames <= MAX_FRAMES):
+        raise GearError(
+            f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES} (more frames take "
+            "minutes to render; lower the count or the fps)"
+        )
+    return int(frames)
+
+
 def write_animation(
     path, frames: Sequence[Frame] | Callable[[int], Frame], fps: float = 20.0,
     n_frames: int | None = None, size: float = 5.0, dpi: int = 80, title: str | None = None,
@@ -97,9 +113,9 @@ def write_animation(
     if not math.isfinite(fps) or fps <= 0.0:
         raise GearError(f"fps = {fps!r} must be a finite number > 0")
     if callable(frames):
-        if n_frames is None or int(n_frames) < 1:
-            raise GearError(f"n_frames = {n_frames!r} must be an integer >= 1 with a callable")
-        n = int(n_frames)
+        if n_frames is None:
+            raise GearError("n_frames = None: a callable of frames needs n_frames >= 1")
+        n = check_frames(n_frames, "n_frames")
         get = frames
     else:
         seq = list(frames)
@@ -107,6 +123,7 @@ def write_animation(
         get = seq.__getitem__
     if n < 1:
         raise GearError("an animation needs at least one frame")
+    check_frames(n)
     try:
         import matplotlib
 

@@ -13,6 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
+from gears.animate import check_frames, write_animation
 from gears.checks import (
     equal_sliding_split,
     form_lengths,
@@ -24,6 +25,7 @@ from gears.errors import GearError
 from gears.gear import Gear
 from gears.geometry import check_real
 from gears.involute import inv
+from gears.mesh import COLOURS, check_positive, gear_solid, helix_twist, scene, transform
 from gears.meshing import (
     PairGeometry,
     center_distance_shift_sum,
@@ -563,7 +565,6 @@ class GearPair:
         >>> sorted(p.scene(tolerance=0.05).graph.nodes_geometry)
         ['gear1', 'gear2']
         """
-        from gears.mesh import COLOURS, check_positive, gear_solid, helix_twist, scene, transform
 
         tolerance = check_positive("tolerance", tolerance)
         angle2, centre2 = self._placement(angle)
@@ -589,12 +590,7 @@ class GearPair:
         (:func:`gears.animate.write_animation`)."""
         from shapely import affinity
 
-        from gears.animate import write_animation
-        from gears.mesh import COLOURS
-
-        n = int(frames)
-        if n < 1:
-            raise GearError(f"frames = {frames!r}; valid is an integer >= 1")
+        n = check_frames(frames)
         turn = 360.0 / self.g1.teeth if turn is None else float(turn)
         p1, p2 = self._unplaced(tolerance, method, backlash, cutter)
         c1, c2 = (np.asarray(COLOURS[k]) / 255.0 for k in ("gear1", "gear2"))

@@ -389,3 +389,12 @@ def test_synthesize_finds_or_refuses_quickly(ratio, n, scheme, tolerance, z_min,
         return
     for c in found:
         assert math.isfinite(float(c.ratio)) and abs(float(c.ratio) - ratio) <= tolerance * ratio
+
+
+@pytest.mark.parametrize("frames", [10**6, 0, math.nan, "many", 2.5])
+def test_animations_refuse_frame_counts_outside_their_range(tmp_path, frames):
+    # one frame takes ~30 ms to render: a million frames would run for hours, refused at once
+    pair = GearPair(Gear(12, 2), Gear(24, 2))
+    refused(GearError, lambda: pair.animate(tmp_path / "a.gif", frames=frames), "frames")
+    stage = Planetary(18, 45, 108, n_planets=3, module=2)
+    refused(TrainError, lambda: stage.animate(tmp_path / "s.gif", frames=frames), "frames")

@@ -49,7 +49,9 @@ from typing import Any
 import numpy as np
 
 from gears import Gear, GearPair
+from gears.animate import check_frames, write_animation
 from gears.errors import GearError
+from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
 from gears.report import Finding, Report
 from trains.conditions import assembly_number
 from trains.errors import TrainError
@@ -1192,7 +1194,6 @@ class Planetary:
         >>> len(s.geometry), len(s.graph.nodes_geometry)
         (3, 5)
         """
-        from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
 
         b = face_width
         if b is None:
@@ -1222,12 +1223,11 @@ class Planetary:
         speeds from the Willis solver; frames are written by
         :func:`gears.animate.write_animation` (``progress(i, n)`` after each frame).
         """
-        from gears.animate import write_animation
-        from gears.mesh import COLOURS
 
-        n = int(frames)
-        if n < 1:
-            raise TrainError(f"frames = {frames!r}; valid is an integer >= 1")
+        try:
+            n = check_frames(frames)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
         if turn is None:
             turn = self.mesh_cycle(fixed)
         step = float(turn) / n
