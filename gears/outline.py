@@ -59,7 +59,7 @@ def gear_outline(
 
 
 def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: str = "analytic",
-                  backlash: float = 0.0, cutter=None):  # fmt: skip
+                  backlash: float = 0.0, cutter=None, progress=None):  # fmt: skip
     """Outlines of a :class:`GearPair` in mesh, as mounted (tip shortening applied).
 
     Gear 1 is centred at the origin and turned by ``angle`` degrees (at 0 its tooth 0 points
@@ -71,6 +71,7 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     ring is cut by its default shaper (simulated). ``cutter`` is a
     :class:`gears.cutter.ShaperCutter` for both gears or a pair ``(cutter1, cutter2)`` (None
     entries: the gear's default), used with ``method='shaper'`` or ``'analytic'``.
+    ``progress(done, 1000)`` reports a simulation of both gears as one run to 1000.
 
     Returns
     -------
@@ -81,10 +82,20 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
     angle = check_real("angle", angle)
     g1, g2 = pair.mounted
     c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
-    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1)
+    first = second = None
+    if progress is not None:  # one run to 1000: gear 1 fills the first half, gear 2 the second
+
+        def first(done: int, total: int) -> None:
+            progress(500 * done // total, 1000)
+
+        def second(done: int, total: int) -> None:
+            progress(500 + 500 * done // total, 1000)
+
+    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1, progress=first)
     m2 = "shaper" if (g2.internal and method == "rack") else method
     a2, center2 = pair_placement(g1.teeth, g2.teeth, pair.center_distance, g2.internal, angle)
-    p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=center2, cutter=c2)
+    p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=center2, cutter=c2,
+                      progress=second)  # fmt: skip
     return p1, p2
 
 

@@ -525,12 +525,13 @@ class GearPair:
     # --- checks ----------------------------------------------------------------------------------
     def outlines(
         self, angle: float = 0.0, tolerance: float = 0.001, method: str = "analytic",
-        backlash: float = 0.0, cutter=None,
+        backlash: float = 0.0, cutter=None, progress=None,
     ):  # fmt: skip
         """Both outlines in mesh: gear 1 at the origin turned by ``angle`` degrees, gear 2 at the
         working centre distance (see :func:`gears.outline.pair_outlines`; ``cutter`` is a
-        shaper cutter for both gears or a pair of them)."""
-        return pair_outlines(self, angle, tolerance, method, backlash, cutter)
+        shaper cutter for both gears or a pair of them; ``progress(done, total)`` follows a
+        simulation of both)."""
+        return pair_outlines(self, angle, tolerance, method, backlash, cutter, progress)
 
     def _unplaced(self, tolerance: float, method: str, backlash: float, cutter) -> tuple:
         """Both outlines centred on their own axes, unturned (from :meth:`outlines` at 0)."""

@@ -398,3 +398,11 @@ def test_animations_refuse_frame_counts_outside_their_range(tmp_path, frames):
     refused(GearError, lambda: pair.animate(tmp_path / "a.gif", frames=frames), "frames")
     stage = Planetary(18, 45, 108, n_planets=3, module=2)
     refused(TrainError, lambda: stage.animate(tmp_path / "s.gif", frames=frames), "frames")
+
+
+def test_pair_outlines_report_progress_as_one_sequence():
+    calls = []
+    pair = GearPair(Gear(12, 1), Gear(20, 1))
+    pair.outlines(tolerance=0.01, method="rack", progress=lambda d, n: calls.append((d, n)))
+    done = [d for d, _ in calls]
+    assert done == sorted(done) and done[-1] == calls[-1][1]  # one run up to its total

@@ -499,20 +499,6 @@ def test_profile_feeds_the_outline_progress_to_the_bar(capsys, monkeypatch, tmp_
     assert code == 0 and calls and calls[-1][1] == calls[-1][2] and calls[0][0] == "rack outline"
 
 
-def test_busy_spinner_on_a_terminal_only(monkeypatch):
-    from trains.commands import _common
-
-    class Tty(io.StringIO):
-        def isatty(self):
-            return True
-
-    for stream, shown in ((Tty(), True), (io.StringIO(), False)):
-        monkeypatch.setattr(sys, "stderr", stream)
-        with _common.busy("rack outline", delay=0):
-            pass
-        assert ("rack outline" in stream.getvalue()) == shown
-
-
 # ---------------------------------------------------------------------------------------------
 # 6. missing from the CLI: an internal pair drawn; PNG fill respects holes
 

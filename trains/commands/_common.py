@@ -24,7 +24,6 @@ import re
 import shutil
 import sys
 import textwrap
-import threading
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -257,39 +256,6 @@ def progress_bar(
     try:
         yield update
     finally:
-        bar.close()
-
-
-@contextlib.contextmanager
-def busy(desc: str, delay: float = 1.0) -> Iterator[None]:
-    """A tqdm spinner with the elapsed time on stderr while a call without a progress callback
-    runs (off when stderr is not a terminal; shown after ``delay`` s)."""
-    if not show_progress():
-        yield
-        return
-    from tqdm import tqdm
-
-    done = threading.Event()
-    bar = tqdm(
-        total=None,
-        desc=desc,
-        file=sys.stderr,
-        leave=False,
-        bar_format="{desc} {elapsed}",
-        delay=delay,
-    )
-
-    def tick() -> None:
-        while not done.wait(0.25):
-            bar.refresh()
-
-    thread = threading.Thread(target=tick, daemon=True)
-    thread.start()
-    try:
-        yield
-    finally:
-        done.set()
-        thread.join()
         bar.close()
 
 

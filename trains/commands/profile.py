@@ -19,7 +19,6 @@ import argparse
 from trains.commands._common import (
     GEAR_NAMES,
     OK,
-    busy,
     finite,
     gear_arguments,
     integer,
@@ -114,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
                           progress=progress)
             ]  # fmt: skip
     else:
-        with busy(f"{args.method} outlines"):  # GearPair.outlines has no progress callback
+        with progress_bar(f"{args.method} outlines") as progress:
             # the mate is external; an internal gear is the ring of the pair (gear 2)
             helix = args.helix if args.internal else -args.helix
             mate = Gear(
@@ -122,7 +121,9 @@ def run(args: argparse.Namespace) -> int:
                 cutter=cutter,
             )  # fmt: skip
             pair = GearPair(mate, g) if args.internal else GearPair(g, mate)
-            shapes = list(pair.outlines(0.0, args.tolerance, args.method, args.backlash))
+            shapes = list(
+                pair.outlines(0.0, args.tolerance, args.method, args.backlash, progress=progress)
+            )
     path = save(args.output, *shapes)
     n = sum(len(p.exterior.coords) + sum(len(h.coords) for h in p.interiors) for p in shapes)
     print(f"wrote {path} ({n} vertices, tolerance {args.tolerance:g} mm, {args.method})")
