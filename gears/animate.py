@@ -56,8 +56,8 @@ def check_frames(frames, name: str = "frames") -> int:
         raise GearError(f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES}")
     if not (math.isfinite(frames) and frames == int(frames) and 1 <= frames <= MAX_FRAMES):
         raise GearError(
-            f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES} (more frames take "
-            "minutes to render; lower the count or the fps)"
+            f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES} (a longer animation "
+            "takes minutes to render; lower the count)"
         )
     return int(frames)
 

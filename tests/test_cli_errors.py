@@ -647,3 +647,13 @@ def test_random_argv_gets_a_clear_answer(command, data):
     assert not re.search(r"\bnan\b", out, flags=re.I), (argv, out)
     if code == 2:
         assert out == "" and err.count("\n") == 1, (argv, err)
+
+
+def test_planetary_frames_beyond_the_bound_name_the_option(capsys, tmp_path):
+    # Planetary.animate refuses more than gears.animate.MAX_FRAMES frames; the CLI says --frames
+    code, out, err = _run(
+        capsys, "planetary", "18", "45", "108", "--planets", "3", "--animate",
+        str(tmp_path / "a.gif"), "--frames", "100000",
+    )  # fmt: skip
+    assert code == 2 and out == "" and "--frames = 100000" in err
+    assert not (tmp_path / "a.gif").exists()

@@ -37,6 +37,9 @@ NAMES = {
     "clearance": "--clearance",
     "center_distance": "--center-distance",
     "scheme": "--scheme",
+    "frames": "--frames",
+    "face_width": "--face-width",
+    "tolerance": "--tolerance",
 }
 """The library's names in error messages -> this command's options (see trains.cli)."""
 
