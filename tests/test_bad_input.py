@@ -178,7 +178,7 @@ def test_contact_ratio_is_never_negative():
     ra1, ra2 = 1.01 * rb1, 1.01 * rb2
     u_a, u_e, _ = line_positions(ra1, ra2, rb1, rb2, tan_wt, 1.0)
     assert u_e < u_a
-    assert contact_ratio(ra1, ra2, rb1, rb2, tan_wt, 1.0, 3.0) == 0.0
+    assert contact_ratio(ra1, ra2, rb1, rb2, tan_wt, 1.0, 3.0) == pytest.approx(0.0, abs=1e-15)
 
 
 # --- 5. thresholds and coefficients are validated ----------------------------------------------

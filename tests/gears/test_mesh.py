@@ -103,7 +103,7 @@ def test_spur_is_an_exact_prism():
     _valid(m)
     assert m.euler_number == 2  # genus 0
     assert m.volume == pytest.approx(o.area * 10, rel=1e-9)  # prism volume, exact
-    assert m.bounds[:, 2].tolist() == [-5.0, 5.0]  # mid-plane at z = 0
+    assert m.bounds[:, 2] == pytest.approx([-5.0, 5.0], abs=1e-12)  # mid-plane at z = 0
     assert len(m.vertices) == 2 * (len(o.exterior.coords) - 1)  # two levels, nothing more
 
 

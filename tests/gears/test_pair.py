@@ -178,7 +178,7 @@ def test_khk_profile_shifted_example():
     y = p.center_distance_modification
     assert p.tip_diameters[0] == pytest.approx(36 + 2 * 3 * (1 + y - 0.36))
     assert p.tip_diameters[1] == pytest.approx(72 + 2 * 3 * (1 + y - 0.6))
-    assert p.ratio == 2.0
+    assert p.ratio == pytest.approx(2.0, rel=1e-15)  # u = z2 / z1 = 24 / 12
     # back: the same centre distance recovers x1 + x2 = 0.96
     assert float(center_distance_shift_sum(12, 24, 3, p.center_distance)) == pytest.approx(0.96)
 
@@ -207,7 +207,7 @@ def test_ozols_table_21_1(u, z1, z2, z_min, eps):
     assert _z_min(u) == pytest.approx(z_min, abs=5e-4)
     assert round(_z_min(u)) == z1
     p = _pair(z1, z2)
-    assert round(p.contact_ratio, 2) == eps
+    assert p.contact_ratio == pytest.approx(eps, abs=0.005)  # the book prints two decimals
     # independent: (21.20) is the condition "the mate's tip passes through N1", i.e. the path
     # of contact starts at N1 (u = 0 on the line of action) for z1 = z_min(u), z2 = u z1
     zr = _z_min(u)
@@ -343,7 +343,7 @@ def test_internal_pair_formulas():
     aw = float(inv_inverse(2 * TAN20 * (0.5 - 0.2) / 50 + inv(A20)))
     assert math.radians(p.working_pressure_angle) == pytest.approx(aw, rel=1e-13)
     assert p.center_distance == pytest.approx(50 * math.cos(A20) / math.cos(aw), rel=1e-13)
-    assert p.tip_alteration == 0.0
+    assert p.tip_alteration == pytest.approx(0.0, abs=1e-12)  # y = x1 + x2: no shortening
     assert p.tip_diameters == pytest.approx((g1.tip_diameter, g2.tip_diameter))
     assert p.reference_center_distance == pytest.approx(50.0)
 
@@ -535,7 +535,10 @@ def test_helical_pair_hands_and_ratios():
     assert math.radians(p.working_pressure_angle) == pytest.approx(at)
     with pytest.raises(GearError, match="face_width"):
         _ = GearPair(Gear(20, 2, helix_angle=15), Gear(40, 2, helix_angle=-15)).overlap_ratio
-    assert _pair(20, 40).total_contact_ratio == _pair(20, 40).contact_ratio
+    # spur: eps_gamma = eps_alpha + eps_beta with eps_beta = 0
+    assert _pair(20, 40).total_contact_ratio == pytest.approx(
+        _pair(20, 40).contact_ratio, rel=1e-15
+    )
 
 
 # --- path of contact, check() semantics ---------------------------------------------------------

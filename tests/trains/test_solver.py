@@ -187,7 +187,7 @@ def test_basic_ratio_near_one_float_warns():
     t.link("1", "3", ratio=-4.0, carrier="H")
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        assert t.solve({"1": 5.0, "3": 0.0})["H"] == 1.0
+        assert t.solve({"1": 5.0, "3": 0.0})["H"] == pytest.approx(1.0, rel=1e-15)  # 5 / (1 + 4)
 
 
 def test_float_basic_ratio_exactly_one_gives_clear_error():

@@ -99,9 +99,10 @@ def test_reverted_reducer_toml_matches_coaxial_shifts(capsys):
     f = EXAMPLES / "train_reverted_reducer.toml"
     t = read_train(f)
     pair = t.pairs["in-lay"]
-    assert (pair.g1.profile_shift, pair.g2.profile_shift) == (
-        p12.g1.profile_shift,
-        p12.g2.profile_shift,
+    # the stored shifts are a computed result: another machine's numpy/scipy build finds them a
+    # few ulps away (2e-15 seen), so compare within 1e-12, far below a shift anyone can grind
+    assert (pair.g1.profile_shift, pair.g2.profile_shift) == pytest.approx(
+        (p12.g1.profile_shift, p12.g2.profile_shift), abs=1e-12
     )
     assert abs(pair.center_distance - t.pairs["lay-out"].center_distance) < 1e-9
     assert main(["train", str(f)]) == 0  # prints the check report; every check holds
