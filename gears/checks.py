@@ -392,7 +392,8 @@ class PairMargins(NamedTuple):
         """True where every finding holds (``allow_undercut`` skips the undercut findings)."""
         names = [k for k in self.findings() if not (allow_undercut and k.endswith(".undercut"))]
         f = self.findings()
-        return np.logical_and.reduce([np.asarray(f[k]) >= 0 for k in names])
+        # a scalar input leaves some margins 0-d: broadcast them to the pairs' shape
+        return np.logical_and.reduce(np.broadcast_arrays(*[np.asarray(f[k]) >= 0 for k in names]))
 
 
 def pair_margins(z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angle=0.0,
