@@ -18,6 +18,7 @@ import numpy as np
 import shapely
 
 from gears.errors import GearError
+from gears.files import check_output
 
 __all__ = ["polygon_path", "write_animation"]
 
@@ -105,10 +106,8 @@ def write_animation(
     >>> f.read_bytes()[:6]
     b'GIF89a'
     """
-    path = pathlib.Path(path)
+    path = check_output(path, (".gif", ".mp4"))
     ext = path.suffix.lower()
-    if ext not in (".gif", ".mp4"):
-        raise GearError(f"animation format {ext!r} unknown; valid are .gif and .mp4")
     fps = float(fps)
     if not math.isfinite(fps) or fps <= 0.0:
         raise GearError(f"fps = {fps!r} must be a finite number > 0")

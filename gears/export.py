@@ -8,12 +8,16 @@ Export picks the format from the file extension (:func:`save`), the way trimesh 
 
 from __future__ import annotations
 
+import io
 import pathlib
+import re
+import zipfile
 
 import numpy as np
 import shapely
 
 from gears.errors import GearError
+from gears.files import check_output, writing
 from gears.plot import outlines_figure
 
 __all__ = ["check_output", "points", "save", "save_mesh", "to_dxf", "to_svg"]
@@ -53,6 +57,7 @@ def to_svg(path, *outlines, margin: float = 1.0, stroke: float = 0.05) -> pathli
     >>> f.read_text().startswith("<?xml")
     True
     """
+    path = check_output(path, (".svg",))
     polys = _polygons(outlines)
     x0, y0, x1, y1 = shapely.total_bounds(polys)
     x0, y0, x1, y1 = x0 - margin, y0 - margin, x1 + margin, y1 + margin
@@ -73,14 +78,16 @@ def to_svg(path, *outlines, margin: float = 1.0, stroke: float = 0.05) -> pathli
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.6f}mm" height="{h:.6f}mm" '
         f'viewBox="{x0:.6f} {y0:.6f} {w:.6f} {h:.6f}">\n' + "\n".join(body) + "\n</svg>\n"
     )
-    path = pathlib.Path(path)
-    path.write_text(text)
+    with writing(path):
+        path.write_text(text)
     return path
 
 
 def to_dxf(path, *outlines) -> pathlib.Path:
     """Write ``outlines`` as closed LWPOLYLINEs in a DXF (mm units). Needs ezdxf
     (``pip install geartrain[dxf]``)."""
+    path = check_output(path, (".dxf",))
+    polys = _polygons(outlines)
     try:
         import ezdxf
         from ezdxf import units
@@ -89,11 +96,11 @@ def to_dxf(path, *outlines) -> pathlib.Path:
     doc = ezdxf.new("R2010")
     doc.units = units.MM
     msp = doc.modelspace()
-    for p in _polygons(outlines):
+    for p in polys:
         for ring in points(p):
             msp.add_lwpolyline(ring.tolist(), close=True)
-    path = pathlib.Path(path)
-    doc.saveas(path)
+    with writing(path):
+        doc.saveas(path)
     return path
 
 
@@ -105,29 +112,36 @@ def _is_mesh(obj) -> bool:
     return type(obj).__name__ in ("Trimesh", "Scene") and hasattr(obj, "export")
 
 
-def check_output(path, formats=MESH_FORMATS) -> pathlib.Path:
-    """``path`` as a Path, or a GearError (before any work) when its extension is not one of
-    ``formats`` or its directory does not exist.
+def _standard_3mf(data: bytes) -> bytes:
+    """trimesh's 3MF package with the namespace declarations it repeats on every build
+    ``<item>`` removed. They are the ``<model>``'s own (the same prefixes and URIs), so the
+    document means the same; lib3mf's strict reader refuses the repeats ("Invalid Attribute in
+    namespace")."""
 
-    Examples
-    --------
-    >>> check_output("stage.glb").name
-    'stage.glb'
-    """
-    out = pathlib.Path(path)
-    if out.suffix.lower() not in formats:
-        raise GearError(f"output {str(path)!r}: the extension must be one of {', '.join(formats)}")
-    parent = out.parent if str(out.parent) else pathlib.Path(".")
-    if not parent.is_dir():
-        raise GearError(f"output {str(path)!r}: the directory {str(parent)!r} does not exist")
-    return out
+    def item(match: re.Match) -> bytes:
+        return re.sub(rb'\sxmlns(?::\w+)?="[^"]*"', b"", match.group())
+
+    src = zipfile.ZipFile(io.BytesIO(data))
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as dst:
+        for info in src.infolist():
+            part = src.read(info)
+            if info.filename.endswith(".model"):
+                part = re.sub(rb"<item\b[^>]*>", item, part)
+            dst.writestr(info, part)
+    return out.getvalue()
 
 
 def save_mesh(path, mesh_or_scene) -> pathlib.Path:
     """Write a ``trimesh.Trimesh`` or ``trimesh.Scene`` by extension with trimesh's exporters:
-    ``.stl`` (binary), ``.3mf`` (needs lxml), ``.glb``, ``.obj`` (with its ``.mtl`` beside it
-    when the parts have colours), ``.ply``. A 3MF or GLB of a scene keeps one named object per
-    part and stores a shared (instanced) geometry once; STL, OBJ and PLY hold the merged scene.
+    ``.stl`` (binary), ``.3mf`` (needs lxml), ``.glb``, ``.obj`` (with its materials beside it
+    in a file named after it, ``pair.obj`` -> ``pair.mtl``, when the parts have colours),
+    ``.ply``. A 3MF or GLB of a scene keeps one named object per part and stores a shared
+    (instanced) geometry once; STL, OBJ and PLY hold the merged scene. A 3MF passes the strict
+    reader of lib3mf, the 3MF Consortium's reference library.
+
+    The path is checked before any work (:func:`gears.files.check_output`): a missing
+    directory, an unknown extension or a path that is not a file name is a GearError.
 
     Examples
     --------
@@ -138,17 +152,21 @@ def save_mesh(path, mesh_or_scene) -> pathlib.Path:
     >>> f.stat().st_size   # binary STL: 84 + 50 bytes per triangle
     684
     """
-    path = pathlib.Path(path)
+    path = check_output(path, MESH_FORMATS)
     ext = path.suffix.lower()
-    if ext not in MESH_FORMATS:
-        raise GearError(f"unknown mesh format {ext!r}; valid are {', '.join(MESH_FORMATS)}")
     if not _is_mesh(mesh_or_scene):
         raise GearError(
             f"the {ext} format needs a trimesh.Trimesh or trimesh.Scene; "
             f"got {type(mesh_or_scene).__name__}"
         )
     try:
-        mesh_or_scene.export(str(path), file_type=ext[1:])
+        with writing(path):
+            if ext == ".3mf":
+                path.write_bytes(_standard_3mf(mesh_or_scene.export(file_type="3mf")))
+            elif ext == ".obj":
+                mesh_or_scene.export(str(path), file_type="obj", mtl_name=f"{path.stem}.mtl")
+            else:
+                mesh_or_scene.export(str(path), file_type=ext[1:])
     except ImportError as exc:
         missing = getattr(exc, "name", None) or str(exc)
         raise GearError(
@@ -160,16 +178,29 @@ def save_mesh(path, mesh_or_scene) -> pathlib.Path:
 def save(path, *objects) -> pathlib.Path:
     """Write by extension: outlines to ``.svg``, ``.dxf``, ``.png`` (matplotlib, the ``plot``
     extra) or ``.npz`` (point arrays); one mesh or scene to ``.stl``, ``.3mf``, ``.glb``,
-    ``.obj`` or ``.ply`` (:func:`save_mesh`)."""
-    path = pathlib.Path(path)
+    ``.obj`` or ``.ply`` (:func:`save_mesh`).
+
+    The path is checked before any work (:func:`gears.files.check_output`): ``None``, a
+    non-path, a missing or read-only directory and an unknown extension are a GearError
+    naming the path and what is valid.
+
+    Examples
+    --------
+    >>> save("no/such/dir/g.svg", None)
+    Traceback (most recent call last):
+    ...
+    gears.errors.GearError: path 'no/such/dir/g.svg': the directory 'no/such/dir' does not exist
+    """
+    path = check_output(path, OUTLINE_FORMATS + MESH_FORMATS)
     ext = path.suffix.lower()
-    if ext in MESH_FORMATS or (objects and _is_mesh(objects[0])):
+    if ext in MESH_FORMATS:
         if len(objects) != 1:
             raise GearError(f"{ext} export takes one mesh or scene; got {len(objects)} objects")
         return save_mesh(path, objects[0])
-    if ext not in OUTLINE_FORMATS:
+    if objects and _is_mesh(objects[0]):
         raise GearError(
-            f"unknown export format {ext!r}; valid are {', '.join(OUTLINE_FORMATS + MESH_FORMATS)}"
+            f"a mesh or scene is written as {', '.join(MESH_FORMATS)}; {str(path)!r} is an "
+            f"outline format ({', '.join(OUTLINE_FORMATS)})"
         )
     outlines = _polygons(objects)  # a clear error for anything that is not an outline
     if ext == ".svg":
@@ -178,19 +209,17 @@ def save(path, *objects) -> pathlib.Path:
         return to_dxf(path, *outlines)
     if ext == ".png":
         fig = outlines_figure(*outlines)
-        fig.savefig(path, dpi=150)
         import matplotlib.pyplot as plt
 
-        plt.close(fig)
+        try:
+            with writing(path):
+                fig.savefig(path, dpi=150)
+        finally:
+            plt.close(fig)
         return path
-    if ext == ".npz":
-        arrays = {
-            f"outline{i}_ring{j}": r
-            for i, p in enumerate(_polygons(outlines))
-            for j, r in enumerate(points(p))
-        }
+    arrays = {  # .npz
+        f"outline{i}_ring{j}": r for i, p in enumerate(outlines) for j, r in enumerate(points(p))
+    }
+    with writing(path):
         np.savez(path, **arrays)
-        return path
-    raise GearError(
-        f"unknown export format {ext!r}; valid are {', '.join(OUTLINE_FORMATS + MESH_FORMATS)}"
-    )
+    return path

@@ -21,7 +21,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 LAYERS = {
     "gears": [
         ["errors"],
-        ["involute", "report"],
+        ["involute", "report", "files"],
         ["geometry", "meshing"],
         ["rack", "cutter"],
         ["profile", "measure", "checks"],

@@ -106,3 +106,119 @@ def test_shaper_generation_figure(tmp_path):
         generation_figure(ring)
     with pytest.raises(GearError, match="method"):
         generation_figure(Gear(8, 1), method="hob")
+
+
+# ---------------------------------------------------------------------------------------------
+# issue 16: standard 3MF, one material file per OBJ; issue 17 item 4: bad paths before any work
+
+
+def _strict_3mf(path):
+    """Read ``path`` with lib3mf (the 3MF Consortium's reference library) in strict mode: the
+    model, after asserting that the read raised nothing and warned nothing."""
+    import lib3mf  # the test extra
+
+    model = lib3mf.get_wrapper().CreateModel()
+    reader = model.QueryReader("3mf")
+    reader.SetStrictModeActive(True)
+    reader.ReadFromFile(str(path))  # strict: a non-standard attribute raises
+    assert [reader.GetWarning(i) for i in range(reader.GetWarningCount())] == []
+    return model
+
+
+def _count(iterator) -> int:
+    n = 0
+    while iterator.MoveNext():
+        n += 1
+    return n
+
+
+def test_every_3mf_passes_lib3mf_strict(tmp_path):
+    # source: the 3MF core spec as lib3mf enforces it. Before the fix every file failed with
+    # "Invalid Attribute in namespace" (xmlns repeated on each build <item>). A gear, a pair
+    # scene and a planetary scene: build items = parts, mesh objects = distinct geometries
+    from trains import Planetary
+
+    cases = [
+        ("gear", Gear(20, 1, helix_angle=15).mesh(8, 0.05), 1, 1),
+        ("pair", GearPair(Gear(12, 1), Gear(24, 1)).scene(tolerance=0.05), 2, 2),
+        ("stage", Planetary(18, 45, 108, 3, 1).scene(tolerance=0.05), 5, 3),  # planets shared
+    ]
+    for name, obj, items, objects in cases:
+        model = _strict_3mf(save(tmp_path / f"{name}.3mf", obj))
+        assert _count(model.GetBuildItems()) == items, name
+        assert _count(model.GetMeshObjects()) == objects, name
+
+
+def test_obj_materials_are_named_after_the_obj(tmp_path):
+    # two scenes in one folder keep their own materials: pair.obj -> pair.mtl, ring.obj ->
+    # ring.mtl, each OBJ naming its own (the OBJ spec's mtllib statement)
+    from trains import Planetary
+
+    save(tmp_path / "pair.obj", GearPair(Gear(12, 1), Gear(24, 1)).scene(tolerance=0.1))
+    save(tmp_path / "stage.obj", Planetary(18, 45, 108, 3, 1).scene(tolerance=0.1))
+    assert sorted(p.name for p in tmp_path.glob("*.mtl")) == ["pair.mtl", "stage.mtl"]
+    for name in ("pair", "stage"):
+        head = (tmp_path / f"{name}.obj").read_text()[:2000]
+        assert f"mtllib {name}.mtl" in head
+    assert not (tmp_path / "material.mtl").exists()
+
+
+def _read_only_dir(tmp_path, monkeypatch):
+    """A folder this process may not write into. As root the permission bits do not bind, so
+    ``os.access`` is made to answer as it would for an ordinary user (the bits say no)."""
+    import os
+
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o555)
+    if os.geteuid() == 0:
+        real = os.access
+        monkeypatch.setattr(
+            os, "access", lambda p, mode: False if str(p) == str(folder) else real(p, mode)
+        )
+    return folder
+
+
+@pytest.mark.parametrize("writer", ["save", "save_mesh", "to_svg", "to_dxf"])
+def test_bad_paths_are_refused_before_any_work(tmp_path, monkeypatch, writer):
+    # issue 17 item 4: each writer checks its path first (gears.files.check_output): the error
+    # names the path and what is valid, and comes before the objects are looked at (an invalid
+    # object is passed, so any work would fail differently)
+    import os
+
+    from gears import export
+
+    fn = getattr(export, writer)
+    ext = {"save": ".svg", "save_mesh": ".stl", "to_svg": ".svg", "to_dxf": ".dxf"}[writer]
+    read_only = _read_only_dir(tmp_path, monkeypatch)
+    cases = [
+        (tmp_path / "missing" / f"g{ext}", "does not exist"),
+        (None, "give a file name"),
+        (3.5, "give a file name"),
+        (shapely.box(0, 0, 1, 1), "give a file name"),
+        (read_only / f"g{ext}", "not writable"),
+        (tmp_path / "g.xyz", "not a format written here; valid are"),
+        (tmp_path, "is a directory"),
+        ("", "give a file name"),
+    ]
+    for path, why in cases:
+        with pytest.raises(GearError, match=why) as info:
+            fn(path, "not an outline")
+        message, named = (
+            str(info.value),
+            str(path) if isinstance(path, str | os.PathLike) else repr(path),
+        )
+        assert message.startswith("path ") and named[:20] in message and ext in message, message
+    assert list(read_only.iterdir()) == []
+
+
+def test_a_failed_write_is_a_gear_error(tmp_path, monkeypatch):
+    # a write that fails after the check (a full disk, a read-only mount) names the path
+    import pathlib
+
+    def full(self, *args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(pathlib.Path, "write_text", full)
+    with pytest.raises(GearError, match=r"g\.svg' could not be written: No space left"):
+        save(tmp_path / "g.svg", Gear(12, 1).outline(0.01))

@@ -137,26 +137,18 @@ SCENE_FORMATS = (".glb", ".3mf", ".stl", ".obj", ".ply")
 
 
 def output_file(suffixes: tuple[str, ...], name: str = "--output") -> Callable[[str], Path]:
-    """An option type for a file to write: its suffix is one of ``suffixes``, it is not a
-    directory and its directory exists and is writable (checked before any work starts)."""
+    """An option type for a file to write, checked before any work by the library's own check
+    (:func:`gears.files.check_output`): its suffix is one of ``suffixes``, it is not a
+    directory, and its directory exists and is writable."""
 
     def parse(text: str) -> Path:
-        p = Path(text)
-        if p.is_dir():
-            raise argparse.ArgumentTypeError(f"{name} {text!r} is a directory; give a file name")
-        if p.suffix.lower() not in suffixes:
-            raise argparse.ArgumentTypeError(
-                f"{name} {text!r} has the suffix {p.suffix or '(none)'!r}; valid are "
-                + ", ".join(suffixes)
-            )
-        parent = p.parent if str(p.parent) else Path(".")
-        if not parent.is_dir():
-            raise argparse.ArgumentTypeError(
-                f"{name} {text!r}: the directory {str(parent)!r} does not exist"
-            )
-        if not os.access(parent, os.W_OK) or (p.exists() and not os.access(p, os.W_OK)):
-            raise argparse.ArgumentTypeError(f"{name} {text!r} is not writable")
-        return p
+        from gears.errors import GearError
+        from gears.files import check_output
+
+        try:
+            return check_output(text, suffixes, name)
+        except GearError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
 
     parse.__name__ = "file name"
     return parse

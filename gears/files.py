@@ -1,0 +1,78 @@
+"""Layer 1, output files: the one check of a path that a writer is about to write.
+
+Every writer of the library (:func:`gears.export.save` and its format writers, the animation
+writer) and every output option of the ``geartrain`` CLI calls :func:`check_output` before any
+work, so a bad path is one clear :class:`~gears.errors.GearError` naming the path and what is
+valid, never a ``FileNotFoundError`` after a long computation. :func:`writing` turns what can
+still go wrong during the write itself (a full disk, a read-only mount) into the same error.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pathlib
+from collections.abc import Iterable, Iterator
+
+from gears.errors import GearError
+
+__all__ = ["check_output", "writing"]
+
+
+def check_output(path, formats: Iterable[str], name: str = "path") -> pathlib.Path:
+    """``path`` as a :class:`pathlib.Path` when a file of one of ``formats`` (suffixes such as
+    ``".svg"``, compared without case) can be written there; a GearError otherwise.
+
+    Refused, each with a message that starts with ``name`` and the path and says what is
+    valid: anything but a ``str`` or ``os.PathLike`` (``None``, a number, a polygon), an empty
+    name, a suffix not in ``formats``, an existing directory, a directory that does not exist,
+    and a directory or existing file this process may not write.
+
+    Examples
+    --------
+    >>> check_output("stage.glb", (".glb", ".stl")).name
+    'stage.glb'
+    >>> check_output("g.gif", (".glb",))
+    Traceback (most recent call last):
+    ...
+    gears.errors.GearError: path 'g.gif': '.gif' is not a format written here; valid are .glb
+    >>> check_output(None, (".svg",))
+    Traceback (most recent call last):
+    ...
+    gears.errors.GearError: path None: give a file name (a str or os.PathLike ending in .svg)
+    """
+    formats = tuple(formats)
+    valid = ", ".join(formats)
+    if isinstance(path, bytes) or not isinstance(path, str | os.PathLike):
+        raise GearError(
+            f"{name} {path!r:.60}: give a file name (a str or os.PathLike ending in {valid})"
+        )
+    text = os.fspath(path)
+    if not isinstance(text, str) or not text.strip():
+        raise GearError(f"{name} {text!r}: give a file name ending in {valid}")
+    out = pathlib.Path(text)
+    if out.is_dir():
+        raise GearError(f"{name} {text!r} is a directory; give a file name ending in {valid}")
+    if out.suffix.lower() not in formats:
+        raise GearError(
+            f"{name} {text!r}: {out.suffix or 'no suffix'!r} is not a format written here; "
+            f"valid are {valid}"
+        )
+    parent = out.parent if str(out.parent) else pathlib.Path(".")
+    if not parent.is_dir():
+        raise GearError(f"{name} {text!r}: the directory {str(parent)!r} does not exist")
+    if not os.access(parent, os.W_OK | os.X_OK) or (out.exists() and not os.access(out, os.W_OK)):
+        where = f"the file {text!r}" if out.exists() else f"the directory {str(parent)!r}"
+        raise GearError(f"{name} {text!r} is not writable: {where} is read-only for this user")
+    return out
+
+
+@contextlib.contextmanager
+def writing(path) -> Iterator[None]:
+    """Run the write of ``path``; an ``OSError`` it raises (a full disk, a read-only mount, a
+    name the file system refuses) becomes a GearError naming the path and the reason."""
+    try:
+        yield
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise GearError(f"path {str(path)!r} could not be written: {reason}") from exc
