@@ -25,7 +25,7 @@ import math
 import sys
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, CancelledError, ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,12 +37,22 @@ from gears.checks import (
     proportional_split,
 )
 from gears.errors import GearError
+from gears.files import check_output, writing
 from gears.geometry import check_real, min_profile_shift, transverse_pressure_angle
 from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
 from gears.rack import BasicRack
 from gears.report import format_duration
 
-__all__ = ["Limits", "SearchResult", "evaluate_chunk", "pairs", "write_table"]
+__all__ = [
+    "Limits",
+    "SearchResult",
+    "check_table_output",
+    "dask_client",
+    "dask_results",
+    "evaluate_chunk",
+    "pairs",
+    "write_table",
+]
 
 #: candidates per second per local thread assumed by the size check (measured 1.2e6 on one
 #: shared core, docs/performance.md)
@@ -375,7 +385,7 @@ class SearchResult:
         return pd.DataFrame.from_records(self.table)
 
     def to_parquet(self, path) -> None:
-        """Write the table to a Parquet file (needs pyarrow: ``pip install pyarrow``)."""
+        """Write the table to a ``.parquet`` file (needs pyarrow: the ``parquet`` extra)."""
         write_table(self.table, path, ".parquet")
 
     def format(self, columns: Sequence[str] | None = None) -> str:
@@ -406,31 +416,43 @@ class SearchResult:
                 f"feasible={self.feasible})")  # fmt: skip
 
 
-def write_table(table: np.ndarray, path, suffix: str | None = None) -> None:
-    """Write a structured array to ``path``: Parquet (``.parquet``, needs pyarrow) or CSV
-    (``.csv``, a header line of column names); the format follows the suffix."""
-    import pathlib
+TABLE_FORMATS = (".parquet", ".csv")
 
-    path = pathlib.Path(path)
-    kind = (suffix or path.suffix).lower()
-    if kind == ".csv":
+
+def check_table_output(path, suffix: str | None = None):
+    """``path`` checked for :func:`write_table` before any work: a writable file name with a
+    suffix of :data:`TABLE_FORMATS` (or ``suffix``) and, for Parquet, pyarrow importable
+    (the ``parquet`` extra); a GearError saying which otherwise."""
+    path = check_output(path, (suffix,) if suffix else TABLE_FORMATS)
+    if (suffix or path.suffix).lower() == ".parquet":
+        try:
+            import pyarrow.parquet  # noqa: F401
+        except ImportError:
+            raise GearError(
+                f"path {str(path)!r}: writing Parquet needs pyarrow: pip install "
+                "'geartrain[parquet]' (or write .csv)"
+            ) from None
+    return path
+
+
+def write_table(table: np.ndarray, path, suffix: str | None = None) -> None:
+    """Write a structured array to ``path``: Parquet (``.parquet``, needs pyarrow, the
+    ``parquet`` extra) or CSV (``.csv``, a header line of column names); the format follows
+    the suffix. The path is checked first (:func:`check_table_output`)."""
+    path = check_table_output(path, suffix)
+    if (suffix or path.suffix).lower() == ".csv":
         import csv
 
-        with path.open("w", newline="") as f:
+        with writing(path), path.open("w", newline="") as f:
             out = csv.writer(f)
             out.writerow(table.dtype.names)
             out.writerows(row.tolist() if hasattr(row, "tolist") else row for row in table)
         return
-    if kind != ".parquet":
-        raise GearError(f"file {str(path)!r}: valid suffixes are .parquet and .csv")
-    try:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-    except ImportError:
-        raise GearError(
-            "writing Parquet needs pyarrow: pip install pyarrow (or pandas with pyarrow)"
-        ) from None
-    pq.write_table(pa.table({c: table[c] for c in table.dtype.names}), str(path))
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    with writing(path):
+        pq.write_table(pa.table({c: table[c] for c in table.dtype.names}), str(path))
 
 
 # --- input -------------------------------------------------------------------------------------
@@ -484,9 +506,80 @@ def _objective(objective) -> tuple[str, ...]:
     return obj
 
 
-def dask_client(client):
+def dask_timeout(timeout=None) -> float:
+    """Seconds to wait for a Dask scheduler to answer, and for a worker when a cluster has none:
+    ``timeout`` (a finite number > 0), or Dask's own setting
+    ``distributed.comm.timeouts.connect`` (``dask.config.set(...)``; the CLI's
+    ``--connect-timeout`` sets it)."""
+    if timeout is None:
+        import dask
+        from dask.utils import parse_timedelta
+
+        timeout = parse_timedelta(dask.config.get("distributed.comm.timeouts.connect"), "s")
+    return check_real("distributed.comm.timeouts.connect", timeout, 0.0)
+
+
+def _check_scheduler(address: str, seconds: float) -> None:
+    """A GearError unless a Dask scheduler answers at ``address`` within ``seconds``: an unknown
+    scheme, nothing listening, and a port where something else listens (an HTTP server, which
+    would keep a Dask client waiting for ever) are told apart."""
+    import asyncio
+
+    from distributed.comm import connect
+    from distributed.comm.addressing import parse_address
+    from distributed.comm.registry import get_backend
+
+    try:
+        get_backend(parse_address(address)[0])
+    except (ValueError, TypeError) as exc:
+        raise GearError(
+            f"Dask scheduler address {address!r}: {exc}; an address reads tcp://host:8786"
+        ) from None
+
+    async def identity():
+        comm = await connect(address, timeout=seconds)
+        try:
+            await comm.write({"op": "identity"})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    def ask():  # in a thread of its own, so that it also runs under a live event loop (Jupyter)
+        return asyncio.run(asyncio.wait_for(identity(), seconds))
+
+    wait = f"within {seconds:g} s (distributed.comm.timeouts.connect)"
+    with ThreadPoolExecutor(1, thread_name_prefix="gears.dask_probe") as pool:
+        try:
+            reply = pool.submit(ask).result()
+        except TimeoutError:  # asyncio's is the same class
+            raise GearError(
+                f"no Dask scheduler answered at {address!r} {wait}: nothing listens there, or "
+                "something that is not a Dask scheduler does; check the address and the port"
+            ) from None
+        except OSError as exc:
+            raise GearError(
+                f"no Dask scheduler answered at {address!r} {wait}: {exc}; check the address "
+                "and that the scheduler runs"
+            ) from None
+        except Exception as exc:  # a reply that is no Dask message
+            raise GearError(
+                f"{address!r} answered, but not as a Dask scheduler ({type(exc).__name__}); "
+                "check the port (a scheduler listens on 8786 by default, its dashboard on 8787)"
+            ) from None
+    if not (isinstance(reply, dict) and reply.get("type") == "Scheduler"):
+        kind = reply.get("type") if isinstance(reply, dict) else type(reply).__name__
+        raise GearError(f"{address!r} answered as a {kind}, not as a Dask scheduler")
+
+
+def dask_client(client, timeout: float | None = None):
     """The Dask client to use: the given one, one at this address, the active one, or None
-    (``client=False``: local threads even with an active client)."""
+    (``client=False``: local threads even with an active client).
+
+    An address is asked first, within ``timeout`` seconds (default: Dask's
+    ``distributed.comm.timeouts.connect``, see :func:`dask_timeout`): an unknown scheme
+    (``foo://``), an address where nothing listens or where something else than a Dask
+    scheduler answers (an HTTP server) is a GearError saying which, never a hang.
+    """
     if client is False:
         return None
     if isinstance(client, str):
@@ -494,7 +587,14 @@ def dask_client(client):
             from distributed import Client
         except ImportError:
             raise GearError("client='address' needs dask: pip install 'geartrain[scale]'") from None
-        return Client(client)
+        seconds = dask_timeout(timeout)
+        _check_scheduler(client, seconds)
+        try:
+            return Client(client, timeout=seconds)
+        except (OSError, TimeoutError) as exc:
+            raise GearError(
+                f"the Dask scheduler at {client!r} did not take a client: {exc}"
+            ) from None
     if client is not None:
         if not hasattr(client, "submit"):
             raise GearError(f"client must be a dask.distributed.Client or an address; "
@@ -508,6 +608,64 @@ def dask_client(client):
         except (ValueError, ImportError):
             return None
     return None
+
+
+def dask_results(client, pending: set, timeout: float | None = None):
+    """``(future, result)`` of each future of ``pending`` as it finishes; the caller may add
+    futures to ``pending`` meanwhile.
+
+    A cluster that fails under the work is a GearError saying what happened, not a Dask
+    traceback: a worker lost with its task or with data the work needs (``KilledWorker``, a
+    cancelled future), a lost connection to the scheduler, or a cluster left without workers
+    for ``timeout`` seconds (default :func:`dask_timeout`). An error raised by the task itself
+    reaches the caller unchanged.
+    """
+    from distributed import wait
+    from distributed.scheduler import KilledWorker
+
+    seconds = dask_timeout(timeout)
+    lost = (CancelledError, KilledWorker, OSError)
+    idle_since = None
+    while pending:
+        try:
+            done, _ = wait(list(pending), timeout=min(seconds, 1.0), return_when="FIRST_COMPLETED")
+        except TimeoutError:
+            if _workers(client):
+                idle_since = None
+            elif idle_since is None:
+                idle_since = time.monotonic()
+            elif time.monotonic() - idle_since > seconds:
+                raise GearError(
+                    f"the Dask cluster has had no worker for {seconds:g} s "
+                    "(distributed.comm.timeouts.connect) with work left: its workers died or "
+                    "left; start workers, or run without client= (local threads)"
+                ) from None
+            continue
+        except lost as exc:
+            raise _lost_work(exc) from None
+        for fut in done:
+            pending.discard(fut)
+            try:
+                result = fut.result()
+            except lost as exc:
+                raise _lost_work(exc) from None
+            yield fut, result
+
+
+def _lost_work(exc: BaseException) -> GearError:
+    return GearError(
+        f"the Dask cluster lost work mid-run ({type(exc).__name__}): a worker died or left "
+        "with tasks or data the work needs, or the scheduler went away; check the cluster and "
+        "run again"
+    )
+
+
+def _workers(client) -> int:
+    """Workers the scheduler knows of now (0 when it cannot be asked)."""
+    try:
+        return len(client.nthreads())
+    except (OSError, TimeoutError, CancelledError):
+        return 0
 
 
 def progress_callback(
@@ -749,25 +907,29 @@ def _run_local(space, bounds, threads, report):
 
 
 def _run_dask(space, bounds, client, report):
-    from distributed import as_completed
-
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
-    spec = client.scatter(space, broadcast=True, hash=False)
+    seconds = dask_timeout()
+    try:
+        spec = client.scatter(space, broadcast=True, hash=False, timeout=seconds)
+    except (TimeoutError, OSError) as exc:
+        raise GearError(
+            f"the Dask cluster took no work within {seconds:g} s "
+            f"(distributed.comm.timeouts.connect): {exc}; start workers, or run without client="
+        ) from None
     window = max(4, 4 * len(client.scheduler_info().get("workers", {}) or [0]))
     queue = iter(bounds)
     first = [client.submit(evaluate_chunk, spec, *b, pure=False) for b in
              itertools.islice(queue, window)]  # fmt: skip
     acc, feasible, examined, done = None, 0, 0, 0
-    stream = as_completed(first)
-    for fut in stream:
-        rows, f, c = fut.result()
+    pending = set(first)
+    for fut, (rows, f, c) in dask_results(client, pending):
         fut.release()
         acc = _merge(acc, rows, space)
         feasible, examined, done = feasible + f, examined + c, done + 1
         nxt = next(queue, None)
         if nxt is not None:
-            stream.add(client.submit(evaluate_chunk, spec, *nxt, pure=False))
+            pending.add(client.submit(evaluate_chunk, spec, *nxt, pure=False))
         if report:
             report(done, len(bounds), examined)
     return acc, feasible, examined

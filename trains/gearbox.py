@@ -37,7 +37,7 @@ from typing import Any
 import numpy as np
 
 from gears.errors import GearError
-from gears.search import dask_client, progress_callback
+from gears.search import dask_client, dask_results, progress_callback
 from trains.errors import TrainError
 from trains.planetary import canonical_scheme
 from trains.synthesis import Candidate, _as_ratio, synthesize
@@ -372,14 +372,15 @@ def _run(args: list[tuple], client, report, total: int) -> list[list[Candidate]]
     """The stage sets: one chunk per scheme, on threads or as Dask tasks."""
     client = _as_train_error(dask_client, client)
     if client is not None:
-        from distributed import as_completed
-
         futures = {client.submit(_stage_set, *a, pure=False): i for i, a in enumerate(args)}
         results: list = [None] * len(args)
-        for n, fut in enumerate(as_completed(futures), 1):
-            results[futures[fut]] = fut.result()
-            if report:
-                report(n, total)
+        try:
+            for n, (fut, found) in enumerate(dask_results(client, set(futures)), 1):
+                results[futures[fut]] = found
+                if report:
+                    report(n, total)
+        except GearError as exc:  # the cluster failed under the work
+            raise TrainError(str(exc)) from None
         return results
     from concurrent.futures import ThreadPoolExecutor
 

@@ -42,10 +42,14 @@ NAMES = {
     r"stages(?=\s*=)": "--stages",
     r"tolerance(?=\s*=)": "--tolerance",
     r"client=": "--scheduler",
+    r"distributed\.comm\.timeouts\.connect": "--connect-timeout",
 }
 """The library's names in error messages -> this command's options."""
 
 _SUFFIXES = (".parquet", ".csv")
+
+#: seconds --connect-timeout waits by default (Dask's own default is 30 s)
+CONNECT_TIMEOUT = 5.0
 
 
 def _ratio(text: str):
@@ -130,16 +134,47 @@ def _common(p: argparse.ArgumentParser) -> None:
         help="a Dask scheduler address (tcp://host:8786): run the chunks there",
     )
     p.add_argument(
+        "--connect-timeout", type=positive("--connect-timeout", "s"), default=None,
+        metavar="SECONDS",
+        help=f"with --scheduler: how long to wait for the scheduler to answer, and for a worker "
+        f"when the cluster has none left (default {CONNECT_TIMEOUT:g} s); then exit 2",
+    )  # fmt: skip
+    p.add_argument(
         "-o",
         "--output",
         type=output_file(_SUFFIXES),
         default=None,
-        help="also write the ranked table (.parquet needs pyarrow; .csv)",
+        help="also write the ranked table (.parquet, the parquet extra's pyarrow; .csv); "
+        "checked before the search starts",
     )
 
 
 def run(args: argparse.Namespace) -> int:
-    client = args.scheduler or None
+    import contextlib
+
+    from trains.errors import TrainError
+
+    if args.connect_timeout is not None and not args.scheduler:
+        raise TrainError("--connect-timeout applies with --scheduler only")
+    if args.output is not None:  # before the search: a Parquet file needs pyarrow
+        from gears.search import check_table_output
+
+        check_table_output(args.output)
+    with contextlib.ExitStack() as stack:
+        client = None
+        if args.scheduler:
+            import dask
+
+            from gears.search import dask_client
+
+            seconds = args.connect_timeout or CONNECT_TIMEOUT
+            stack.enter_context(dask.config.set({"distributed.comm.timeouts.connect": seconds}))
+            client = dask_client(args.scheduler)
+            stack.callback(client.close)
+        return _search(args, client)
+
+
+def _search(args: argparse.Namespace, client) -> int:
     if args.what == "pairs":
         from gears.search import pairs
 
