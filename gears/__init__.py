@@ -3,10 +3,12 @@
 The public surface (see ``docs/``)::
 
     from gears import BasicRack, Gear, GearPair, ShaperCutter
+    from gears import BevelPair                        # straight bevel gears (docs/bevel.md)
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/search.md)
 """
 
+from gears.bevel_pair import BevelGear, BevelPair
 from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutter import ShaperCutter
 from gears.errors import GearError
@@ -18,6 +20,8 @@ from gears.report import Finding, Report
 
 __all__ = [
     "BasicRack",
+    "BevelGear",
+    "BevelPair",
     "Finding",
     "Gear",
     "GearError",

@@ -97,7 +97,7 @@ class Gear:
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        set_(self, "teeth", check_teeth("teeth", self.teeth))
+        set_(self, "teeth", self._valid_teeth(self.teeth))
         set_(self, "module", check_real("module", self.module, 0.0))
         if not isinstance(self.rack, BasicRack):
             raise GearError(f"rack must be a BasicRack; got {self.rack!r}")
@@ -118,6 +118,11 @@ class Gear:
                 raise GearError(f"cutter must be a ShaperCutter or None; got {self.cutter!r}")
             _ = self._shaper_tool  # the cutter must fit this gear: a clear error now
         self._require_real_dimensions()
+
+    @staticmethod
+    def _valid_teeth(z) -> int:
+        """The tooth count as validated (a whole number >= 1; a virtual gear relaxes it)."""
+        return check_teeth("teeth", z)
 
     def _require_real_dimensions(self) -> None:
         """Refuse a gear no blank can carry: a root or tip diameter <= 0, or a tip at or below
