@@ -6,19 +6,24 @@ The public surface (see ``docs/``)::
     from gears import BevelPair                        # straight bevel gears (docs/bevel.md)
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/search.md)
+    pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
 """
 
 from gears.bevel_pair import BevelGear, BevelPair
+from gears.capacity import Rating
 from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
+from gears.materials import MATERIALS, Material
 from gears.meshing import PairGeometry, pair_geometry
 from gears.pair import GearPair, Rack
 from gears.rack import BasicRack
+from gears.rating import PairRatings, rate_pairs
 from gears.report import Finding, Report
 
 __all__ = [
+    "MATERIALS",
     "BasicRack",
     "BevelGear",
     "BevelPair",
@@ -27,12 +32,16 @@ __all__ = [
     "GearError",
     "GearMargins",
     "GearPair",
+    "Material",
     "PairGeometry",
     "PairMargins",
+    "PairRatings",
     "Rack",
+    "Rating",
     "Report",
     "ShaperCutter",
     "gear_margins",
     "pair_geometry",
     "pair_margins",
+    "rate_pairs",
 ]

@@ -14,6 +14,7 @@ from functools import cached_property
 import numpy as np
 
 from gears.animate import check_frames, write_animation
+from gears.capacity import Rating, rate_pair
 from gears.checks import (
     equal_sliding_split,
     form_lengths,
@@ -521,6 +522,77 @@ class GearPair:
         return float(
             mesh_efficiency(self.g1.teeth, z2, self.contact_ratio, friction, self.internal)
         )
+
+    # --- load capacity (ISO 6336) -----------------------------------------------------------------
+    def rating(
+        self, torque: float, speed: float, material="case-carburized", *, life: float = 20000.0,
+        application_factor: float = 1.0, quality: int = 6, roughness: float = 1.0,
+        oil_viscosity: float = 220.0, tip_relief: float | None = None, sigma_Hlim=None,
+        sigma_Flim=None, face_width: float | None = None, contacts=(1, 1), idler=(False, False),
+        misalignment: float | None = None, root: str = "auto", **factors,
+    ) -> Rating:  # fmt: skip
+        """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
+
+        Parameters
+        ----------
+        torque : float
+            Torque on gear 1, N m (> 0).
+        speed : float
+            Speed of gear 1, rpm (> 0).
+        material : str, Material or pair
+            ISO 6336-5 material (:data:`gears.materials.MATERIALS`) of both gears, or a pair.
+        life : float
+            Required life, hours.
+        application_factor : float
+            K_A >= 1.
+        quality : int
+            ISO 1328 accuracy grade 1 ... 12.
+        roughness : float
+            Flank roughness Ra, um.
+        oil_viscosity : float
+            nu_40 of the oil, mm^2/s.
+        tip_relief : float, optional
+            Tip relief C_a in mm (default: the running-in amount of ISO 6336-1).
+        sigma_Hlim, sigma_Flim : float or pair, optional
+            Allowable stress numbers replacing the material's, MPa.
+        face_width : float, optional
+            b in mm (default: the smaller of the gears' face widths).
+        contacts, idler
+            Meshes per turn of each gear and idler gears (planets): see
+            :func:`gears.rating.rate_pairs`.
+        misalignment : float, optional
+            F_betax in um, replacing the method C estimate of K_Hbeta.
+        root : str
+            How Y_F and Y_S find the root (:data:`gears.capacity.ROOT_ROUTES`; by default
+            measured on the real tooth of internal and shaper-cut gears).
+        **factors
+            Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
+            replaces the computed one (:data:`gears.rating.FACTORS`).
+
+        Returns
+        -------
+        Rating
+            ``safety_pitting``, ``safety_bending``, ``stresses``, ``factors``, ``check()``.
+
+        Raises
+        ------
+        GearError
+            For bad input, naming it, or where a method does not apply (e.g. a pointed tip).
+
+        Examples
+        --------
+        >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+        >>> r = p.rating(torque=200, speed=1500)
+        >>> [round(s, 3) for s in r.safety_pitting], [round(s, 3) for s in r.safety_bending]
+        ([1.053, 1.161], [3.287, 3.563])
+        """
+        return rate_pair(
+            self, torque, speed, material, life=life, application_factor=application_factor,
+            quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
+            tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
+            face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
+            root=root, **factors,
+        )  # fmt: skip
 
     # --- checks ----------------------------------------------------------------------------------
     def outlines(

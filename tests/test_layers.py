@@ -21,14 +21,14 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 LAYERS = {
     "gears": [
         ["errors"],
-        ["involute", "report", "files"],
+        ["involute", "report", "files", "materials"],
         ["geometry", "meshing"],
         ["rack", "cutter", "bevel"],
-        ["profile", "measure", "checks"],
+        ["profile", "measure", "checks", "rating"],
         ["generate"],
-        ["outline"],
+        ["outline", "root"],
         ["mesh", "animate"],
-        ["gear"],
+        ["gear", "capacity"],
         ["pair"],
         ["shift", "plot", "bevel_pair"],
         ["export", "search"],
