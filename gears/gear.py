@@ -485,7 +485,8 @@ class Gear:
 
         ``method`` is ``"analytic"``, ``"rack"`` or ``"shaper"``; ``tolerance`` is the largest
         deviation from the exact curves in mm; ``backlash`` the pair's normal backlash (this
-        gear takes half); ``bore`` a hole (external); ``rim`` the ring width (internal);
+        gear takes half); ``bore`` a hole (external; default none); ``rim`` the ring's width
+        outside its root circle (internal; default 3 modules);
         ``cutter`` a :class:`gears.cutter.ShaperCutter` (for ``"shaper"``, and for
         ``"analytic"`` to draw that shaper's exact envelope instead of the rack's);
         ``progress(done, total)`` is called as a simulation advances. The finest tolerance is
@@ -504,10 +505,12 @@ class Gear:
         """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, mid-plane
         z = 0, the section at z turned by ``2 z tan(beta) / d`` (right hand > 0).
 
-        ``face_width`` defaults to the gear's own; ``tolerance`` (mm) drives both the outline
-        and the axial slices (:func:`gears.mesh.gear_solid`); ``method``, ``backlash``,
-        ``bore``, ``rim`` and ``cutter`` are those of :meth:`outline`; ``herringbone`` makes two
-        opposite-hand halves meeting at z = 0.
+        ``face_width`` (mm) defaults to the gear's own (``Gear(face_width=...)``), else 10
+        modules, as in :meth:`GearPair.scene`, ``Planetary.scene`` and ``geartrain mesh``;
+        ``tolerance`` (mm) drives both the outline and the axial slices
+        (:func:`gears.mesh.gear_solid`); ``method``, ``backlash``, ``bore``, ``rim`` (a ring's
+        width outside its root circle, default 3 modules) and ``cutter`` are those of
+        :meth:`outline`; ``herringbone`` makes two opposite-hand halves meeting at z = 0.
 
         Examples
         --------
@@ -516,9 +519,7 @@ class Gear:
         (True, True)
         """
         b = self.face_width if face_width is None else face_width
-        if b is None:
-            raise GearError("face_width = None: pass face_width= (mm, > 0) or set Gear.face_width")
-        b = check_positive("face_width", b)
+        b = check_positive("face_width", 10.0 * self.module if b is None else b)
         tolerance = check_positive("tolerance", tolerance)
         shape = self.outline(tolerance, method, backlash, bore=bore, rim=rim, cutter=cutter)
         twist = helix_twist(b, self.helix_angle, self.reference_diameter)

@@ -494,7 +494,7 @@ def test_profile_feeds_the_outline_progress_to_the_bar(capsys, monkeypatch, tmp_
 
     monkeypatch.setattr(profile, "progress_bar", recorder)
     code, _, _ = _run(capsys, "profile", "12", "--method", "rack", "--tolerance", "0.01",
-                      "-o", tmp_path / "g.svg")  # fmt: skip
+                      "--no-check", "-o", tmp_path / "g.svg")  # fmt: skip
     # Gear.outline(progress=) reports the rack simulation chunk by chunk, ending at done = total
     assert code == 0 and calls and calls[-1][1] == calls[-1][2] and calls[0][0] == "rack outline"
 
@@ -507,8 +507,9 @@ def test_an_internal_pair_can_be_drawn(capsys, tmp_path):
     import numpy as np
 
     out_file = tmp_path / "internal.npz"
+    # (the zero-shift 20/80 pair fails tip_interference: --no-check, the drawing is the point)
     code, out, _ = _run(capsys, "profile", "80", "-m", "2", "--internal", "--mate", "20",
-                        "--tolerance", "0.01", "-o", out_file)  # fmt: skip
+                        "--tolerance", "0.01", "--no-check", "-o", out_file)  # fmt: skip
     assert code == 0 and "wrote" in out
     with np.load(out_file) as z:
         # pinion: one ring (outline0_ring0); the ring gear: its outer circle and its toothed hole
@@ -523,7 +524,7 @@ def test_an_internal_pair_can_be_drawn(capsys, tmp_path):
     [
         (["profile", "30", "--bore", "10"], (0.0, 0.0)),  # the bore's centre
         (["profile", "80", "-m", "2", "--internal"], (0.0, 0.0)),  # the ring's interior
-        (["profile", "80", "-m", "2", "--internal", "--mate", "20"], (-30.0, 0.0)),
+        (["profile", "80", "-m", "2", "--internal", "--mate", "20", "--no-check"], (-30.0, 0.0)),
     ],
 )
 def test_png_leaves_bores_and_ring_interiors_unfilled(capsys, tmp_path, argv, hole):
@@ -580,7 +581,7 @@ _OPTIONS = {
                 "--method": ["analytic", "rack", "x"], "--tolerance": ["0.05", "0.1", "nan",
                 "0", "-1"], "--backlash": _NUMBERS, "--bore": _NUMBERS, "--mate": _TEETH,
                 "--mate-shift": _NUMBERS, "--cutter-teeth": ["0", "11", "x"],
-                "--cutter-shift": _NUMBERS},
+                "--cutter-shift": _NUMBERS, "--no-check": None},
     "train": {"--fixed": ["ring", "sun", "moon", ""], "--input": ["sun=1500", "sun=1e400",
               "sun=nan", "sun", "ring=1/0", "=3", "arm=-2.5"], "--output": ["arm", "sun", "x"],
               "--efficiency": _NUMBERS, "--torque": _NUMBERS},
@@ -588,7 +589,8 @@ _OPTIONS = {
     "mesh": {"--module": _NUMBERS, "--shift": _NUMBERS, "--helix": ["0", "20", "-15", "nan"],
              "--face-width": _NUMBERS, "--herringbone": None, "--internal": None,
              "--rim": _NUMBERS, "--method": ["analytic", "rack", "x"], "--bore": _NUMBERS,
-             "--backlash": _NUMBERS, "--tolerance": ["0.05", "nan", "0", "-1"]},
+             "--backlash": _NUMBERS, "--tolerance": ["0.05", "nan", "0", "-1"],
+             "--no-check": None},
     "search": {"--ratio": _NUMBERS, "--ratio-tolerance": ["0", "0.05", "nan"],
                "--center-distance": [*_NUMBERS, "30", "50"], "--split": ["keep", "x"],
                "--helix": ["0", "15", "nan"], "--min-contact-ratio": _NUMBERS,
@@ -657,3 +659,95 @@ def test_planetary_frames_beyond_the_bound_name_the_option(capsys, tmp_path):
     )  # fmt: skip
     assert code == 2 and out == "" and "--frames = 100000" in err
     assert not (tmp_path / "a.gif").exists()
+
+
+# ---------------------------------------------------------------------------------------------
+# 8. designs (issue 16): mesh and profile run the design's checks (exit 1, the file written,
+# the failing findings on stderr; --no-check skips them); options that mean nothing for the
+# design are refused with exit 2 and the reason, before anything is written
+
+
+@pytest.mark.parametrize(
+    ("argv", "suffix", "failed"),
+    [
+        # z = 6, x = 0: x_min = 1 - z sin^2(20 deg) / 2 = 0.649 (ISO 21771 / standards.md §2.1)
+        (["mesh", "6", "--face-width", "4", "--tolerance", "0.05"], ".stl", ["undercut"]),
+        (["profile", "6", "--tolerance", "0.01"], ".svg", ["undercut"]),
+        # the zero-shift 20/80 internal pair: the ring's tip reaches the pinion's fillet (the
+        # same pair as test_cli.py's pair test)
+        (["profile", "80", "-m", "2", "--internal", "--mate", "20", "--tolerance", "0.05"], ".svg",
+         ["tip_interference"]),
+    ],
+)  # fmt: skip
+def test_a_design_that_fails_its_checks_exits_1_and_is_written(capsys, tmp_path, argv, suffix,
+                                                               failed):  # fmt: skip
+    from gears import Gear, GearPair
+
+    out_file = tmp_path / f"design{suffix}"
+    code, out, err = _run(capsys, *argv, "-o", out_file)
+    assert code == 1 and out.startswith(f"wrote {out_file}") and out_file.stat().st_size > 0
+    assert err.startswith(f"geartrain {argv[0]}: the ") and "--no-check skips them" in err
+    named = re.findall(r"\[FAIL\] (\S+)", err)
+    assert named == failed and "[ok" not in err  # the failing findings only, every one of them
+    # the same findings as the library's own check of that design
+    if "--mate" in argv:
+        report = GearPair(Gear(20, 2), Gear(80, 2, internal=True)).check()
+    else:
+        report = Gear(6, 1).check()
+    assert report.failed() == failed
+    code, out, err = _run(capsys, *argv, "-o", out_file, "--no-check")
+    assert code == 0 and out.startswith("wrote") and err == ""
+
+
+def test_a_design_that_passes_exits_0_with_nothing_on_stderr(capsys, tmp_path):
+    for argv in (["mesh", "20", "--face-width", "4", "--tolerance", "0.05", "-o",
+                  tmp_path / "g.stl"],
+                 ["profile", "12", "-m", "3", "-x", "0.6", "--mate", "24", "--mate-shift",
+                  "0.36", "--tolerance", "0.01", "-o", tmp_path / "p.svg"]):  # fmt: skip
+        code, out, err = _run(capsys, *argv)
+        assert code == 0 and out.startswith("wrote") and err == "", (argv, err)
+
+
+@pytest.mark.parametrize(
+    ("argv", "why"),
+    [
+        (["mesh", "20", "--rim", "3"], "--rim is the width of a ring outside its tooth roots"),
+        (["mesh", "20", "--herringbone"], "a spur gear (--helix 0) has no helix to mirror"),
+        (["mesh", "80", "--internal", "--bore", "10"], "a ring (--internal) has none"),
+        (["mesh", "20", "--method", "rack", "--cutter-teeth", "20"], "--method rack cuts with"),
+        (["profile", "20", "--method", "rack", "--cutter-teeth", "20"], "--method rack cuts"),
+        (["profile", "80", "--internal", "--bore", "10"], "a ring (--internal) has none"),
+        (["profile", "20", "--mate", "30", "--bore", "10"], "a pair (--mate) is drawn without"),
+        (["pair", "12", "24", "--split", "keep"], "it applies with --center-distance only"),
+        (["pair", "12", "24", "--tolerance", "0.1"], "it applies with --scene only"),
+        (["pair", "12", "24", "--face-width", "10"], "a spur pair (--helix 0) without --scene"),
+        (["planetary", "18", "45", "108", "--frames", "10"], "it applies with --animate only"),
+        (["planetary", "18", "45", "108", "--face-width", "10"], "it applies with --scene only"),
+        (["planetary", "18", "45", "108", "--tolerance", "0.1"], "with one of them only"),
+        (["search", "pairs", "--ratio", "2", "--split", "keep"], "with --center-distance only"),
+        (["synthesize", "--ratio", "37", "--stages", "2", "--fixed", "sun"], "--fixed shape"),
+        (["synthesize", "--ratio", "37", "--stages", "2", "--allow-shift"], "no shifted sets"),
+    ],
+)
+def test_options_that_mean_nothing_are_refused(capsys, tmp_path, argv, why):
+    if argv[0] in ("mesh", "profile"):
+        argv = [*argv, "-o", str(tmp_path / f"x{'.stl' if argv[0] == 'mesh' else '.svg'}")]
+    err = _bad_input(capsys, *argv)
+    assert why in err
+    assert list(tmp_path.iterdir()) == []  # refused before anything is written
+
+
+def test_the_same_options_are_taken_where_they_mean_something(capsys, tmp_path):
+    # the counterparts of the refusals above run (exit 0 or 1, never 2)
+    for argv in (
+        ["mesh", "80", "-m", "1", "--internal", "--rim", "3", "--face-width", "3",
+         "--tolerance", "0.1", "-o", tmp_path / "r.stl"],
+        ["mesh", "20", "--helix", "20", "--herringbone", "--face-width", "4", "--tolerance",
+         "0.1", "-o", tmp_path / "h.stl"],
+        ["pair", "12", "24", "-m", "3", "--center-distance", "56.5", "--split", "keep"],
+        ["pair", "12", "24", "--helix", "15", "--face-width", "10"],
+        ["planetary", "18", "45", "108", "--scene", tmp_path / "s.glb", "--face-width", "5",
+         "--tolerance", "0.2"],
+    ):  # fmt: skip
+        code, _, err = _run(capsys, *argv)
+        assert code in (0, 1), (argv, err)

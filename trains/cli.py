@@ -12,8 +12,9 @@ The command modules import the library inside ``run()`` only: they sit at the to
 layering, and building the parser (``geartrain --help``) must not pay for numpy or scipy.
 
 Exit status (:func:`main`): 0 every check passes; 1 the design fails a check (the report is
-printed and names it); 2 bad input, one line on stderr naming the option, file or field, and
-nothing on stdout; 3 an internal error (a bug), with its traceback.
+printed and names it; files asked for are still written); 2 bad input, one line on stderr
+naming the option, file or field, and nothing on stdout; 3 an internal error (a bug), with its
+traceback.
 """
 
 from __future__ import annotations
@@ -33,7 +34,8 @@ from trains.commands._common import BAD_INPUT, INTERNAL_ERROR, translate, wrap
 EPILOG = """\
 exit status (every command):
   0  every check passes
-  1  the design fails a check (the report is printed and names the failed checks)
+  1  the design fails a check (the report names the failed checks; mesh and profile print them
+     on stderr and take --no-check); files asked for are still written
   2  bad input (one line on stderr naming the option, file or field; nothing on stdout)
   3  an internal error, a bug: the traceback is printed (please report it)
 

@@ -386,12 +386,18 @@ def test_bad_input_raises(bad):
         g.mesh(face_width=bad)
     with pytest.raises(GearError, match="tolerance"):
         g.mesh(face_width=5, tolerance=bad)
-    with pytest.raises(GearError, match="face_width"):
-        g.mesh()  # no face width on the gear
     with pytest.raises(GearError, match="Polygon"):
         gear_solid("not a polygon", 5)
     with pytest.raises(GearError, match="twist"):
         gear_solid(shapely.box(0, 0, 1, 1), 1, twist=math.nan)
+
+
+def test_mesh_face_width_defaults_like_the_scenes():
+    # issue 16: Gear.mesh() takes the gear's own face width, else 10 modules, the default of
+    # GearPair.scene, Planetary.scene and geartrain mesh (the extent along the axis is exact:
+    # the caps are planes at +-b/2)
+    assert Gear(20, 2).mesh(tolerance=0.1).extents[2] == pytest.approx(20.0, abs=1e-12)
+    assert Gear(20, 2, face_width=7).mesh(tolerance=0.1).extents[2] == pytest.approx(7, abs=1e-12)
 
 
 def test_scene_rejects_bad_parts():

@@ -219,6 +219,28 @@ def wrap(text: str, width: int | None = None) -> str:
     return "\n".join(out)
 
 
+def no_check_argument(parser: argparse.ArgumentParser) -> None:
+    """``--no-check``, for a command that writes a design's file (``mesh``, ``profile``)."""
+    parser.add_argument(
+        "--no-check", action="store_true",
+        help="skip the design's checks: exit 0 even when one fails (default: run them; when one "
+        "fails the file is still written, the failing checks go to stderr and the exit status "
+        "is 1)",
+    )  # fmt: skip
+
+
+def design_status(report, prog: str, what: str) -> int:
+    """The exit status of a design whose file was written: OK when every finding of ``report``
+    (a :class:`gears.report.Report`) holds; otherwise CHECK_FAILED, with the failing findings
+    on stderr under a line naming ``what`` and the way to skip the checks."""
+    if report.ok:
+        return OK
+    lines = [f"{prog}: {what} fails its checks (the file is written; --no-check skips them):"]
+    lines += [str(f) for f in report.values() if not f.ok]
+    print(wrap("\n".join(lines)), file=sys.stderr)
+    return CHECK_FAILED
+
+
 def show_progress() -> bool:
     """Progress bars are shown only when stderr is a terminal."""
     try:

@@ -2,7 +2,13 @@
 
 The gear axis is +z with the mid-plane at z = 0; a helical gear's section turns by
 2 z tan(beta) / d (right hand for a positive --helix). --tolerance (mm) bounds both the outline's
-deviation and the helix chords between axial slices.
+deviation and the helix chords between axial slices. The face width defaults to 10 modules, a
+ring's rim (--internal) to 3 modules outside its root circle.
+
+The gear's checks run too (undercut, pointed tip, ...): when one fails the file is still written,
+the failing checks are printed on stderr and the exit status is 1; --no-check skips them.
+Options that mean nothing for the gear are refused (exit 2): --rim without --internal, --bore
+with it, --herringbone on a spur gear, --cutter-teeth with --method rack.
 
 Examples:
     geartrain mesh 20 --module 1 --helix 20 --face-width 10 --tolerance 0.01 -o gear.stl
@@ -17,10 +23,11 @@ import argparse
 
 from trains.commands._common import (
     GEAR_NAMES,
-    OK,
     SCENE_FORMATS,
+    design_status,
     gear_arguments,
     integer,
+    no_check_argument,
     non_negative,
     output_file,
     positive,
@@ -54,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--rim", type=positive("--rim", "mm"), default=None,
-        help="ring width outside the tooth roots, mm (with --internal)",
+        help="ring width outside the tooth roots, mm (with --internal; default 3 modules)",
     )  # fmt: skip
     parser.add_argument(
         "--method", choices=("analytic", "rack", "shaper"), default="analytic",
@@ -73,18 +80,40 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="normal backlash of the pair, mm (this gear takes half)",
     )  # fmt: skip
     parser.add_argument(
-        "--bore", type=positive("--bore", "mm"), default=None, help="bore diameter, mm"
-    )
-    parser.add_argument(
-        "-o", "--output", type=output_file(FORMATS), default="gear.stl",
-        help="file to write: .stl (binary), .3mf, .glb, .obj or .ply",
+        "--bore", type=positive("--bore", "mm"), default=None,
+        help="bore diameter of an external gear, mm (default: none, a solid disc)",
     )  # fmt: skip
+    parser.add_argument(
+        "-o", "--output", type=output_file(FORMATS, "--output"), default="gear.stl",
+        help="file to write: .stl (binary), .3mf, .glb, .obj (its materials in a .mtl of the "
+        "same name) or .ply",
+    )  # fmt: skip
+    no_check_argument(parser)
+
+
+def refuse_unused(args: argparse.Namespace) -> None:
+    """A TrainError (exit 2) for an option that means nothing for this gear."""
+    from trains.errors import TrainError
+
+    if args.rim is not None and not args.internal:
+        raise TrainError("--rim is the width of a ring outside its tooth roots: it applies "
+                         "with --internal only")  # fmt: skip
+    if args.bore is not None and args.internal:
+        raise TrainError("--bore is a hole in an external gear; a ring (--internal) has none "
+                         "(its outside is set by --rim)")  # fmt: skip
+    if getattr(args, "herringbone", False) and not args.helix:
+        raise TrainError("--herringbone joins two helical halves of opposite hand; a spur gear "
+                         "(--helix 0) has no helix to mirror: give --helix")  # fmt: skip
+    if args.cutter_teeth is not None and args.method == "rack":
+        raise TrainError("--cutter-teeth gives a shaper cutter, but --method rack cuts with a "
+                         "rack: use --method shaper (or analytic, its exact envelope)")  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
     from gears import Gear, ShaperCutter
     from gears.export import save
 
+    refuse_unused(args)
     cutter = None if args.cutter_teeth is None else ShaperCutter(args.cutter_teeth)
     g = Gear(
         args.teeth, args.module, args.pressure_angle, args.helix, args.shift,
@@ -102,4 +131,6 @@ def run(args: argparse.Namespace) -> int:
         f"volume {mesh.volume:.6g} mm^3, watertight {mesh.is_watertight}, "
         f"tolerance {args.tolerance:g} mm)"
     )
-    return OK
+    if args.no_check:
+        return 0
+    return design_status(g.check(), f"geartrain {args.command}", f"the gear z = {g.teeth}")

@@ -83,15 +83,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     parser.add_argument(
         "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
-        help="face width in mm (needed for the overlap ratio of a helical pair)",
+        help="face width in mm: the overlap ratio of a helical pair, the gears of --scene "
+        "(default there: 10 modules)",
     )  # fmt: skip
     parser.add_argument(
         "--center-distance", type=positive("--center-distance", "mm"), default=None, metavar="A",
         help="working centre distance in mm: the shifts follow from it (overrides --shift X2)",
     )  # fmt: skip
     parser.add_argument(
-        "--split", choices=SPLITS, default="equal_sliding",
-        help="how --center-distance divides the shift sum ('keep' keeps X1 of --shift)",
+        "--split", choices=SPLITS, default=None,
+        help="with --center-distance: how it divides the shift sum ('keep' keeps X1 of --shift; "
+        "default equal_sliding)",
     )  # fmt: skip
     parser.add_argument(
         "--min-contact-ratio", type=non_negative("--min-contact-ratio"), default=1.1,
@@ -110,8 +112,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="also write both gears in mesh in 3D (.glb .3mf .stl .obj .ply)",
     )  # fmt: skip
     parser.add_argument(
-        "--tolerance", type=positive("--tolerance", "mm"), default=0.02,
-        help="mesh tolerance of --scene, mm",
+        "--tolerance", type=positive("--tolerance", "mm"), default=None,
+        help="mesh tolerance of --scene, mm (default 0.02)",
     )  # fmt: skip
 
 
@@ -127,8 +129,25 @@ def build_pair(args: argparse.Namespace) -> GearPair:
         args.face_width, internal=args.internal,
     )  # fmt: skip
     if args.center_distance is not None:
-        return GearPair.at_center_distance(g1, g2, args.center_distance, split=args.split)
+        split = args.split or "equal_sliding"
+        return GearPair.at_center_distance(g1, g2, args.center_distance, split=split)
     return GearPair(g1, g2)
+
+
+def refuse_unused(args: argparse.Namespace) -> None:
+    """A TrainError (exit 2) for an option that means nothing for this pair."""
+    from trains.errors import TrainError
+
+    if args.split is not None and args.center_distance is None:
+        raise TrainError("--split divides the shift sum a --center-distance needs: it applies "
+                         "with --center-distance only")  # fmt: skip
+    if args.tolerance is not None and args.scene is None:
+        raise TrainError("--tolerance is the mesh tolerance of --scene: it applies with --scene "
+                         "only")  # fmt: skip
+    if args.face_width is not None and not args.helix and args.scene is None:
+        raise TrainError("--face-width gives a helical pair's overlap ratio and the --scene "
+                         "gears' width; a spur pair (--helix 0) without --scene does not use "
+                         "it")  # fmt: skip
 
 
 def _value(fn: Callable[[], object], fmt: str = "{:.4f}") -> str:
@@ -214,6 +233,7 @@ def pair_report(pair: GearPair, min_contact_ratio=1.1, min_tip_land=0.2, frictio
 
 
 def run(args: argparse.Namespace) -> int:
+    refuse_unused(args)
     pair = build_pair(args)
     ok = pair.check(args.min_contact_ratio, args.min_tip_land).ok
     kind = "internal" if pair.internal else "external"
@@ -227,6 +247,7 @@ def run(args: argparse.Namespace) -> int:
     if args.scene is not None:
         from gears.export import save
 
-        save(args.scene, pair.scene(tolerance=args.tolerance))
-        print(f"\nwrote {args.scene} (both gears in mesh, tolerance {args.tolerance:g} mm)")
+        tolerance = 0.02 if args.tolerance is None else args.tolerance
+        save(args.scene, pair.scene(tolerance=tolerance))
+        print(f"\nwrote {args.scene} (both gears in mesh, tolerance {tolerance:g} mm)")
     return OK if ok else CHECK_FAILED

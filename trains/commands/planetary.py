@@ -78,16 +78,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="FILE", help="also write the stage turning through one mesh cycle (.gif, .mp4)",
     )  # fmt: skip
     parser.add_argument(
-        "--frames", type=integer("--frames"), default=48, metavar="N",
-        help="frames of the --animate picture (one mesh cycle)",
+        "--frames", type=integer("--frames"), default=None, metavar="N",
+        help="frames of the --animate picture (one mesh cycle; default 48)",
     )  # fmt: skip
     parser.add_argument(
         "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
         help="face width of the --scene gears, mm (default: 10 modules)",
     )  # fmt: skip
     parser.add_argument(
-        "--tolerance", type=positive("--tolerance", "mm"), default=0.02,
-        help="mesh tolerance of --scene and --animate, mm",
+        "--tolerance", type=positive("--tolerance", "mm"), default=None,
+        help="mesh tolerance of --scene and --animate, mm (default 0.02)",
     )  # fmt: skip
 
 
@@ -106,6 +106,16 @@ def run(args: argparse.Namespace) -> int:
         raise TrainError(f"give 3 tooth counts Z (sun planet ring) or 4; got {len(z)}")
     if args.center_distance is not None and not args.coaxial:
         raise TrainError("--center-distance applies with --coaxial only")
+    if args.frames is not None and args.animate is None:
+        raise TrainError("--frames counts the frames of --animate: it applies with --animate only")
+    if args.face_width is not None and args.scene is None:
+        raise TrainError("--face-width is the width of the --scene gears: it applies with "
+                         "--scene only (--animate draws the stage in 2D)")  # fmt: skip
+    if args.tolerance is not None and args.scene is None and args.animate is None:
+        raise TrainError("--tolerance is the mesh tolerance of --scene and --animate: it "
+                         "applies with one of them only")  # fmt: skip
+    tolerance = 0.02 if args.tolerance is None else args.tolerance
+    frames = 48 if args.frames is None else args.frames
     kw = {"scheme": scheme, "clearance": args.clearance}
     if args.coaxial:
         stage = Planetary.coaxial(sun, planet, ring, args.planets, args.module,
@@ -117,9 +127,9 @@ def run(args: argparse.Namespace) -> int:
     if args.scene is not None:
         from gears.export import save
 
-        save(args.scene, stage.scene(face_width=args.face_width, tolerance=args.tolerance))
-        print(f"\nwrote {args.scene} (planets phased, tolerance {args.tolerance:g} mm)")
+        save(args.scene, stage.scene(face_width=args.face_width, tolerance=tolerance))
+        print(f"\nwrote {args.scene} (planets phased, tolerance {tolerance:g} mm)")
     if args.animate is not None:
-        stage.animate(args.animate, frames=args.frames, tolerance=args.tolerance)
+        stage.animate(args.animate, frames=frames, tolerance=tolerance)
         print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")
     return OK if ok else CHECK_FAILED

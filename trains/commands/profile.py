@@ -4,12 +4,18 @@ cutting by a rack or a shaper cutter, to the given tolerance in mm.
 
 With --mate Z2 both gears of the pair are drawn in mesh (the mate is the pinion when the gear is
 --internal). --cutter-teeth Z0 makes the gear(s) shaper-cut by that cutter (with --method
-shaper or analytic); without it --method shaper uses the default cutter.
+shaper or analytic); without it --method shaper uses the default cutter. A ring (--internal)
+is drawn with a rim of 3 modules outside its root circle.
+
+The design's checks run too (the gear's, or the pair's with --mate): when one fails the file is
+still written, the failing checks are printed on stderr and the exit status is 1; --no-check
+skips them. Options that mean nothing here are refused (exit 2): --cutter-teeth with --method
+rack, --bore on a ring or with --mate, --mate-shift and --backlash without --mate.
 
 Examples:
     geartrain profile 12 --module 3 --shift 0.6 --method rack --tolerance 0.001 -o gear.svg
     geartrain profile 80 --module 2 --internal --method shaper --cutter-teeth 30 -o ring.svg
-    geartrain profile 80 --module 2 --internal --mate 20 --tolerance 0.01 -o internal.svg
+    geartrain profile 80 -m 2 --internal --shift 0.5 --mate 20 --tolerance 0.01 -o internal.svg
 """
 
 from __future__ import annotations
@@ -18,10 +24,11 @@ import argparse
 
 from trains.commands._common import (
     GEAR_NAMES,
-    OK,
+    design_status,
     finite,
     gear_arguments,
     integer,
+    no_check_argument,
     non_negative,
     output_file,
     positive,
@@ -65,8 +72,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="normal backlash of the pair, mm (with --mate)",
     )  # fmt: skip
     parser.add_argument(
-        "--bore", type=positive("--bore", "mm"), default=None, help="bore diameter, mm"
-    )
+        "--bore", type=positive("--bore", "mm"), default=None,
+        help="bore diameter of an external gear drawn alone, mm (default: none)",
+    )  # fmt: skip
     parser.add_argument(
         "--mate", type=integer("--mate"), default=None, metavar="Z2",
         help="teeth of a mating gear: draw the pair in mesh",
@@ -88,6 +96,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "-o", "--output", type=output_file(FORMATS), default="gear.svg",
         help="file to write; the format follows its suffix (" + " ".join(FORMATS) + ")",
     )  # fmt: skip
+    no_check_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -97,6 +106,12 @@ def run(args: argparse.Namespace) -> int:
 
     if args.mate is None and (args.mate_shift or args.backlash):
         raise TrainError("--mate-shift and --backlash need --mate Z2")
+    if args.bore is not None and (args.internal or args.mate is not None):
+        raise TrainError("--bore is a hole in an external gear drawn alone; a ring (--internal) "
+                         "has none and a pair (--mate) is drawn without bores")  # fmt: skip
+    if args.cutter_teeth is not None and args.method == "rack":
+        raise TrainError("--cutter-teeth gives a shaper cutter, but --method rack cuts with a "
+                         "rack: use --method shaper (or analytic, its exact envelope)")  # fmt: skip
     cutter = None
     if args.cutter_teeth is not None:
         cutter = ShaperCutter(args.cutter_teeth, shift=args.cutter_shift)
@@ -112,6 +127,7 @@ def run(args: argparse.Namespace) -> int:
                 g.outline(args.tolerance, args.method, args.backlash, bore=args.bore,
                           progress=progress)
             ]  # fmt: skip
+        design, report = f"the gear z = {g.teeth}", g.check
     else:
         with progress_bar(f"{args.method} outlines") as progress:
             # the mate is external; an internal gear is the ring of the pair (gear 2)
@@ -124,7 +140,10 @@ def run(args: argparse.Namespace) -> int:
             shapes = list(
                 pair.outlines(0.0, args.tolerance, args.method, args.backlash, progress=progress)
             )
+        design, report = f"the pair {pair.g1.teeth}/{pair.g2.teeth}", pair.check
     path = save(args.output, *shapes)
     n = sum(len(p.exterior.coords) + sum(len(h.coords) for h in p.interiors) for p in shapes)
     print(f"wrote {path} ({n} vertices, tolerance {args.tolerance:g} mm, {args.method})")
-    return OK
+    if args.no_check:
+        return 0
+    return design_status(report(), f"geartrain {args.command}", design)

@@ -70,8 +70,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                    default=None, help="centre distance in mm: the shift sum is solved exactly "
                    "and split by --split")  # fmt: skip
     p.add_argument("--split", choices=("proportional", "equal_sliding", "keep"),
-                   default="proportional",
-                   help="how the shift sum is split at a centre distance")  # fmt: skip
+                   default=None, help="with --center-distance: how the shift sum is split "
+                   "(default proportional)")  # fmt: skip
     p.add_argument("--module", "-m", type=positive("--module", "mm"), nargs="+", default=[1.0],
                    help="normal modules to try, mm")  # fmt: skip
     p.add_argument(
@@ -156,6 +156,9 @@ def run(args: argparse.Namespace) -> int:
 
     if args.connect_timeout is not None and not args.scheduler:
         raise TrainError("--connect-timeout applies with --scheduler only")
+    if getattr(args, "split", None) is not None and args.center_distance is None:
+        raise TrainError("--split divides the shift sum a --center-distance needs: it applies "
+                         "with --center-distance only")  # fmt: skip
     if args.output is not None:  # before the search: a Parquet file needs pyarrow
         from gears.search import check_table_output
 
@@ -184,7 +187,7 @@ def _search(args: argparse.Namespace, client) -> int:
             found = pairs(
                 ratio=args.ratio, center_distance=args.center_distance, module=args.module,
                 teeth=tuple(args.teeth), shifts=tuple(args.shifts), helix=args.helix,
-                ratio_tolerance=args.ratio_tolerance, split=args.split,
+                ratio_tolerance=args.ratio_tolerance, split=args.split or "proportional",
                 limits={"min_contact_ratio": args.min_contact_ratio,
                         "min_tip_land": args.min_tip_land,
                         "allow_undercut": args.allow_undercut,

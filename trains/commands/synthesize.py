@@ -109,7 +109,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--allow-shift", action="store_true",
         help="also accept sets one or two teeth off coaxiality, made coaxial by profile shifts",
     )  # fmt: skip
-    parser.add_argument("--fixed", default="ring", help="member held fixed")
+    parser.add_argument("--fixed", default=None, help="member held fixed (default: the ring)")
     parser.add_argument(
         "--input", default=None, help="input member (default: the sun when the ring is fixed)"
     )
@@ -135,6 +135,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.stages > 1:
+        from trains.errors import TrainError
+
+        options = {"--allow-shift": args.allow_shift, "--fixed": args.fixed,
+                   "--input": args.input, "--output": args.output}  # fmt: skip
+        given = [o for o, v in options.items() if v]
+        if given:
+            raise TrainError(f"{', '.join(given)} shape one stage; --stages {args.stages} "
+                             "searches gearboxes of stages with the ring fixed, the sun in and "
+                             "the carrier out, and no shifted sets")  # fmt: skip
         return _gearboxes(args)
     from trains.synthesis import synthesize
 
@@ -142,7 +151,8 @@ def run(args: argparse.Namespace) -> int:
         found = synthesize(
             args.ratio, args.planets, scheme=args.scheme, tolerance=args.tolerance,
             z_min=args.z_min, z_max=args.z_max, module=args.module, allow_shift=args.allow_shift,
-            fixed=args.fixed, input=args.input, output=args.output, mesh_checks=args.mesh_checks,
+            fixed=args.fixed or "ring", input=args.input, output=args.output,
+            mesh_checks=args.mesh_checks,
             limit=args.limit, max_seconds=args.max_seconds, progress=progress,
         )  # fmt: skip
     if not found:
