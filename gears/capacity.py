@@ -160,13 +160,13 @@ class Rating:
             else:
                 lines.append(f"{name + ' [MPa]':26s} {value:10.2f}")
         lines.append("")
-        lines.append(f"{'factor':14s} {'value':>21s}  {'what':44s} clause")
+        lines.append(f"{'factor':13s} {'value':>19s}  {'clause':16s} what")
         for symbol, _, what, clause in FACTORS:
-            lines.append(f"{symbol:14s} {_fmt(self.factors[symbol]):>21s}  {what:44s} {clause}")
+            lines.append(f"{symbol:13s} {_fmt(self.factors[symbol]):>19s}  {clause:16s} {what}")
         lines.append("")
         for symbol, _, what, unit in QUANTITIES:
             label = f"{what} [{unit}]" if unit else what
-            lines.append(f"{symbol:14s} {_fmt(self.quantities[symbol]):>21s}  {label}")
+            lines.append(f"{symbol:13s} {_fmt(self.quantities[symbol]):>19s}  {label}")
         return "\n".join(lines)
 
     def __repr__(self) -> str:
@@ -210,7 +210,7 @@ def rate_pair(
     if face_width is None:
         widths = [w for w in (pair.g1.face_width, pair.g2.face_width) if w]
         if not widths:
-            raise GearError("face_width = None: give face_width= (mm) or set the gears' face_width")
+            raise GearError("face_width = None: give face_width (mm) or set the gears' face widths")
         face_width = min(widths)
     b = float(_number("face_width", face_width, 0.0, 1e5))
     mats = material_ if isinstance(material_, tuple | list) else (material_, material_)

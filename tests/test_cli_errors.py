@@ -568,7 +568,13 @@ _OPTIONS = {
              "--min-tip-land": _NUMBERS, "--friction": _NUMBERS, "--internal": None},
     "planetary": {"--planets": _TEETH[:6], "--module": _NUMBERS, "--scheme":
                   ["simple", "stepped", "double-planet", "external", "internal", "zz"],
-                  "--clearance": _NUMBERS, "--coaxial": None, "--center-distance": _NUMBERS},
+                  "--clearance": _NUMBERS, "--coaxial": None, "--center-distance": _NUMBERS,
+                  "--torque": _NUMBERS, "--speed": _NUMBERS, "--face-width": _NUMBERS},
+    "rate": {"--module": _NUMBERS, "--shift": _NUMBERS, "--helix": ["0", "15", "nan", "70"],
+             "--internal": None, "--face-width": [*_NUMBERS, "20"], "--torque": _NUMBERS,
+             "--speed": _NUMBERS, "--material": ["nitrided", "brass", "grey-cast-iron"],
+             "--life": _NUMBERS, "--quality": ["0", "5", "12", "13", "x"],
+             "--tip-relief": _NUMBERS, "--min-bending": _NUMBERS},
     "synthesize": {"--ratio": [*_NUMBERS, "7", "16", "-3", "22/3"], "--planets":
                    ["3", "3-4", "0", "5-3", "x", "2"], "--scheme": ["simple", "stepped", "qq"],
                    "--tolerance": ["0", "0.01", "nan", "-1", "inf"], "--z-min":
@@ -600,6 +606,7 @@ _OPTIONS = {
 _POSITIONAL = {
     "pair": st.lists(st.sampled_from(_TEETH), min_size=0, max_size=3),
     "planetary": st.lists(st.sampled_from(_TEETH), min_size=0, max_size=5),
+    "rate": st.lists(st.sampled_from(_TEETH), min_size=0, max_size=3),
     "synthesize": st.just([]),
     "profile": st.lists(st.sampled_from(_TEETH[:9]), min_size=0, max_size=2),
     "train": st.sampled_from([[TRAIN_FILE], [str(ROOT)], ["missing.toml"], []]),
@@ -619,7 +626,7 @@ def _argv(draw, command: str) -> list[str]:
         values = options[name]
         if values is None:
             argv.append(name)
-        elif name == "--shift" and command == "pair":
+        elif name == "--shift" and command in ("pair", "rate"):
             argv += [name, draw(st.sampled_from(values)), draw(st.sampled_from(values))]
         else:
             argv += [name, draw(st.sampled_from(values))]

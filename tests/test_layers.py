@@ -38,6 +38,7 @@ LAYERS = {
         ["inertia", "trajectory", "conditions"],
         ["willis"],
         ["power", "coaxial"],
+        ["capacity"],
         ["planetary", "catalog"],
         ["synthesis", "toml_format"],
         ["gearbox"],

@@ -1,4 +1,4 @@
-"""Layer 4, stages and catalog.
+"""Layer 5, stages and catalog.
 
 Ready-made trains: each one a :class:`~trains.willis.Train` built from mesh, link, couple.
 

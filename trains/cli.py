@@ -1,4 +1,4 @@
-"""Layer 10, command line: the ``geartrain`` entry point.
+"""Layer 11, command line: the ``geartrain`` entry point.
 
 Each sub-command is a module in :mod:`trains.commands` exposing ``HELP`` (one line),
 ``add_arguments(parser)`` and ``run(args) -> int`` (0 every check passes, 1 a check fails); its

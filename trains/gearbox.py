@@ -1,4 +1,4 @@
-"""Layer 6, design: multi-stage planetary gearbox search (issue 13).
+"""Layer 7, design: multi-stage planetary gearbox search (issue 13).
 
 :func:`synthesize_gearbox` finds ``stages`` planetary stages in series (any of the five
 schemes each, ring fixed, sun in, carrier out by default) whose ratios multiply to a target.

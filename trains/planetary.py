@@ -1,4 +1,4 @@
-"""Layer 4, stages and catalog.
+"""Layer 5, stages and catalog.
 
 One planetary (2K-H) stage on real gears: ratios, coaxiality, assembly, neighbours, phasing.
 
@@ -53,6 +53,7 @@ from gears.animate import check_frames, write_animation
 from gears.errors import GearError
 from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
 from gears.report import Finding, Report
+from trains.capacity import rating as rate_train
 from trains.conditions import assembly_number
 from trains.errors import TrainError
 from trains.power import power_flow
@@ -801,6 +802,51 @@ class Planetary:
                           mesh_efficiency=etas,
                           friction=friction if mesh_efficiency is None else None)  # fmt: skip
         return float(flow.efficiency)
+
+    def rating(
+        self,
+        torque: float,
+        speed: float,
+        face_width: float | dict | None = None,
+        material: Any = "case-carburized",
+        fixed: str = "ring",
+        input: str | None = None,
+        output: str | None = None,
+        load_sharing_factor: float | dict | None = None,
+        **options: Any,
+    ) -> dict:
+        """ISO 6336 rating of every mesh of the stage (docs/rating.md), by
+        :func:`trains.rating` on :attr:`train`.
+
+        ``torque`` (N m) and ``speed`` (rpm) are the input member's; the roles default as in
+        :meth:`ratio` (ring fixed: sun in, carrier out). Each mesh carries its share of the
+        torque per planet, times the load-sharing factor K_gamma (default
+        :func:`trains.load_sharing` of ``n_planets``, or ``load_sharing_factor``), at its speed
+        relative to the carrier; a central gear counts one load cycle per planet and turn, a
+        planet is an idler (Y_M). ``face_width`` (mm, or per mesh name) defaults to the gears'
+        own; ``options`` go to :meth:`gears.GearPair.rating` (``life``, ``quality``, factors).
+
+        Returns
+        -------
+        dict
+            Mesh name (``"sun-planet"``, ``"planet-ring"``, ...) -> :class:`gears.Rating`.
+
+        Examples
+        --------
+        >>> p = Planetary(sun=21, planet=36, ring=93, n_planets=3, module=2)
+        >>> r = p.rating(torque=120, speed=1500, face_width=20)
+        >>> {k: round(min(v.safety_pitting), 2) for k, v in r.items()}
+        {'sun-planet': 1.07, 'planet-ring': 2.21}
+        """
+        fixed, input, output = _default_roles(
+            self._member(fixed),
+            None if input is None else self._member(input),
+            None if output is None else self._member(output),
+        )
+        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        return rate_train(self.train, name[input], name[output], fixed=[name[fixed]],
+                          torque=torque, speed=speed, material=material, face_width=face_width,
+                          load_sharing_factor=load_sharing_factor, **options)  # fmt: skip
 
     # ---- conditions ------------------------------------------------------------------------
     def _planet_tips(self) -> tuple[float, ...]:

@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -61,6 +61,10 @@ class RelationPower:
         Power lost in it (``(1 - eta) * rolling_power``).
     efficiency : float
         The efficiency used for it.
+    torques : dict
+        The torque it puts on each of its members (its ends and its carrier), in the units of
+        ``input_torque``: a mesh's tooth load is ``|torques[end]|`` over that gear's pitch radius
+        (for a planet member declared with ``Train.set_planets``, the sum over its copies).
     """
 
     name: str
@@ -69,6 +73,7 @@ class RelationPower:
     power: float
     loss: float
     efficiency: float
+    torques: dict[str, float] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -387,7 +392,8 @@ def power_flow(
             u = rel_u[j][0] if d == r.a else rel_u[j][1]
             rolling = float(-x[j] * lev[d] * u)
             loss = (1.0 - etas[j]) * rolling
-        relations[r.name] = RelationPower(r.name, d, rolling, float(absolute), loss, etas[j])
+        on = {m: float(k * x[j]) + 0.0 for m, k in lev.items()}  # the relation's torque on m
+        relations[r.name] = RelationPower(r.name, d, rolling, float(absolute), loss, etas[j], on)
     eff = p_out / p_in
     biggest = max((r.power for r in relations.values()), default=0.0)
     circulating = biggest - p_in if biggest > p_in * (1 + 1e-9) else 0.0

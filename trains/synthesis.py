@@ -1,4 +1,4 @@
-"""Layer 5, design and files.
+"""Layer 6, design and files.
 
 Tooth-number synthesis of a planetary stage for a target ratio (lectures §4.4).
 

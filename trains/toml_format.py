@@ -1,4 +1,4 @@
-"""Layer 5, design and files: reading a :class:`~trains.willis.Train` from a TOML file.
+"""Layer 6, design and files: reading a :class:`~trains.willis.Train` from a TOML file.
 
 The format (documented with examples in ``docs/trains.md`` and ``examples/*.toml``)::
 

@@ -1,3 +1,3 @@
-"""Layer 7, command line.
+"""Layer 8, command line.
 
 Sub-commands of the ``geartrain`` CLI, one module each (see :mod:`trains.cli`)."""

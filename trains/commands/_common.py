@@ -1,4 +1,4 @@
-"""Layer 6, command line: what the ``geartrain`` sub-commands share: option types, output
+"""Layer 8, command line: what the ``geartrain`` sub-commands share: option types, output
 paths, progress, message translation and line wrapping.
 
 This module imports only the standard library (and ``tqdm`` when a bar is actually shown), so
@@ -300,3 +300,166 @@ def gear_arguments(parser: argparse.ArgumentParser) -> None:
         help="normal pressure angle, deg",
     )  # fmt: skip
     parser.add_argument("--internal", action="store_true", help="an internal (ring) gear")
+
+
+#: the library's names for a pair's fields -> the options of pair_arguments
+PAIR_NAMES = {
+    r"split\s*=\s*'(\w+)'": r"--split \1",
+    "x1": "X1",
+    "x2": "X2",
+    "z1": "Z1",
+    "z2": "Z2",
+    "g1": "gear 1",
+    "g2": "gear 2",
+    "profile_shift": "--shift",
+    "module": "--module",
+    "pressure_angle": "--pressure-angle",
+    "helix_angle": "--helix",
+    "face_width": "--face-width",
+    "center_distance": "--center-distance",
+    "at_center_distance": "--center-distance",
+}
+
+SPLITS = ("equal_sliding", "proportional", "keep")
+
+
+def pair_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options that describe one pair (those of ``pair``, used by ``rate``): Z1, Z2,
+    ``--module``, ``--shift X1 X2``, ``--internal``, ``--helix``, ``--pressure-angle``,
+    ``--face-width``, ``--center-distance`` and ``--split`` (built by :func:`build_pair`)."""
+    parser.add_argument("z1", type=integer("Z1"), metavar="Z1", help="teeth of gear 1 (pinion)")
+    parser.add_argument(
+        "z2", type=integer("Z2"), metavar="Z2", help="teeth of gear 2 (the ring with --internal)"
+    )
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
+    )
+    parser.add_argument(
+        "--shift", "-x", type=finite("--shift"), nargs=2, default=(0.0, 0.0), metavar=("X1", "X2"),
+        help="profile-shift coefficients of gear 1 and gear 2",
+    )  # fmt: skip
+    parser.add_argument("--internal", action="store_true", help="gear 2 is an internal ring")
+    parser.add_argument(
+        "--helix", type=finite("--helix"), default=0.0, metavar="BETA",
+        help="helix angle of gear 1 in degrees (+ right hand); gear 2 gets the mating hand",
+    )  # fmt: skip
+    parser.add_argument(
+        "--pressure-angle", type=finite("--pressure-angle"), default=20.0, metavar="ALPHA",
+        help="normal pressure angle in degrees",
+    )  # fmt: skip
+    parser.add_argument(
+        "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
+        help="face width in mm (needed for the overlap ratio of a helical pair and a rating)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--center-distance", type=positive("--center-distance", "mm"), default=None, metavar="A",
+        help="working centre distance in mm: the shifts follow from it (overrides --shift X2)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--split", choices=SPLITS, default=None,
+        help="with --center-distance: how it divides the shift sum ('keep' keeps X1 of --shift; "
+        "default equal_sliding)",
+    )  # fmt: skip
+
+
+def build_pair(args: argparse.Namespace):
+    """The :class:`gears.GearPair` the options of :func:`pair_arguments` describe."""
+    from gears import Gear, GearPair
+
+    x1, x2 = args.shift
+    beta = args.helix
+    g1 = Gear(args.z1, args.module, args.pressure_angle, beta, x1, args.face_width, internal=False)
+    g2 = Gear(
+        args.z2, args.module, args.pressure_angle, beta if args.internal else -beta, x2,
+        args.face_width, internal=args.internal,
+    )  # fmt: skip
+    if args.center_distance is not None:
+        split = args.split or "equal_sliding"
+        return GearPair.at_center_distance(g1, g2, args.center_distance, split=split)
+    if args.split is not None:
+        from trains.errors import TrainError
+
+        raise TrainError("--split divides the shift sum a --center-distance needs: it applies "
+                         "with --center-distance only")  # fmt: skip
+    return GearPair(g1, g2)
+
+
+#: the library's names in rating errors -> the options of rating_arguments
+RATING_NAMES = {
+    "torque": "--torque",
+    "speed": "--speed",
+    "life": "--life",
+    "quality": "--quality",
+    "roughness": "--roughness",
+    "oil_viscosity": "--oil-viscosity",
+    "tip_relief": "--tip-relief",
+    "application_factor": "--application-factor",
+    "material": "--material",
+    "min_pitting": "--min-pitting",
+    "min_bending": "--min-bending",
+}
+
+
+def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> None:
+    """The operating conditions of an ISO 6336 rating (``rate``, ``planetary``): ``--torque``,
+    ``--speed``, ``--material``, ``--life``, ``--quality``, ``--roughness``,
+    ``--oil-viscosity``, ``--tip-relief``, ``--application-factor``, ``--min-pitting`` and
+    ``--min-bending`` (:func:`rating_options` turns them into keyword arguments)."""
+    need = "" if required else " (with --speed: rate every mesh)"
+    parser.add_argument(
+        "--torque", type=positive("--torque", "N m"), required=required, default=None,
+        metavar="T", help=f"input torque in N m{need}",
+    )  # fmt: skip
+    parser.add_argument(
+        "--speed", type=positive("--speed", "rpm"), required=required, default=None,
+        metavar="N", help="input speed in rpm",
+    )  # fmt: skip
+    parser.add_argument(
+        "--material", default="case-carburized",
+        help="ISO 6336-5 material of the gears: case-carburized, nitrided, induction-hardened, "
+        "flame-hardened, through-hardened, nodular-cast-iron or grey-cast-iron",
+    )  # fmt: skip
+    parser.add_argument(
+        "--life", type=positive("--life", "hours"), default=20000.0, help="required life, hours"
+    )
+    parser.add_argument(
+        "--quality", type=integer("--quality", 1, 12), default=6, help="ISO 1328 accuracy grade"
+    )
+    parser.add_argument(
+        "--roughness", type=positive("--roughness", "um"), default=1.0,
+        help="flank roughness Ra, um",
+    )  # fmt: skip
+    parser.add_argument(
+        "--oil-viscosity", type=positive("--oil-viscosity", "mm^2/s"), default=220.0,
+        help="oil viscosity nu_40 at 40 deg C, mm^2/s",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tip-relief", type=non_negative("--tip-relief", "mm"), default=None, metavar="C_A",
+        help="tip relief in mm (default: the running-in amount of ISO 6336-1)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--application-factor", type=bounded("--application-factor", 1, 10), default=1.0,
+        metavar="K_A", help="application factor K_A",
+    )  # fmt: skip
+    parser.add_argument(
+        "--min-pitting", type=non_negative("--min-pitting"), default=1.0,
+        help="required safety against pitting S_Hmin",
+    )  # fmt: skip
+    parser.add_argument(
+        "--min-bending", type=non_negative("--min-bending"), default=1.4,
+        help="required safety against tooth-root breakage S_Fmin",
+    )  # fmt: skip
+
+
+def rating_options(args: argparse.Namespace) -> dict:
+    """The keyword arguments of ``GearPair.rating`` / ``Planetary.rating`` the options of
+    :func:`rating_arguments` give (torque and speed aside)."""
+    return {
+        "material": args.material,
+        "life": args.life,
+        "quality": args.quality,
+        "roughness": args.roughness,
+        "oil_viscosity": args.oil_viscosity,
+        "tip_relief": args.tip_relief,
+        "application_factor": args.application_factor,
+    }

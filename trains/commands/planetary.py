@@ -1,12 +1,15 @@
 """Check a planetary stage: ratios, planet speed, efficiency, coaxiality, assembly, neighbours
 and every mesh, each with its margin. Give three tooth counts (sun, planet, ring) or four (sun,
-the planet gear on the sun, the planet gear on the ring, ring) for a stepped planet. The exit
-status is 1 when a check fails.
+the planet gear on the sun, the planet gear on the ring, ring) for a stepped planet. With
+--torque and --speed (on the sun, ring fixed) every mesh is also rated by ISO 6336 method B
+(pitting and bending, planets sharing the load with K_gamma). The exit status is 1 when a check
+fails or a safety is below its minimum.
 
 Examples:
     geartrain planetary 18 45 108 --planets 3 --module 2
     geartrain planetary 26 70 21 117 --planets 3 --scheme stepped
     geartrain planetary 21 43 108 --planets 3 --module 2 --coaxial
+    geartrain planetary 21 36 93 --planets 3 --module 2 --face-width 20 --torque 120 --speed 1500
 """
 
 from __future__ import annotations
@@ -16,11 +19,14 @@ import argparse
 from trains.commands._common import (
     CHECK_FAILED,
     OK,
+    RATING_NAMES,
     SCENE_FORMATS,
     integer,
     non_negative,
     output_file,
     positive,
+    rating_arguments,
+    rating_options,
 )
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
@@ -40,6 +46,7 @@ NAMES = {
     "frames": "--frames",
     "face_width": "--face-width",
     "tolerance": "--tolerance",
+    **RATING_NAMES,
 }
 """The library's names in error messages -> this command's options (see trains.cli)."""
 
@@ -83,12 +90,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     parser.add_argument(
         "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
-        help="face width of the --scene gears, mm (default: 10 modules)",
+        help="face width of the gears, mm (for the rating; --scene defaults to 10 modules)",
     )  # fmt: skip
     parser.add_argument(
         "--tolerance", type=positive("--tolerance", "mm"), default=None,
         help="mesh tolerance of --scene and --animate, mm (default 0.02)",
     )  # fmt: skip
+    rating_arguments(parser, required=False)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -122,8 +130,19 @@ def run(args: argparse.Namespace) -> int:
                                   center_distance=args.center_distance, **kw)  # fmt: skip
     else:
         stage = Planetary(sun, planet, ring, args.planets, args.module, **kw)
+    if (args.torque is None) != (args.speed is None):
+        given, missing = ("--torque", "--speed") if args.speed is None else ("--speed", "--torque")
+        raise TrainError(
+            f"{given} needs {missing} too: the rating takes the input's torque and speed"
+        )
     ok = stage.check().ok
+    ratings = None
+    if args.torque is not None:
+        ratings = stage.rating(args.torque, args.speed, args.face_width, **rating_options(args))
     print(stage.describe())
+    if ratings is not None:
+        print()
+        ok = _print_ratings(ratings, args) and ok
     if args.scene is not None:
         from gears.export import save
 
@@ -133,3 +152,26 @@ def run(args: argparse.Namespace) -> int:
         stage.animate(args.animate, frames=frames, tolerance=tolerance)
         print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")
     return OK if ok else CHECK_FAILED
+
+
+def _print_ratings(ratings: dict, args: argparse.Namespace) -> bool:
+    """The rating of every mesh as a table and its checks; True when every safety holds."""
+    print(
+        f"ISO 6336 method B rating: {args.torque:g} N m at {args.speed:g} rpm on the sun (ring "
+        f"fixed), {args.material}, life {args.life:g} h"
+    )
+    head = ("mesh", "T1 [N m]", "n1 [rpm]", "K_gamma", "S_H1", "S_H2", "S_F1", "S_F2")
+    print(f"{head[0]:14s}" + "".join(f"{h:>10s}" for h in head[1:]))
+    findings = []
+    for name, r in ratings.items():
+        row = (r.settings["torque"], r.settings["speed"], r.factors["K_gamma"],
+               *r.safety_pitting, *r.safety_bending)  # fmt: skip
+        print(f"{name:14s}" + "".join(f"{v:10.4g}" if i < 2 else f"{v:10.3f}"
+                                      for i, v in enumerate(row)))  # fmt: skip
+        findings.append(r.check(args.min_pitting, args.min_bending).prefixed(name))
+    report = findings[0]
+    for more in findings[1:]:
+        report = report + more
+    print()
+    print("rating checks: " + str(report))
+    return report.ok
