@@ -729,7 +729,11 @@ def test_a_design_that_passes_exits_0_with_nothing_on_stderr(capsys, tmp_path):
         (["pair", "12", "24", "--tolerance", "0.1"], "it applies with --scene only"),
         (["pair", "12", "24", "--face-width", "10"], "a spur pair (--helix 0) without --scene"),
         (["planetary", "18", "45", "108", "--frames", "10"], "it applies with --animate only"),
-        (["planetary", "18", "45", "108", "--face-width", "10"], "it applies with --scene only"),
+        (
+            ["planetary", "18", "45", "108", "--face-width", "10"],
+            "it applies with --scene or --torque only",
+        ),
+        (["planetary", "18", "45", "108", "--life", "10"], "applies with --torque and --speed"),
         (["planetary", "18", "45", "108", "--tolerance", "0.1"], "with one of them only"),
         (["search", "pairs", "--ratio", "2", "--split", "keep"], "with --center-distance only"),
         (["synthesize", "--ratio", "37", "--stages", "2", "--fixed", "sun"], "--fixed shape"),

@@ -400,12 +400,27 @@ RATING_NAMES = {
 }
 
 
+RATING_DEFAULTS = {
+    "material": "case-carburized",
+    "life": 20000.0,
+    "quality": 6,
+    "roughness": 1.0,
+    "oil_viscosity": 220.0,
+    "tip_relief": None,
+    "application_factor": 1.0,
+    "min_pitting": 1.0,
+    "min_bending": 1.4,
+}
+
+
 def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> None:
     """The operating conditions of an ISO 6336 rating (``rate``, ``planetary``): ``--torque``,
     ``--speed``, ``--material``, ``--life``, ``--quality``, ``--roughness``,
     ``--oil-viscosity``, ``--tip-relief``, ``--application-factor``, ``--min-pitting`` and
-    ``--min-bending`` (:func:`rating_options` turns them into keyword arguments)."""
+    ``--min-bending``. Their defaults (:data:`RATING_DEFAULTS`) are filled in by
+    :func:`rating_options`, so a command can tell which were given (:func:`rating_given`)."""
     need = "" if required else " (with --speed: rate every mesh)"
+    d = RATING_DEFAULTS
     parser.add_argument(
         "--torque", type=positive("--torque", "N m"), required=required, default=None,
         metavar="T", help=f"input torque in N m{need}",
@@ -415,51 +430,61 @@ def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> 
         metavar="N", help="input speed in rpm",
     )  # fmt: skip
     parser.add_argument(
-        "--material", default="case-carburized",
+        "--material", default=None,
         help="ISO 6336-5 material of the gears: case-carburized, nitrided, induction-hardened, "
-        "flame-hardened, through-hardened, nodular-cast-iron or grey-cast-iron",
+        f"flame-hardened, through-hardened, nodular-cast-iron or grey-cast-iron (default "
+        f"{d['material']})",
     )  # fmt: skip
     parser.add_argument(
-        "--life", type=positive("--life", "hours"), default=20000.0, help="required life, hours"
-    )
-    parser.add_argument(
-        "--quality", type=integer("--quality", 1, 12), default=6, help="ISO 1328 accuracy grade"
-    )
-    parser.add_argument(
-        "--roughness", type=positive("--roughness", "um"), default=1.0,
-        help="flank roughness Ra, um",
+        "--life", type=positive("--life", "hours"), default=None,
+        help=f"required life, hours (default {d['life']:g})",
     )  # fmt: skip
     parser.add_argument(
-        "--oil-viscosity", type=positive("--oil-viscosity", "mm^2/s"), default=220.0,
-        help="oil viscosity nu_40 at 40 deg C, mm^2/s",
+        "--quality", type=integer("--quality", 1, 12), default=None,
+        help=f"ISO 1328 accuracy grade (default {d['quality']})",
+    )  # fmt: skip
+    parser.add_argument(
+        "--roughness", type=positive("--roughness", "um"), default=None,
+        help=f"flank roughness Ra, um (default {d['roughness']:g})",
+    )  # fmt: skip
+    parser.add_argument(
+        "--oil-viscosity", type=positive("--oil-viscosity", "mm^2/s"), default=None,
+        help=f"oil viscosity nu_40 at 40 deg C, mm^2/s (default {d['oil_viscosity']:g})",
     )  # fmt: skip
     parser.add_argument(
         "--tip-relief", type=non_negative("--tip-relief", "mm"), default=None, metavar="C_A",
         help="tip relief in mm (default: the running-in amount of ISO 6336-1)",
     )  # fmt: skip
     parser.add_argument(
-        "--application-factor", type=bounded("--application-factor", 1, 10), default=1.0,
-        metavar="K_A", help="application factor K_A",
+        "--application-factor", type=bounded("--application-factor", 1, 10), default=None,
+        metavar="K_A", help=f"application factor K_A (default {d['application_factor']:g})",
     )  # fmt: skip
     parser.add_argument(
-        "--min-pitting", type=non_negative("--min-pitting"), default=1.0,
-        help="required safety against pitting S_Hmin",
+        "--min-pitting", type=non_negative("--min-pitting"), default=None,
+        help=f"required safety against pitting S_Hmin (default {d['min_pitting']:g})",
     )  # fmt: skip
     parser.add_argument(
-        "--min-bending", type=non_negative("--min-bending"), default=1.4,
-        help="required safety against tooth-root breakage S_Fmin",
+        "--min-bending", type=non_negative("--min-bending"), default=None,
+        help=f"required safety against tooth-root breakage S_Fmin (default {d['min_bending']:g})",
     )  # fmt: skip
+
+
+def rating_given(args: argparse.Namespace) -> list[str]:
+    """The rating options given on the command line (other than --torque and --speed)."""
+    return [f"--{k.replace('_', '-')}" for k in RATING_DEFAULTS if getattr(args, k) is not None]
 
 
 def rating_options(args: argparse.Namespace) -> dict:
     """The keyword arguments of ``GearPair.rating`` / ``Planetary.rating`` the options of
-    :func:`rating_arguments` give (torque and speed aside)."""
-    return {
-        "material": args.material,
-        "life": args.life,
-        "quality": args.quality,
-        "roughness": args.roughness,
-        "oil_viscosity": args.oil_viscosity,
-        "tip_relief": args.tip_relief,
-        "application_factor": args.application_factor,
-    }
+    :func:`rating_arguments` give (torque, speed and the minimums aside), defaults filled in."""
+    keys = ("material", "life", "quality", "roughness", "oil_viscosity", "tip_relief",
+            "application_factor")  # fmt: skip
+    return {k: RATING_DEFAULTS[k] if getattr(args, k) is None else getattr(args, k) for k in keys}
+
+
+def rating_minimums(args: argparse.Namespace) -> tuple[float, float]:
+    """``(min_pitting, min_bending)`` of the options, defaults filled in."""
+    return tuple(
+        RATING_DEFAULTS[k] if getattr(args, k) is None else getattr(args, k)
+        for k in ("min_pitting", "min_bending")
+    )

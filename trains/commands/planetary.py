@@ -26,6 +26,8 @@ from trains.commands._common import (
     output_file,
     positive,
     rating_arguments,
+    rating_given,
+    rating_minimums,
     rating_options,
 )
 
@@ -116,9 +118,13 @@ def run(args: argparse.Namespace) -> int:
         raise TrainError("--center-distance applies with --coaxial only")
     if args.frames is not None and args.animate is None:
         raise TrainError("--frames counts the frames of --animate: it applies with --animate only")
-    if args.face_width is not None and args.scene is None:
-        raise TrainError("--face-width is the width of the --scene gears: it applies with "
-                         "--scene only (--animate draws the stage in 2D)")  # fmt: skip
+    if args.face_width is not None and args.scene is None and args.torque is None:
+        raise TrainError("--face-width is the width of the --scene gears and of the rated "
+                         "meshes: it applies with --scene or --torque only (--animate draws the "
+                         "stage in 2D)")  # fmt: skip
+    if args.torque is None and args.speed is None and rating_given(args):
+        raise TrainError(f"{rating_given(args)[0]} is a rating condition: it applies with "
+                         "--torque and --speed only")  # fmt: skip
     if args.tolerance is not None and args.scene is None and args.animate is None:
         raise TrainError("--tolerance is the mesh tolerance of --scene and --animate: it "
                          "applies with one of them only")  # fmt: skip
@@ -142,7 +148,7 @@ def run(args: argparse.Namespace) -> int:
     print(stage.describe())
     if ratings is not None:
         print()
-        ok = _print_ratings(ratings, args) and ok
+        ok = _print_ratings(ratings, args, rating_options(args)) and ok
     if args.scene is not None:
         from gears.export import save
 
@@ -154,11 +160,11 @@ def run(args: argparse.Namespace) -> int:
     return OK if ok else CHECK_FAILED
 
 
-def _print_ratings(ratings: dict, args: argparse.Namespace) -> bool:
+def _print_ratings(ratings: dict, args: argparse.Namespace, options: dict) -> bool:
     """The rating of every mesh as a table and its checks; True when every safety holds."""
     print(
         f"ISO 6336 method B rating: {args.torque:g} N m at {args.speed:g} rpm on the sun (ring "
-        f"fixed), {args.material}, life {args.life:g} h"
+        f"fixed), {options['material']}, life {options['life']:g} h"
     )
     head = ("mesh", "T1 [N m]", "n1 [rpm]", "K_gamma", "S_H1", "S_H2", "S_F1", "S_F2")
     print(f"{head[0]:14s}" + "".join(f"{h:>10s}" for h in head[1:]))
@@ -168,7 +174,7 @@ def _print_ratings(ratings: dict, args: argparse.Namespace) -> bool:
                *r.safety_pitting, *r.safety_bending)  # fmt: skip
         print(f"{name:14s}" + "".join(f"{v:10.4g}" if i < 2 else f"{v:10.3f}"
                                       for i, v in enumerate(row)))  # fmt: skip
-        findings.append(r.check(args.min_pitting, args.min_bending).prefixed(name))
+        findings.append(r.check(*rating_minimums(args)).prefixed(name))
     report = findings[0]
     for more in findings[1:]:
         report = report + more

@@ -21,6 +21,7 @@ from trains.commands._common import (
     build_pair,
     pair_arguments,
     rating_arguments,
+    rating_minimums,
     rating_options,
 )
 
@@ -38,7 +39,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     pair = build_pair(args)
     rating = pair.rating(args.torque, args.speed, **rating_options(args))
-    report = rating.check(args.min_pitting, args.min_bending)
+    report = rating.check(*rating_minimums(args))
     print(rating)
     print()
     print("checks: " + str(report))
