@@ -32,17 +32,32 @@ RESULTS = HERE.parent / "tests" / "benchmarks" / "results" / "mesh.json"
 LIGHT = np.array([0.4, -0.5, 0.77])
 
 
-def _draw(ax, mesh, colour, matrix=None):
+def _view_direction(elev, azim):
+    """Unit vector from the scene towards an orthographic camera at ``elev``/``azim`` (deg)."""
+    e, a = np.radians(elev), np.radians(azim)
+    return np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+
+
+def _draw(ax, mesh, colour, matrix=None, elev=32, azim=-60):
+    """The mesh's faces that face the camera, shaded by their own (outward) normals.
+
+    matplotlib has no depth buffer: it paints polygons sorted by depth, which goes wrong where
+    long faces of a non-convex solid (a ring's rim behind its teeth) overlap. Faces turned away
+    from the camera are hidden in the solid anyway; leaving them out removes those errors."""
     v = np.asarray(mesh.vertices)
+    n = np.asarray(mesh.face_normals)
     if matrix is not None:
         v = v @ matrix[:3, :3].T + matrix[:3, 3]
-    tri = v[mesh.faces]
-    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    n /= np.linalg.norm(n, axis=1)[:, None]
+        n = n @ matrix[:3, :3].T
+    front = n @ _view_direction(elev, azim) > 0.0
+    tri, n = v[mesh.faces[front]], n[front]
     shade = 0.35 + 0.65 * np.clip(n @ (LIGHT / np.linalg.norm(LIGHT)), 0.0, 1.0)
     rgb = np.asarray(colour[:3], dtype=float) / 255.0
     faces = np.clip(shade[:, None] * rgb, 0.0, 1.0)
-    ax.add_collection3d(Poly3DCollection(tri, facecolors=faces, edgecolors=faces, lw=0.2))
+    # not antialiased: antialiased edges of neighbouring faces leave seams that read as cracks
+    ax.add_collection3d(
+        Poly3DCollection(tri, facecolors=faces, edgecolors=faces, lw=0.2, antialiased=False)
+    )
     return v
 
 
@@ -53,17 +68,18 @@ def _frame(ax, points, title, elev=32, azim=-60):
     ax.set_ylim(c[1] - r, c[1] + r)
     ax.set_zlim(lo[2], hi[2])
     ax.set_box_aspect((1, 1, max((hi[2] - lo[2]) / (2 * r), 0.05)), zoom=1.25)
+    ax.set_proj_type("ortho")  # the camera _draw culls for: no perspective
     ax.view_init(elev=elev, azim=azim)
     ax.set_axis_off()
     ax.set_title(title, fontsize=10)
 
 
-def solo(path, mesh, colour, title, **view):
+def solo(path, mesh, colour, title, elev=32, azim=-60):
     fig = plt.figure(figsize=(4.2, 4.2))
     ax = fig.add_subplot(projection="3d")
-    _frame(ax, _draw(ax, mesh, colour), title, **view)
+    _frame(ax, _draw(ax, mesh, colour, elev=elev, azim=azim), title, elev=elev, azim=azim)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the whole title, no empty margins
     plt.close(fig)
     print("wrote", path)
 
@@ -76,12 +92,12 @@ def stage_3d(path, p, b, tol):
     for node in sc.graph.nodes_geometry:
         matrix, geom = sc.graph[node]
         colour = sc.geometry[geom].visual.material.baseColorFactor
-        pts.append(_draw(ax, sc.geometry[geom], colour, matrix))
+        pts.append(_draw(ax, sc.geometry[geom], colour, matrix, elev=40))
     z = p.teeth
     title = f"Planetary({z[0]}, {z[1]}, {z[3]}, n_planets={p.n_planets}).scene()"
     _frame(ax, np.concatenate(pts), title, elev=40)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the whole title, no empty margins
     plt.close(fig)
     print("wrote", path)
 
@@ -94,14 +110,16 @@ def stage_2d(path, p, tol):
         ax.add_patch(PathPatch(polygon_path(shape), facecolor=np.asarray(COLOURS[key]) / 255,
                                edgecolor="k", lw=0.3))  # fmt: skip
     pl = p.placement()
-    ax.set_title(f"{p!r}\nplanets at {', '.join(f'{a:g}' for a in pl.planet_angles)} deg,"
-                 f" turned {', '.join(f'{r:.1f}' for r in pl.planet_rotations)} deg",
-                 fontsize=9)  # fmt: skip
+    z = p.teeth
+    title = (f"Planetary({z[0]}, {z[1]}, {z[3]}, n_planets={p.n_planets}, module={p.module:g})"
+             f".outlines()\nplanets at {', '.join(f'{a:g}' for a in pl.planet_angles)} deg, "
+             f"turned {', '.join(f'{r:.1f}' for r in pl.planet_rotations)} deg")  # fmt: skip
+    ax.set_title(title, fontsize=9)
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.set_axis_off()
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the whole title, no empty margins
     plt.close(fig)
     print("wrote", path)
 
@@ -142,7 +160,7 @@ def chart(path):
     a2.legend(fontsize=7, loc="lower left")
     a2.set_title("accuracy (helical, against the exact surface)", fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the whole title, no empty margins
     plt.close(fig)
     print("wrote", path)
 

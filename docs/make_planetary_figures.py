@@ -52,9 +52,10 @@ def planetary_conditions(path: Path) -> Path:
     gap = stage.check()["neighbour"]
     ax.annotate(f"2 a_w sin(pi/3) = {math.dist(centres[0], centres[1]):.1f} mm\n"
                 f"vs d_a = {tip:.1f} mm (+ clearance): margin {gap.margin:+.1f} mm",
-                ((x0 + x1) / 2, (y0 + y1) / 2), xytext=(-40, 120), textcoords="offset points",
-                ha="center", fontsize=8,
-                arrowprops={"arrowstyle": "->", "color": "tab:red"}, color="tab:red")  # fmt: skip
+                ((x0 + x1) / 2, (y0 + y1) / 2), xytext=(0.98, 0.02), textcoords="axes fraction",
+                ha="right", va="bottom", fontsize=8, color="tab:red",
+                bbox={"boxstyle": "round", "fc": "white", "ec": "tab:red", "alpha": 0.95},
+                arrowprops={"arrowstyle": "->", "color": "tab:red"})  # fmt: skip
     r_tick = ring_tip / 2 + 10
     for j in range(asm.ticks):
         t = 2 * math.pi * j / asm.ticks

@@ -37,7 +37,7 @@ def main():
         ),
     }
     for name, fig in figures.items():
-        fig.savefig(OUT / name, dpi=110)
+        fig.savefig(OUT / name, dpi=110, bbox_inches="tight")  # no empty margins
         plt.close(fig)
         print("wrote", OUT / name)
 

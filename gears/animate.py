@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import pathlib
+import textwrap
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -152,8 +153,8 @@ def write_animation(
         ax.set_xlim(x0 - pad, x1 + pad)
         ax.set_ylim(y0 - pad, y1 + pad)
         ax.set_axis_off()
-        if title:
-            ax.set_title(title)
+        if title:  # wrapped to the figure's width (10 pt: about 6 pt a character): never clipped
+            ax.set_title(textwrap.fill(title, max(20, int(size * 72 / 6))), fontsize=10)
         fig.tight_layout()
         with writer.saving(fig, str(path), dpi):
             for i in range(n):

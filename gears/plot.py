@@ -54,35 +54,42 @@ def outlines_figure(*outlines, ax=None):
 
 
 def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
-    """One tooth with base, form, reference, tip and root circles; involute and fillet coloured."""
+    """One tooth, its involute and fillet coloured, with its tip, reference, form, base and root
+    circles. Every curve is named in a legend below the drawing (with the circle's diameter in
+    mm), so close circles (the form and base circles of an undercut pinion) never share a
+    label."""
 
     plt = _plt()
-    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(6, 6))
+    fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(5.2, 5.6))
     prof = ToothProfile(gear)
     rho, eta, kind = prof.half_space(tolerance)
     half = math.pi / gear.teeth
-    names = {0: ("root arc", "0.4"), 1: ("fillet (trochoid offset)", "C3"),
-             2: ("involute", "C0"), 3: ("tip arc", "0.4")}  # fmt: skip
+    parts = {0: (None, "k"), 1: ("fillet (trochoid offset)", "C3"), 2: ("involute", "C0"),
+             3: (None, "k")}  # fmt: skip
     for side in (1, -1):
         th = side * (half - eta) + math.pi / 2
         x, y = rho * np.cos(th), rho * np.sin(th)
-        for k, (label, colour) in names.items():
+        for k, (label, colour) in parts.items():
             sel = np.flatnonzero(kind == k)
             if sel.size:
                 sel = np.append(sel, min(sel[-1] + 1, len(x) - 1))
                 ax.plot(x[sel], y[sel], color=colour, lw=2, label=label if side == 1 else None)
-    for name, d, style in [
-        ("base", gear.base_diameter, ":"), ("form", gear.form_diameter, "-."),
-        ("reference", gear.reference_diameter, "--"), ("tip", gear.tip_diameter, "-"),
-        ("root", gear.root_diameter, "-"),
+    t = np.linspace(math.pi / 2 - 1.5 * half, math.pi / 2 + 1.5 * half, 200)
+    for name, d, style, colour in [
+        ("tip circle d_a", gear.tip_diameter, "-", "0.55"),
+        ("reference circle d", gear.reference_diameter, "--", "C2"),
+        ("form circle d_Ff", gear.form_diameter, "-.", "C4"),
+        ("base circle d_b", gear.base_diameter, ":", "C1"),
+        ("root circle d_f", gear.root_diameter, "-", "0.55"),
     ]:  # fmt: skip
-        t = np.linspace(math.pi / 2 - 1.6 * half, math.pi / 2 + 1.6 * half, 100)
-        ax.plot(d / 2 * np.cos(t), d / 2 * np.sin(t), style, color="0.6", lw=0.8)
-        ax.annotate(f"{name} d = {d:.3f}", (d / 2 * math.cos(t[0]), d / 2 * math.sin(t[0])),
-                    fontsize=7, color="0.3")  # fmt: skip
+        ax.plot(d / 2 * np.cos(t), d / 2 * np.sin(t), style, color=colour, lw=1,
+                label=f"{name} = {d:.3f} mm", zorder=1)  # fmt: skip
     ax.set_aspect("equal")
-    ax.legend(loc="upper right", fontsize=7)
-    ax.set_title(f"z = {gear.teeth}, x = {gear.profile_shift:g}, m = {gear.module:g}")
+    ax.set_xlabel("mm")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8,
+              frameon=False, handlelength=2.5)  # fmt: skip
+    ax.set_title(f"z = {gear.teeth}, x = {gear.profile_shift:g}, m = {gear.module:g} mm")
+    fig.tight_layout()
     return fig
 
 

@@ -222,3 +222,46 @@ def test_a_failed_write_is_a_gear_error(tmp_path, monkeypatch):
     monkeypatch.setattr(pathlib.Path, "write_text", full)
     with pytest.raises(GearError, match=r"g\.svg' could not be written: No space left"):
         save(tmp_path / "g.svg", Gear(12, 1).outline(0.01))
+
+
+def test_tooth_figure_texts_do_not_overlap():
+    # issue 16: the circle labels of an undercut pinion (form d_Ff = 7.614 mm and base
+    # d_b = 7.518 mm, 0.05 mm apart in radius) were drawn on top of each other; every text of
+    # the figure (title, legend, ticks) now has its own place inside the figure
+    from gears.plot import tooth_figure
+
+    fig = tooth_figure(Gear(8, 1))
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (ax,) = fig.axes
+    (x0, x1), (y0, y1) = sorted(ax.get_xlim()), sorted(ax.get_ylim())
+    ticks = [t for t in ax.get_xticklabels() if x0 <= t.get_position()[0] <= x1]
+    ticks += [t for t in ax.get_yticklabels() if y0 <= t.get_position()[1] <= y1]
+    texts = [ax.title, ax.xaxis.label, *ax.get_legend().get_texts(), *ticks]
+    texts = [t for t in texts if t.get_text()]
+    labels = [t.get_text() for t in texts]
+    assert "form circle d_Ff = 7.614 mm" in labels and "base circle d_b = 7.518 mm" in labels
+    boxes = [t.get_window_extent(renderer) for t in texts]
+    for i, a in enumerate(boxes):
+        assert fig.bbox.contains(a.x0, a.y0) and fig.bbox.contains(a.x1, a.y1), labels[i]
+        for j in range(i):
+            assert not a.overlaps(boxes[j]), (labels[i], labels[j])
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+
+
+def test_an_animation_title_is_never_clipped(tmp_path):
+    # issue 16: the planetary GIFs' titles ran off both sides. The first frame's left and right
+    # edge columns hold no ink in the title band (the top eighth of the picture)
+    from PIL import Image
+
+    from gears.animate import write_animation
+
+    title = "Planetary(sun=26, planet=(70, 21), ring=117, n_planets=3, module=1, scheme='stepped')"
+    frames = [[(shapely.box(-1, -1, 1, 1), "tab:blue")]]
+    path = write_animation(tmp_path / "a.gif", frames, fps=5, title=title)
+    pixels = np.asarray(Image.open(path).convert("L"), dtype=float)
+    band = pixels[: pixels.shape[0] // 8]
+    assert band[:, :3].min() > 200 and band[:, -3:].min() > 200  # white margins
+    assert band.min() < 100  # and the title is there
