@@ -16,6 +16,7 @@ from functools import cached_property
 
 import numpy as np
 
+from gears.animate import check_frames
 from gears.bevel import (
     CLEARANCES,
     BevelGeometry,
@@ -26,13 +27,16 @@ from gears.bevel import (
     gleason_coefficients,
     max_face_width,
 )
+from gears.bevel_mesh import BevelBlank, bevel_placement, bevel_solid
 from gears.checks import pointed_tip_margin
 from gears.errors import GearError
 from gears.gear import Gear
 from gears.geometry import check_real, check_teeth
+from gears.mesh import COLOURS, scene
 from gears.pair import GearPair, Rack
 from gears.rack import BasicRack
 from gears.report import Finding, Report
+from gears.spherical import SphericalTooth
 
 __all__ = ["PROFILES", "BevelGear", "BevelPair", "VirtualGear"]
 
@@ -74,6 +78,30 @@ class VirtualGear(Gear):
 
 def _number(name: str, value, low=None, high=None, low_open=True) -> float:
     return check_real(name, value, low, high, low_open=low_open)
+
+
+def _placed(mesh, matrix) -> np.ndarray:
+    """The mesh's vertices moved by a 4x4 placement."""
+    return mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def _positive(name: str, value) -> float:
+    """A finite number > 0 (mm), or a GearError naming it; the finest tolerance is 1e-6 mm."""
+    v = check_real(name, value, 0.0)
+    if name == "tolerance" and v < 1e-6:
+        raise GearError(f"tolerance = {v:g} mm; valid is >= 1e-06 mm (the finest honoured)")
+    return v
+
+
+def _backlash(backlash, thickness: float) -> float:
+    """The pair's normal backlash at the mean cone, 0 <= j < the tooth's normal thickness."""
+    j = check_real("backlash", backlash, 0.0, low_open=False)
+    if not j < thickness:
+        raise GearError(
+            f"backlash = {j:g} mm; valid is 0 <= backlash < {thickness:.4f} mm (the mean tooth "
+            "thickness: a larger backlash leaves no tooth)"
+        )
+    return j
 
 
 @dataclass(frozen=True, init=False)
@@ -372,6 +400,59 @@ class BevelPair:
         sliding of a straight bevel mesh is that of its Tredgold pair)."""
         return self.virtual_pair.mesh_efficiency(friction)
 
+    # --- placement -------------------------------------------------------------------------------
+    def placement(self, angle: float = 0.0):
+        """4x4 placements ``(gear 1, gear 2)`` on the common apex when gear 1 has turned by
+        ``angle`` degrees (:func:`gears.bevel_mesh.bevel_placement`): gear 1's axis +z, gear 2's
+        ``(sin Sigma, 0, cos Sigma)``, phased so the teeth interleave."""
+        angle = check_real("angle", angle)
+        return bevel_placement(self.z1, self.z2, self.shaft_angle, angle)
+
+    def scene(
+        self, angle: float = 0.0, tolerance: float = 0.01, backlash: float = 0.0,
+        bore: float | None = None, back_cone: bool = True,
+    ):  # fmt: skip
+        """Both gears as a ``trimesh.Scene`` (nodes ``gear1``, ``gear2``): a common apex at the
+        origin, the axes at the shaft angle (:meth:`placement`), gear 1 turned by ``angle``
+        degrees and gear 2 rolling with it. At zero ``backlash`` (mm, normal, at the mean
+        cone; each gear takes half) the flanks touch without interpenetrating: the teeth are
+        sampled one-sidedly (:mod:`gears.spherical`).
+
+        Examples
+        --------
+        >>> sc = BevelPair(20, 40, module=3, face_width=20).scene(tolerance=0.05)
+        >>> sorted(sc.graph.nodes_geometry)
+        ['gear1', 'gear2']
+        """
+        p1, p2 = self.placement(angle)
+        m1 = self.g1.mesh(tolerance, bore, back_cone, backlash)
+        m2 = self.g2.mesh(tolerance, bore, back_cone, backlash)
+        return scene([("gear1", m1, p1, COLOURS["gear1"]), ("gear2", m2, p2, COLOURS["gear2"])])
+
+    def animate(
+        self, path, frames: int = 24, fps: float = 12.0, turn: float | None = None,
+        tolerance: float = 0.05, backlash: float = 0.0, elevation: float = 30.0,
+        azimuth: float = -30.0, progress=None,
+    ):  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of the pair turning: gear 1 by ``turn`` degrees
+        (default one pitch, ``360 / z1``), gear 2 rolling with it, seen from ``elevation`` and
+        ``azimuth`` degrees (:func:`gears.render.write_animation_3d`; ``progress(i, n)`` after
+        each frame)."""
+        from gears.render import Camera, write_animation_3d
+
+        n = check_frames(frames)
+        turn = 360.0 / self.z1 if turn is None else check_real("turn", turn)
+        m1 = self.g1.mesh(tolerance, backlash=backlash)
+        m2 = self.g2.mesh(tolerance, backlash=backlash)
+        c1, c2 = COLOURS["gear1"], COLOURS["gear2"]
+
+        def frame(i: int) -> list:
+            q1, q2 = self.placement(i * turn / n)
+            return [(_placed(m1, q1), m1.faces, c1), (_placed(m2, q2), m2.faces, c2)]
+
+        return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps,
+                                  progress=progress)  # fmt: skip
+
     # --- checks ----------------------------------------------------------------------------------
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
         """Every finding of the pair, each with its margin; never raises for a bad design.
@@ -621,6 +702,58 @@ class BevelGear:
             f"normal tip land at the {where} end {worst + need:.4f} mm vs required {need:.4f} mm "
             f"({min_tip_land:g} m of that end; virtual gears of both ends)",
         )  # fmt: skip
+
+    # --- teeth and solids ----------------------------------------------------------------------
+    def tooth(self, backlash: float = 0.0) -> SphericalTooth:
+        """The exact tooth space on the unit sphere (:class:`gears.spherical.SphericalTooth`),
+        generated by the pair's crown gear: this gear's half of the normal ``backlash`` (mm, at
+        the mean cone) widens the crown tooth by ``j / (4 cos alpha)`` on each flank."""
+        p, g = self.pair, self.pair.geometry
+        r_m, m_m = float(g.mean_cone_distance), float(g.mean_module)
+        alpha = math.radians(p.pressure_angle)
+        j = _backlash(backlash, self.mean_thickness)
+        psi_p = (math.pi * m_m - self.mean_thickness) / (2.0 * r_m) + j / (
+            4.0 * r_m * math.cos(alpha)
+        )
+        return SphericalTooth(
+            self.teeth, math.radians(self.pitch_angle), alpha, psi_p,
+            math.radians(self.dedendum_angle), p.tool_radius * m_m / r_m, p.profile,
+        )  # fmt: skip
+
+    @property
+    def blank(self) -> BevelBlank:
+        """Cone angles (radians), cone distance, face width and heights for the solid."""
+        return BevelBlank(
+            math.radians(self.pitch_angle), math.radians(self.face_angle), self.cone_distance,
+            self.face_width, self.addendum, self.dedendum, math.radians(self.dedendum_angle),
+            self.module,
+        )  # fmt: skip
+
+    def mesh(
+        self, tolerance: float = 0.01, bore: float | None = None, back_cone: bool = True,
+        backlash: float = 0.0,
+    ):  # fmt: skip
+        """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, pitch
+        apex at the origin, tooth 0 centred on +x; the teeth between the cone distances
+        ``R_e - b`` and ``R_e`` (:func:`gears.bevel_mesh.bevel_solid`).
+
+        ``tolerance`` (mm) bounds the deviation from the exact octoid (or spherical involute)
+        at the back end; ``bore`` a bore diameter (mm); ``back_cone`` ends the teeth on the
+        back and front cones (True) or on planes normal to the axis (False); ``backlash`` is
+        the pair's normal backlash at the mean cone (this gear takes half).
+
+        Examples
+        --------
+        >>> m = BevelPair(20, 40, module=3, face_width=20).g1.mesh(tolerance=0.05)
+        >>> m.is_watertight, m.is_winding_consistent, bool(m.volume > 0)
+        (True, True, True)
+        """
+        tolerance = _positive("tolerance", tolerance)
+        if bore is not None:
+            bore = _positive("bore", bore)
+        if not isinstance(back_cone, bool):
+            raise GearError(f"back_cone = {back_cone!r}; valid is True or False")
+        return bevel_solid(self.tooth(backlash), self.blank, tolerance, bore, back_cone)
 
     def check(self, min_tip_land: float = 0.2) -> Report:
         """This gear's findings of :meth:`BevelPair.check` (without the ``gN.`` prefix)."""
