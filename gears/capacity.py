@@ -19,7 +19,7 @@ from gears.rating import FACTORS, QUANTITIES, PairRatings, load_point, rate_pair
 from gears.report import Finding, Report
 from gears.root import measure_root
 
-__all__ = ["ROOT_ROUTES", "Rating", "rate_pair"]
+__all__ = ["ROOT_ROUTES", "Rating", "load_diameters", "rate_pair"]
 
 #: How the root form of each gear is found: ``"auto"`` (the standard's equations for rack-cut
 #: external gears, measured on the exact envelope for internal and shaper-cut gears),
@@ -182,6 +182,24 @@ def _fmt(value) -> str:
     return f"{value:.5g}"
 
 
+def load_diameters(pair) -> tuple[float, float]:
+    """``(d_en1, d_en2)``: where method B loads each gear of ``pair`` (as mounted), the outer
+    point of single contact on its virtual spur gear (:func:`gears.rating.load_point`); NaN
+    where that point lies inside the base circle.
+
+    >>> from gears import Gear, GearPair
+    >>> [round(d, 4) for d in load_diameters(GearPair(Gear(20, 2), Gear(40, 2)))]
+    [40.6096, 80.9323]
+    """
+    eps = pair.contact_ratio
+    out = []
+    for gear in pair.mounted:
+        d_en = load_point(gear.teeth, gear.module, gear.tip_diameter, gear.reference_diameter,
+                          gear.pressure_angle, gear.helix_angle, eps, gear.internal)[0]  # fmt: skip
+        out.append(float(d_en))
+    return out[0], out[1]
+
+
 @functools.lru_cache(maxsize=256)
 def _measured(gear, d_en: float, method: str):
     """The measured root of ``gear`` (cached: a torque sweep measures each gear once)."""
@@ -219,16 +237,13 @@ def rate_pair(
     m1, m2 = (material(m) for m in mats)
     # the root of each gear: the standard's equations or measured on its real tooth
     roots, routes = [None, None], ["", ""]
-    eps = pair.contact_ratio
     for i, gear in enumerate((g1, g2)):
         shaper = gear.internal or gear.cutter is not None
         route = root if root != "auto" else ("measured" if shaper else "standard")
         if route == "standard":
             routes[i] = "ISO 6336-3 rack approximation" if gear.internal else "ISO 6336-3 (rack)"
             continue
-        d_en = float(load_point(gear.teeth, gear.module, gear.tip_diameter,
-                                gear.reference_diameter, gear.pressure_angle, gear.helix_angle,
-                                eps, gear.internal)[0])  # fmt: skip
+        d_en = load_diameters(pair)[i]
         if not math.isfinite(d_en):
             raise GearError(
                 f"gear {i + 1}: the outer point of single contact lies inside the base circle of "

@@ -14,6 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import BasicRack, Gear, GearPair
+from gears.capacity import load_diameters
 from gears.errors import GearError
 from gears.materials import MATERIALS, Material, bending_life_factor, pitting_life_factor
 from gears.rating import (
@@ -164,11 +165,7 @@ def test_y_f_y_s_on_the_simulated_cut(z, x, rack):
     g = Gear(z, 2, profile_shift=x, face_width=20, rack=BasicRack.iso53(rack))
     pair = GearPair(g, Gear(47, 2, face_width=20, rack=BasicRack.iso53(rack)))
     standard = pair.rating(100, 1000, root="standard")
-    d_en = float(
-        __import__("gears.rating", fromlist=["load_point"]).load_point(
-            z, 2, pair.tip_diameters[0], g.reference_diameter, 20, 0, pair.contact_ratio
-        )[0]
-    )
+    d_en = load_diameters(pair)[0]
     sim = measure_root(pair.mounted[0], d_en, "simulated", tolerance=2e-4)
     yf, ys, _ = sim.factors(2)
     assert yf == pytest.approx(standard.factors["Y_F"][0], rel=5e-3)
