@@ -10,7 +10,6 @@ as a sequence of frames or as a callable ``frame(i)``. ``GearPair.animate`` and
 
 from __future__ import annotations
 
-import math
 import pathlib
 import textwrap
 from collections.abc import Callable, Sequence
@@ -18,10 +17,21 @@ from collections.abc import Callable, Sequence
 import numpy as np
 import shapely
 
+from gears.arguments import (
+    MAX_FRAMES,
+    check_callback,
+    check_fps,
+    check_frames,
+    check_integer,
+    check_positive,
+)
 from gears.errors import GearError
 from gears.files import check_output
 
-__all__ = ["polygon_path", "write_animation"]
+__all__ = ["MAX_FRAMES", "check_frames", "polygon_path", "write_animation"]
+
+#: The animation formats and their writers.
+FORMATS = (".gif", ".mp4")
 
 Frame = Sequence[tuple]
 
@@ -46,22 +56,6 @@ def polygon_path(polygon):
     if not verts:
         return Path(np.zeros((1, 2)), [Path.MOVETO])
     return Path(np.concatenate(verts), np.concatenate(codes))
-
-
-#: Most frames one animation writes (matplotlib renders about 30 ms a frame: 2000 is a minute).
-MAX_FRAMES = 2000
-
-
-def check_frames(frames, name: str = "frames") -> int:
-    """``frames`` as an int in ``1 ... MAX_FRAMES``, or a :class:`GearError` naming the range."""
-    if isinstance(frames, bool) or not isinstance(frames, int | float | np.integer | np.floating):
-        raise GearError(f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES}")
-    if not (math.isfinite(frames) and frames == int(frames) and 1 <= frames <= MAX_FRAMES):
-        raise GearError(
-            f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES} (a longer animation "
-            "takes minutes to render; lower the count)"
-        )
-    return int(frames)
 
 
 def write_animation(
@@ -95,8 +89,9 @@ def write_animation(
     Raises
     ------
     GearError
-        For an unknown extension, ``fps <= 0``, no frames, a missing ``n_frames``, an MP4
-        without ffmpeg, or matplotlib missing.
+        Before any frame is drawn: for an unknown extension or a folder that does not exist
+        or is not writable, ``fps`` outside 0.01 ... 1000, no frames, a missing ``n_frames``,
+        an MP4 without ffmpeg, or matplotlib missing.
 
     Examples
     --------
@@ -107,11 +102,14 @@ def write_animation(
     >>> f.read_bytes()[:6]
     b'GIF89a'
     """
-    path = check_output(path, (".gif", ".mp4"))
+    path = check_output(path, FORMATS)
     ext = path.suffix.lower()
-    fps = float(fps)
-    if not math.isfinite(fps) or fps <= 0.0:
-        raise GearError(f"fps = {fps!r} must be a finite number > 0")
+    fps = check_fps(fps)
+    size = check_positive("size", size, "inches")
+    if not 0.1 <= size <= 100:
+        raise GearError(f"size = {size!r} inches; valid is 0.1 ... 100")
+    dpi = check_integer("dpi", dpi, 10, 1000)
+    check_callback("progress", progress)
     if callable(frames):
         if n_frames is None:
             raise GearError("n_frames = None: a callable of frames needs n_frames >= 1")

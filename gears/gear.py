@@ -12,6 +12,16 @@ import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+from gears.arguments import (
+    check_callback,
+    check_choice,
+    check_flag,
+    check_length,
+    check_module,
+    check_positive,
+    check_tolerance,
+)
+from gears.budget import check_budget
 from gears.checks import gear_margins
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
@@ -34,9 +44,9 @@ from gears.geometry import (
     transverse_pressure_angle,
 )
 from gears.involute import inv, inv_inverse, pressure_angle_at
-from gears.mesh import check_positive, gear_solid, helix_twist
-from gears.outline import gear_outline
-from gears.profile import ShaperProfile, undercut_form_diameter
+from gears.mesh import gear_solid, helix_twist, solid_levels
+from gears.outline import METHODS, gear_outline, outline_vertices
+from gears.profile import ShaperProfile, default_rim, undercut_form_diameter
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 
@@ -98,7 +108,7 @@ class Gear:
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         set_(self, "teeth", self._valid_teeth(self.teeth))
-        set_(self, "module", check_real("module", self.module, 0.0))
+        set_(self, "module", check_module(self.module))
         if not isinstance(self.rack, BasicRack):
             raise GearError(f"rack must be a BasicRack; got {self.rack!r}")
         if self.pressure_angle is None:
@@ -500,7 +510,7 @@ class Gear:
     def mesh(
         self, face_width: float | None = None, tolerance: float = 0.01, method: str = "analytic",
         backlash: float = 0.0, bore: float | None = None, herringbone: bool = False,
-        cutter=None, rim: float | None = None,
+        cutter=None, rim: float | None = None, progress=None,
     ):  # fmt: skip
         """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, mid-plane
         z = 0, the section at z turned by ``2 z tan(beta) / d`` (right hand > 0).
@@ -510,7 +520,10 @@ class Gear:
         ``tolerance`` (mm) drives both the outline and the axial slices
         (:func:`gears.mesh.gear_solid`); ``method``, ``backlash``, ``bore``, ``rim`` (a ring's
         width outside its root circle, default 3 modules) and ``cutter`` are those of
-        :meth:`outline`; ``herringbone`` makes two opposite-hand halves meeting at z = 0.
+        :meth:`outline`; ``herringbone`` makes two opposite-hand halves meeting at z = 0;
+        ``progress`` follows a simulated outline. Every argument is checked and the solid's
+        size estimated before any work: a solid over the mesh budget
+        (:data:`gears.budget.BUDGETS`) is refused with the tolerance that fits.
 
         Examples
         --------
@@ -520,10 +533,45 @@ class Gear:
         """
         b = self.face_width if face_width is None else face_width
         b = check_positive("face_width", 10.0 * self.module if b is None else b)
-        tolerance = check_positive("tolerance", tolerance)
-        shape = self.outline(tolerance, method, backlash, bore=bore, rim=rim, cutter=cutter)
+        tol = check_tolerance(tolerance, module=self.module)
+        method = check_choice("method", method, METHODS)
+        herringbone = check_flag("herringbone", herringbone)
+        check_callback("progress", progress)
+        radius = self.solid_radius(rim)
+        b = check_length("face_width", b, radius, "the gear's outer radius")
         twist = helix_twist(b, self.helix_angle, self.reference_diameter)
-        return gear_solid(shape, b, twist, tolerance, herringbone=herringbone)
+        self.check_solid_budget(tol, twist, method, backlash, bore, rim, cutter, herringbone)
+        shape = self.outline(tol, method, backlash, bore=bore, rim=rim, cutter=cutter,
+                             progress=progress)  # fmt: skip
+        return gear_solid(shape, b, twist, tol, herringbone=herringbone)
+
+    def solid_radius(self, rim: float | None = None) -> float:
+        """The outer radius of this gear's solid, mm: the tip radius, or a ring's root radius
+        plus its rim (before any outline is drawn)."""
+        if self.internal:
+            width = default_rim(self) if rim is None else check_positive("rim", rim)
+            return self.root_diameter / 2 + width
+        return self.tip_diameter / 2
+
+    def solid_vertices(self, tolerance: float, twist: float = 0.0, method: str = "analytic",
+                       backlash: float = 0.0, bore=None, rim=None, cutter=None,
+                       herringbone: bool = False) -> float:  # fmt: skip
+        """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
+        the slices; :func:`gears.outline.outline_vertices`), before any outline is drawn."""
+        n = outline_vertices(self, tolerance, method, backlash, bore, rim, cutter)
+        return n * float(solid_levels(twist, self.solid_radius(rim), tolerance, herringbone))
+
+    def check_solid_budget(
+        self, tolerance, twist=0.0, method="analytic", backlash=0.0, bore=None, rim=None,
+        cutter=None, herringbone=False,
+    ) -> float:  # fmt: skip
+        """:meth:`solid_vertices`, or a GearError over the mesh budget naming the tolerance
+        that fits."""
+        return check_budget(
+            "mesh", f"the solid of z = {self.teeth}, m = {self.module:g}",
+            lambda t: self.solid_vertices(t, twist, method, backlash, bore, rim, cutter,
+                                          herringbone), tolerance,
+        )  # fmt: skip
 
     def with_(self, **changes) -> Gear:
         """A copy with some fields changed (validated again)."""

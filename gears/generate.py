@@ -33,6 +33,8 @@ import math
 import numpy as np
 import shapely
 
+from gears.arguments import check_angle, check_callback, check_point, check_tolerance
+from gears.budget import BUDGETS, check_budget
 from gears.errors import GearError
 from gears.measure import thickness_on
 from gears.profile import (
@@ -41,8 +43,7 @@ from gears.profile import (
     _refuse_protuberance,
     arc_segments,
     assemble,
-    check_size,
-    check_tolerance,
+    check_bore,
     circle_points,
     involute_rolls,
     rim_width,
@@ -91,9 +92,9 @@ def rack_tool_polygon(prof: ToothProfile, tolerance: float) -> np.ndarray:
     return ring
 
 
-def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
-    """Roll angles (rad) of the tool positions: symmetric, including 0, spaced locally so that
-    every scallop stays below ``0.35 tolerance`` (see the module docstring)."""
+def _rack_need(prof: ToothProfile, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
+    """The largest roll step allowed on a grid of roll angles ``0 ... phi_max`` (inf where
+    nothing constrains it): the scallop rules of :func:`rack_positions`."""
     t = prof.tool
     e = 0.35 * tolerance
     rb = prof.rb
@@ -101,10 +102,18 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     tau = np.linspace(0.0, 1.0, 200)
     samples_phi, samples_dphi = [], []
     phi_f, speed = _fillet_speed(prof, tau)
-    speed = np.maximum(speed, 1e-300)
     rho_tool = 0.0 if t.a == 0 else (t.b * t.b / t.a if t.a >= t.b else t.a * t.a / t.b)
+    step = _fillet_step(e, rho_tool) / np.maximum(speed, 1e-300)
+    if t.a > 0:  # where the round is nearly stamped, its centre's travel sets the scallop
+        tt = -math.pi / 2 + tau * (t.t_f + math.pi / 2)
+        u, v, nu, nv = t.round_points(tt)
+        lam = -(v + t.xm) * np.hypot(nu, nv) / np.where(nv != 0, nv, np.inf)  # to I
+        centre = np.abs(lam + rho_tool)  # the curvature centre's travel per radian of roll
+        stamped = speed > _STAMPED**2 * centre
+        relaxed = _fillet_step(e, rho_tool) / np.sqrt(np.maximum(speed * centre, 1e-300))
+        step = np.where(stamped, relaxed / _STAMPED, step)
     samples_phi.append(phi_f)
-    samples_dphi.append(_fillet_step(e, rho_tool) / speed)
+    samples_dphi.append(step)
     v_lo = min(t.v_f, prof.v_limit) if t.s > 0 else t.v_f
     # flank heights up to the tip (the flank maps monotonically to the involute)
     v_hi = t.s * 3.0 * prof.gear.module
@@ -130,10 +139,32 @@ def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
     land = 2.0 * t.u_c / t.r
     if land > 0:
         need = np.where(grid <= 2.0 * land + t.u_c / t.r, np.minimum(need, land), need)
+    return grid, need
+
+
+def rack_positions(prof: ToothProfile, tolerance: float) -> np.ndarray:
+    """Roll angles (rad) of the tool positions: symmetric, including 0, spaced locally so that
+    every scallop stays below ``0.35 tolerance`` (see the module docstring).
+
+    On the tip round the scallop between two positions is ``d_C d_E / (8 rho_t)``: ``d_C`` the
+    travel of the round's curvature centre (``|lambda + rho_t|`` per radian, lambda the
+    distance from the contact point to the pitch point along the normal), ``d_E`` that of the
+    generated point, ``rho_t`` the round's curvature radius. The rule used is the stricter
+    ``d_E^2 / (8 rho_t)``, except where the round is nearly stamped (``d_E > 16 d_C``: its
+    centre rolls on the pitch line, and the whole fillet is cut at almost one position), where
+    ``d_E`` alone would ask for endless positions: there ``d_C d_E`` with a factor 4 of
+    safety.
+    """
+    grid, need = _rack_need(prof, tolerance)
     half, step = _spread(grid, need)
     # one step past the last contact sample so the tip corner is cut completely
-    half = np.append(half, phi_max + step)
+    half = np.append(half, grid[-1] + step)
     return np.concatenate([-half[:0:-1], half])
+
+
+#: How much faster than its round's curvature centre the generated fillet point may run before
+#: the round counts as stamped (see :func:`rack_positions`).
+_STAMPED = 4.0
 
 
 def _fillet_speed(prof, tau):
@@ -154,6 +185,22 @@ def _fillet_step(e: float, rho: float) -> float:
     return max(math.sqrt(8.0 * e * rho), 2.0 * e)
 
 
+def _need_on_grid(grid: np.ndarray, need: np.ndarray) -> np.ndarray:
+    """The requirement between grid points (the smaller neighbour), interpolated over gaps."""
+    finite = np.isfinite(need)
+    need = np.interp(grid, grid[finite], need[finite])
+    return np.minimum(need, np.concatenate([need[1:], need[-1:]]))
+
+
+def _count(grid: np.ndarray, need: np.ndarray) -> float:
+    """About how many angles :func:`_spread` places: the integral of 1 / need, before the
+    positions are placed (for the budget)."""
+    if not np.isfinite(need).any():
+        return 2.0
+    n = _need_on_grid(grid, need)
+    return float(np.sum(np.diff(grid) / n[:-1])) + 2.0
+
+
 def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
     """Angles from 0 to ``grid[-1]`` whose spacing stays below ``need`` (given on ``grid``; inf
     where nothing constrains it) everywhere within each step, and the spacing needed at the end.
@@ -161,12 +208,9 @@ def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
     Greedy: from each angle take the largest step that does not exceed the requirement anywhere
     inside it (a requirement that dips within a step shortens it).
     """
-    finite = np.isfinite(need)
-    if not finite.any():
+    if not np.isfinite(need).any():
         return np.array([0.0, grid[-1]]), float(grid[-1])
-    need = np.interp(grid, grid[finite], need[finite])
-    # the requirement between grid points: the smaller neighbour
-    need = np.minimum(need, np.concatenate([need[1:], need[-1:]]))
+    need = _need_on_grid(grid, need)
     end = float(grid[-1])
     out = [0.0]
     phi = 0.0
@@ -186,9 +230,9 @@ def _spread(grid: np.ndarray, need: np.ndarray) -> tuple[np.ndarray, float]:
     return np.array(out), float(need[-1])
 
 
-#: Largest simulation, in tool vertices placed (positions x tool polygon): about 30 s of
-#: shapely unions on one core. Work grows as 1/tolerance (docs/profiles.md, "Bounded work").
-MAX_PLACED_VERTICES = 20_000_000
+#: Largest simulation, in vertex operations (:func:`simulation_work`): the ``"simulation"``
+#: budget of :data:`gears.budget.BUDGETS` (docs/profiles.md, "Bounded work").
+MAX_PLACED_VERTICES = BUDGETS["simulation"]
 _UNION_CHUNKS = 32
 
 
@@ -205,11 +249,12 @@ def _union_positions(tool, phis, place, progress=None) -> shapely.Polygon:
 
 
 def _space(prof: ToothProfile, tolerance: float, progress=None) -> shapely.Polygon:
-    """Union of all rack-tool positions: one tooth space, centred on +y."""
+    """Union of all rack-tool positions: one tooth space, centred on +y; refused over the
+    simulation budget before any position is placed."""
+    what = f"the rack simulation of z = {prof.z}"
+    check_budget("simulation", what, lambda t: _rack_work(prof, t), tolerance)
     tool = rack_tool_polygon(prof, tolerance)
     phis = rack_positions(prof, tolerance)
-    what = f"the rack simulation of z = {prof.z}"
-    check_size(len(tool) * len(phis), what, tolerance, MAX_PLACED_VERTICES)
     return _union_positions(tool, phis, prof.tool.place, progress)
 
 
@@ -256,7 +301,9 @@ def rack_outline(
     >>> p.is_valid, round(p.area / (math.pi * 10**2), 2)
     (True, 0.98)
     """
-    tol = check_tolerance(tolerance)
+    tol = check_tolerance(tolerance, module=gear.module)
+    angle, center = check_angle("angle", angle), check_point("center", center)
+    check_callback("progress", progress)
     _refuse_protuberance(gear)
     if gear.internal:
         raise GearError(
@@ -264,6 +311,7 @@ def rack_outline(
             "rack-limit outline of a shaper-cut ring)"
         )
     prof = ToothProfile(gear, backlash)
+    check_bore(bore, prof.rf)
     space = _space(prof, tol, progress)
     if space.geom_type != "Polygon":
         raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
@@ -341,6 +389,45 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     is held at ``0.35 tolerance``. Past the last contact the cutter keeps turning until its
     tooth has left the blank, so secondary cutting (trimming of a ring's tips) is reproduced.
     """
+    grid, need = _shaper_need(prof, tolerance)
+    half, step = _spread(grid, need)
+    t = prof.tool
+    tooth = shaper_tool_polygon(prof, tolerance)
+    count = _extra_count(prof, step)
+    extra = grid[-1] + step * np.arange(1, count + 1)
+    out = None
+    for k in range(0, count, 512):  # in chunks: positions x tooth vertices stay small
+        r = np.hypot(*np.moveaxis(t.place(tooth, extra[k : k + 512]), -1, 0))
+        inside = (r.min(axis=1) < prof.ra) if t.s > 0 else (r.max(axis=1) > prof.ra)
+        if not inside.all():
+            out = k + int(np.argmin(inside))
+            break
+    if out is None:
+        raise GearError(
+            f"cutter z0 = {t.z0} for z = {t.z}: the cutter tooth never leaves the blank; use a "
+            "cutter with fewer teeth"
+        )
+    half = np.concatenate([half, extra[: out + 1]])
+    return np.concatenate([-half[:0:-1], half])
+
+
+def _extra_count(prof, step: float) -> int:
+    """Positions of half a relative cutter turn past the last contact (the most the tooth
+    needs to leave the blank), refused when the cutter lingers."""
+    t = prof.tool
+    count = math.ceil(math.pi / t.omega_rel / step)
+    if count > _MAX_EXTRA_POSITIONS:
+        raise GearError(
+            f"cutter z0 = {t.z0} for z = {t.z}: the cutter turns so slowly against the work "
+            f"(relative speed {t.omega_rel:.3g}) that its teeth linger in the blank; use a "
+            "cutter with fewer teeth"
+        )
+    return count
+
+
+def _shaper_need(prof, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
+    """The largest work rotation step allowed on a grid of rotations ``0 ... phi_max`` (the
+    requirements of :func:`shaper_positions`)."""
     t = prof.tool
     g = prof.gear
     m = g.module
@@ -382,44 +469,62 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     root_sag = math.sqrt(8 * e / (1 / t.ra0 + t.s / prof.rf)) / t.a0
     land = min(2 * land_phi, root_sag) if land_phi > 0 else root_sag
     need = np.where(grid <= 2 * land_phi + land, np.minimum(need, land), need)
-    half, step = _spread(grid, need)
-    # keep turning until the tooth leaves the blank (it may trim a ring's tips on its way out);
-    # its next visit, a relative cutter turn later, repeats this one a whole number of pitches on
-    # and is covered by patterning, so half a relative turn is the most that is needed
-    tooth = shaper_tool_polygon(prof, tolerance)
-    span = math.pi / t.omega_rel
-    count = math.ceil(span / step)
-    if count > _MAX_EXTRA_POSITIONS:
-        raise GearError(
-            f"cutter z0 = {t.z0} for z = {t.z}: the cutter turns so slowly against the work "
-            f"(relative speed {t.omega_rel:.3g}) that its teeth linger in the blank; use a "
-            "cutter with fewer teeth"
-        )
-    extra = phi_max + step * np.arange(1, count + 1)
-    r = np.hypot(*np.moveaxis(t.place(tooth, extra), -1, 0))
-    inside = (r.min(axis=1) < prof.ra) if t.s > 0 else (r.max(axis=1) > prof.ra)
-    out = np.flatnonzero(~inside)
-    if not out.size:
-        raise GearError(
-            f"cutter z0 = {t.z0} for z = {t.z}: the cutter tooth never leaves the blank; use a "
-            "cutter with fewer teeth"
-        )
-    half = np.concatenate([half, extra[: int(out[0]) + 1]])
-    return np.concatenate([-half[:0:-1], half])
+    return grid, need
+
+
+#: Vertices of a simulated outline per tool vertex and position, per tooth (measured 1.4 ...
+#: 4.9 for racks, shapers and sharp-cornered shapers at 0.01 ... 1e-4 mm), and the union work
+#: of one outline vertex against one tool vertex placed (5 us against 0.4 us, measured).
+_OUTLINE_PER_POSITION = 5.0
+_OUTLINE_WORK = 10.0
+
+
+def simulation_work(z: int, tool_vertices: float, positions: float) -> float:
+    """Work of a simulated outline in vertex operations: the tool vertices placed plus
+    :data:`_OUTLINE_WORK` per vertex of the patterned outline (about ``5 z (P + T)``), the
+    unit of the ``"simulation"`` budget (:data:`gears.budget.BUDGETS`)."""
+    out = _OUTLINE_PER_POSITION * z * (positions + tool_vertices)
+    return tool_vertices * positions + _OUTLINE_WORK * out
+
+
+def _rack_work(prof, tolerance: float) -> float:
+    grid, need = _rack_need(prof, tolerance)
+    return simulation_work(prof.z, len(rack_tool_polygon(prof, tolerance)),
+                           2 * _count(grid, need) + 3)  # fmt: skip
+
+
+def _shaper_work(prof, tolerance: float) -> float:
+    grid, need = _shaper_need(prof, tolerance)
+    # past the last contact: about as many positions as a step at its end takes to turn the
+    # tooth out of the blank (bounded by half a relative turn)
+    step = float(_need_on_grid(grid, need)[-1]) if np.isfinite(need).any() else grid[-1]
+    extra = min(_extra_count(prof, step), _exit_turn(prof) / step + 1)
+    return simulation_work(prof.z, len(shaper_tool_polygon(prof, tolerance)),
+                           2 * (_count(grid, need) + extra) + 1)  # fmt: skip
+
+
+def _exit_turn(prof) -> float:
+    """Work rotation past the last contact after which the cutter tooth has left the blank,
+    found on a coarse tooth (the exit is a matter of shape, not of tolerance)."""
+    cache = prof.__dict__.setdefault("_exit", {})
+    if "turn" not in cache:
+        t = prof.tool
+        coarse = shaper_tool_polygon(prof, 0.05 * prof.gear.module)
+        grid, _ = _shaper_need(prof, 0.05 * prof.gear.module)
+        turns = np.linspace(0.0, math.pi / t.omega_rel, 2001)[1:]
+        r = np.hypot(*np.moveaxis(t.place(coarse, grid[-1] + turns), -1, 0))
+        inside = (r.min(axis=1) < prof.ra) if t.s > 0 else (r.max(axis=1) > prof.ra)
+        cache["turn"] = float(turns[int(np.argmin(inside))]) if not inside.all() else turns[-1]
+    return cache["turn"]
 
 
 def _shaper_space(prof, tolerance: float, progress=None) -> shapely.Polygon:
-    """Union of all shaper-cutter positions: one tooth space, centred on +y."""
+    """Union of all shaper-cutter positions: one tooth space, centred on +y; refused over the
+    simulation budget before any position is placed."""
     what = f"the shaper simulation of z = {prof.z} (cutter z0 = {prof.tool.z0})"
-    # the position rule itself is costly at fine tolerances: estimate from a coarse run first
-    # (tool vertices and positions each grow as tol^-1/2, so their product as 1/tol)
-    coarse = max(100 * tolerance, 0.002 * prof.gear.module)
-    if tolerance < coarse / 10:
-        n = len(shaper_tool_polygon(prof, coarse)) * len(shaper_positions(prof, coarse))
-        check_size(n * coarse / tolerance, what, tolerance, MAX_PLACED_VERTICES)
+    check_budget("simulation", what, lambda t: _shaper_work(prof, t), tolerance)
     tooth = shaper_tool_polygon(prof, tolerance)
     phis = shaper_positions(prof, tolerance)
-    check_size(len(tooth) * len(phis), what, tolerance, MAX_PLACED_VERTICES)
     return _union_positions(tooth, phis, prof.tool.place, progress)
 
 
@@ -451,9 +556,14 @@ def shaper_outline(
     >>> p.is_valid, len(p.interiors)
     (True, 1)
     """
-    tol = check_tolerance(tolerance)
+    tol = check_tolerance(tolerance, module=gear.module)
+    angle, center = check_angle("angle", angle), check_point("center", center)
+    check_callback("progress", progress)
     _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
+    check_bore(bore, prof.rf)
+    if gear.internal:
+        rim_width(gear, rim)
     t = prof.tool
     m = gear.module
     space = _shaper_space(prof, tol, progress)

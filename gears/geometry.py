@@ -17,15 +17,16 @@ Joldasbekov §9-§11.
 from __future__ import annotations
 
 import math
-import numbers
 
 import numpy as np
 
+from gears.arguments import check_real, check_teeth
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse, pressure_angle_at
 
 __all__ = [
     "base_diameter",
+    "check_real",
     "check_teeth",
     "form_diameter",
     "half_angle_at_reference",
@@ -298,36 +299,6 @@ def pin_contact_diameter(
     cos_bb = np.cos(np.arctan(np.tan(np.radians(helix_angle)) * np.cos(alpha_t)))
     roll = np.tan(phi) - s * dp / (db * cos_bb)
     return _out(np.where(roll >= 0, db * np.sqrt(1.0 + roll * roll), 0.0))
-
-
-def check_real(name: str, value, low=None, high=None, low_open=True, high_open=True) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise GearError(f"{name} must be a real number; got {value!r}")
-    v = float(value)
-    if not math.isfinite(v):
-        raise GearError(f"{name} = {v} is not finite")
-    if low is not None and (v <= low if low_open else v < low):
-        rel = ">" if low_open else ">="
-        raise GearError(f"{name} = {v:g}; valid is {name} {rel} {low:g}" + _range(high))
-    if high is not None and (v >= high if high_open else v > high):
-        rel = "<" if high_open else "<="
-        raise GearError(f"{name} = {v:g}; valid is {name} {rel} {high:g}")
-    return v
-
-
-def _range(high) -> str:
-    return "" if high is None else f" and < {high:g}"
-
-
-def check_teeth(name: str, z) -> int:
-    """Validate a tooth count: an integer >= 1 (int-valued floats are accepted)."""
-    if isinstance(z, bool) or not isinstance(z, numbers.Real):
-        raise GearError(f"{name} must be an integer >= 1; got {z!r}")
-    if not math.isfinite(float(z)) or float(z) != int(z):
-        raise GearError(f"{name} = {z!r} is not a whole number of teeth; valid is an integer >= 1")
-    if int(z) < 1:
-        raise GearError(f"{name} = {int(z)}; valid is an integer >= 1")
-    return int(z)
 
 
 def space_half_angle(gear, backlash: float = 0.0) -> float:

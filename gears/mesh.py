@@ -36,20 +36,25 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import shapely
 
+from gears.arguments import (
+    check_angle,
+    check_flag,
+    check_length,
+    check_tolerance,
+)
+from gears.budget import check_budget
 from gears.errors import GearError
 
 __all__ = [
-    "check_positive",
     "gear_solid",
     "helix_twist",
     "scene",
     "slice_count",
+    "solid_levels",
+    "solid_radius",
     "to_manifold",
     "transform",
 ]
-
-#: Largest vertex count of one solid (a guard against a tolerance far below what is useful).
-MAX_VERTICES = 20_000_000
 
 #: Default colours (RGBA 0-255) of the scene builders, by role.
 COLOURS = {
@@ -71,17 +76,6 @@ def _trimesh():
     return trimesh
 
 
-def check_positive(name: str, value) -> float:
-    """``value`` as a float, or a GearError naming it unless it is finite and > 0 (mm)."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise GearError(f"{name} = {value!r} must be a number > 0 (mm)") from exc
-    if not math.isfinite(v) or v <= 0.0:
-        raise GearError(f"{name} = {value!r} must be a finite number > 0 (mm)")
-    return v
-
-
 def helix_twist(face_width, helix_angle, reference_diameter):
     """Twist of the transverse section over the face width, degrees: ``2 b tan(beta) / d``.
 
@@ -100,6 +94,15 @@ def helix_twist(face_width, helix_angle, reference_diameter):
     return out if out.ndim else out[()]
 
 
+def _slices(twist, radius, tolerance):
+    """:func:`slice_count` as floats (no integer overflow for an absurd twist)."""
+    t = np.radians(np.abs(np.asarray(twist, dtype=float)))
+    r = np.asarray(radius, dtype=float)
+    tol = np.asarray(tolerance, dtype=float)
+    step = 2.0 * np.arccos(np.clip(1.0 - tol / r, -1.0, 1.0))
+    return np.maximum(1.0, np.ceil(t / step - 1e-12))
+
+
 def slice_count(twist, radius, tolerance):
     """Axial slices needed so a vertex at ``radius`` that turns by ``twist`` degrees keeps its
     chord within ``tolerance`` of the true helix: ``r (1 - cos(dtheta / 2)) <= tolerance``.
@@ -111,12 +114,34 @@ def slice_count(twist, radius, tolerance):
     >>> int(slice_count(0.0, 10.0, 0.01)), int(slice_count(180.0, 10.0, 0.01))
     (1, 36)
     """
-    t = np.radians(np.abs(np.asarray(twist, dtype=float)))
-    r = np.asarray(radius, dtype=float)
-    tol = np.asarray(tolerance, dtype=float)
-    step = 2.0 * np.arccos(np.clip(1.0 - tol / r, -1.0, 1.0))
-    out = np.maximum(1, np.ceil(t / step - 1e-12)).astype(int)
+    n = _slices(twist, radius, tolerance)
+    if not np.all(n <= 2.0**53):  # NaN too
+        raise GearError(
+            f"twist = {np.ravel(twist)[0]!r} deg at tolerance = {np.ravel(tolerance)[0]!r} mm "
+            "needs more slices than any solid can hold; use a coarser tolerance or less twist"
+        )
+    out = n.astype(np.int64)
     return out if out.ndim else out[()]
+
+
+def solid_levels(twist: float, radius: float, tolerance: float, herringbone: bool = False):
+    """Vertex levels (slices + 1) of :func:`gear_solid` for a section that turns by ``twist``
+    degrees, held to ``tolerance`` at ``radius``: a float, so the budget can be checked
+    before any count is made (:func:`gears.budget.check_budget`). Vectorised over tolerance.
+
+    >>> float(solid_levels(0.0, 10.0, 0.01)), float(solid_levels(180.0, 10.0, 0.01))
+    (2.0, 37.0)
+    """
+    if herringbone:
+        half = np.where(twist != 0, _slices(np.asarray(twist) / 2.0, radius, tolerance), 1.0)
+        return 2.0 * half + 1.0
+    return np.where(twist != 0, _slices(twist, radius, tolerance), 1.0) + 1.0
+
+
+def solid_radius(outline) -> float:
+    """The largest vertex radius of an outline (about its own axis, the origin), mm."""
+    xy = shapely.get_coordinates(outline)
+    return float(np.max(np.hypot(xy[:, 0], xy[:, 1]))) if len(xy) else 0.0
 
 
 def _rings(outline) -> list[np.ndarray]:
@@ -186,8 +211,10 @@ def gear_solid(
     Raises
     ------
     GearError
-        For a face width or tolerance that is not > 0, a non-finite twist, an invalid outline,
-        or a vertex count above :data:`MAX_VERTICES`.
+        For a face width outside :data:`gears.arguments.LENGTH_RANGE` times the outline's
+        radius, a tolerance that is not a number > 0, a twist that is not a finite number of
+        degrees, an invalid outline, or a solid over the mesh budget
+        (:data:`gears.budget.BUDGETS`; the message names the tolerance that fits).
 
     Examples
     --------
@@ -197,16 +224,21 @@ def gear_solid(
     (True, 8.0, [-1.0, 1.0])
     """
     trimesh = _trimesh()
-    b = check_positive("face_width", face_width)
-    tol = check_positive("tolerance", tolerance)
-    twist = float(twist)
-    if not math.isfinite(twist):
-        raise GearError(f"twist = {twist!r} must be a finite number of degrees")
     rings = _rings(outline)
     pts = np.concatenate(rings)
     n_pts = len(pts)
-    r = float(np.max(np.hypot(pts[:, 0], pts[:, 1]))) if tip_radius is None else tip_radius
-    r = check_positive("tip_radius", r)
+    r_out = float(np.max(np.hypot(pts[:, 0], pts[:, 1])))
+    of = "the outline's radius"
+    b = check_length("face_width", face_width, r_out, of)
+    tol = check_tolerance(tolerance, floor=1e-9 * r_out)
+    twist = check_angle("twist", twist)
+    herringbone = check_flag("herringbone", herringbone)
+    r = r_out if tip_radius is None else check_length("tip_radius", tip_radius, r_out, of)
+    check_budget(
+        "mesh", f"a solid of {n_pts} outline vertices twisted by {twist:.6g} deg",
+        lambda t: n_pts * float(solid_levels(twist, r, t, herringbone)), tol,
+        hint="a coarser outline",
+    )  # fmt: skip
     rate = math.radians(twist) / b  # radians per mm
     if herringbone:
         half = int(slice_count(twist / 2.0, r, tol)) if twist else 1
@@ -217,11 +249,6 @@ def gear_solid(
         z = np.linspace(-b / 2.0, b / 2.0, n + 1)
         theta = rate * z
     levels = len(z)
-    if levels * n_pts > MAX_VERTICES:
-        raise GearError(
-            f"{levels} slices x {n_pts} outline vertices exceed {MAX_VERTICES} vertices; "
-            f"use a coarser tolerance (now {tol:g} mm)"
-        )
     c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
     verts = np.empty((levels, n_pts, 3))
     verts[:, :, 0] = c * pts[:, 0] - s * pts[:, 1]

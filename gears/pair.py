@@ -12,8 +12,21 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+import shapely
 
-from gears.animate import check_frames, write_animation
+from gears.animate import FORMATS, write_animation
+from gears.arguments import (
+    check_angle,
+    check_callback,
+    check_choice,
+    check_flag,
+    check_fps,
+    check_frames,
+    check_length,
+    check_positive,
+    check_tolerance,
+)
+from gears.budget import check_budget
 from gears.capacity import Rating, rate_pair
 from gears.checks import (
     equal_sliding_split,
@@ -23,10 +36,11 @@ from gears.checks import (
     tip_interference,
 )
 from gears.errors import GearError
+from gears.files import check_output
 from gears.gear import Gear
 from gears.geometry import check_real
 from gears.involute import inv
-from gears.mesh import COLOURS, check_positive, gear_solid, helix_twist, scene, transform
+from gears.mesh import COLOURS, gear_solid, helix_twist, scene, solid_levels, transform
 from gears.meshing import (
     PairGeometry,
     center_distance_shift_sum,
@@ -36,7 +50,7 @@ from gears.meshing import (
     pair_geometry,
     specific_sliding,
 )
-from gears.outline import pair_outlines, pair_placement
+from gears.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.report import Finding, Report
 
 __all__ = ["GearPair", "PathOfContact", "Rack"]
@@ -605,11 +619,12 @@ class GearPair:
         simulation of both)."""
         return pair_outlines(self, angle, tolerance, method, backlash, cutter, progress)
 
-    def _unplaced(self, tolerance: float, method: str, backlash: float, cutter) -> tuple:
+    def _unplaced(self, tolerance: float, method: str, backlash: float, cutter,
+                  progress=None) -> tuple:  # fmt: skip
         """Both outlines centred on their own axes, unturned (from :meth:`outlines` at 0)."""
         from shapely import affinity
 
-        p1, p2 = self.outlines(0.0, tolerance, method, backlash, cutter)
+        p1, p2 = self.outlines(0.0, tolerance, method, backlash, cutter, progress)
         angle2, (x2, y2) = self._placement(0.0)
         p2 = affinity.rotate(affinity.translate(p2, -x2, -y2), -angle2, origin=(0.0, 0.0))
         return p1, p2
@@ -620,9 +635,29 @@ class GearPair:
         g1, g2 = self.mounted
         return pair_placement(g1.teeth, g2.teeth, self.center_distance, self.internal, angle)
 
+    def _drawn(self, method: str, cutter) -> list[tuple]:
+        """``(gear, method, cutter)`` of both mounted gears as :meth:`outlines` draws them (a
+        rack cannot cut a ring: its default shaper does)."""
+        c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
+        g1, g2 = self.mounted
+        m2 = "shaper" if (g2.internal and method == "rack") else method
+        return [(g1, method, c1), (g2, m2, c2)]
+
+    def _check_drawing(self, tolerance, method, backlash, cutter, progress) -> tuple:
+        """The arguments every drawing of the pair shares, checked before any work."""
+        if self.is_rack:
+            raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
+        tol = check_tolerance(tolerance, module=self.g1.module)
+        method = check_choice("method", method, METHODS)
+        check_callback("progress", progress)
+        if isinstance(cutter, tuple | list) and len(cutter) != 2:
+            raise GearError(f"cutter = {cutter!r}; valid is one ShaperCutter or a pair of them")
+        return tol, method
+
     def scene(
         self, angle: float = 0.0, face_width: float | None = None, tolerance: float = 0.01,
         method: str = "analytic", backlash: float = 0.0, herringbone: bool = False, cutter=None,
+        progress=None,
     ):  # fmt: skip
         """Both gears as a ``trimesh.Scene`` in mesh (nodes ``gear1``, ``gear2``, coloured).
 
@@ -630,7 +665,10 @@ class GearPair:
         distance turned as :meth:`outlines` turns it (:func:`gears.outline.pair_placement`);
         each solid is :meth:`Gear.mesh` of the mounted gear, so a helical pair's hands
         (opposite for external, the same for internal) carry into the twist. ``face_width``
-        defaults to each gear's own, else 10 modules.
+        defaults to each gear's own, else 10 modules; ``progress(done, total)`` follows a
+        simulated outline. Every argument is checked and the scene's size (both solids)
+        estimated before any work: over the mesh budget it is refused with the tolerance that
+        fits (:data:`gears.budget.BUDGETS`).
 
         Examples
         --------
@@ -638,16 +676,34 @@ class GearPair:
         >>> sorted(p.scene(tolerance=0.05).graph.nodes_geometry)
         ['gear1', 'gear2']
         """
-
-        tolerance = check_positive("tolerance", tolerance)
-        angle2, centre2 = self._placement(angle)
-        parts = []
-        outlines = self._unplaced(tolerance, method, backlash, cutter)
-        for i, (gear, shape) in enumerate(zip(self.mounted, outlines, strict=True)):
+        angle = check_angle("angle", angle)
+        tol, method = self._check_drawing(tolerance, method, backlash, cutter, progress)
+        herringbone = check_flag("herringbone", herringbone)
+        if face_width is not None:
+            check_positive("face_width", face_width)
+        drawn = self._drawn(method, cutter)
+        widths, twists = [], []
+        for gear, _, _ in drawn:
             b = face_width if face_width is not None else gear.face_width
-            b = check_positive("face_width", b if b is not None else 10.0 * gear.module)
-            twist = helix_twist(b, gear.helix_angle, gear.reference_diameter)
-            solid = gear_solid(shape, b, twist, tolerance, herringbone=herringbone)
+            b = b if b is not None else 10.0 * gear.module
+            widths.append(check_length("face_width", b, gear.solid_radius(), "the gear's radius"))
+            twists.append(helix_twist(widths[-1], gear.helix_angle, gear.reference_diameter))
+        check_budget(
+            "mesh", f"the scene of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
+            lambda t: sum(g.solid_vertices(t, w, m, backlash, None, None, c, herringbone)
+                          for (g, m, c), w in zip(drawn, twists, strict=True)), tol,
+        )  # fmt: skip
+        angle2, centre2 = self._placement(angle)
+        outlines = self._unplaced(tol, method, backlash, cutter, progress)
+        radii = [g.solid_radius() for g, _, _ in drawn]
+        check_budget(  # the outlines as drawn (a simulation's may exceed the estimate)
+            "mesh", f"the scene of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
+            lambda t: sum(shapely.get_num_coordinates(o) * solid_levels(w, r, t, herringbone)
+                          for o, w, r in zip(outlines, twists, radii, strict=True)), tol,
+        )  # fmt: skip
+        parts = []
+        for i, (shape, b, twist) in enumerate(zip(outlines, widths, twists, strict=True)):
+            solid = gear_solid(shape, b, twist, tol, herringbone=herringbone)
             place = transform(angle) if i == 0 else transform(angle2, centre2)
             parts.append((f"gear{i + 1}", solid, place, COLOURS[f"gear{i + 1}"]))
         return scene(parts)
@@ -660,12 +716,28 @@ class GearPair:
         """Write a GIF (or MP4 with ffmpeg) of both outlines in mesh while gear 1 turns by
         ``turn`` degrees (default one mesh cycle, ``360 / z1``), gear 2 placed as
         :meth:`outlines` places it; ``progress(i, n)`` after each frame
-        (:func:`gears.animate.write_animation`)."""
+        (:func:`gears.animate.write_animation`). Every argument (the file's folder too) is
+        checked and the drawing's size (frames times outline vertices) estimated before any
+        work: over the animation budget it is refused with the tolerance that fits."""
         from shapely import affinity
 
+        path = check_output(path, FORMATS)
         n = check_frames(frames)
-        turn = 360.0 / self.g1.teeth if turn is None else float(turn)
-        p1, p2 = self._unplaced(tolerance, method, backlash, cutter)
+        check_fps(fps)
+        turn = 360.0 / self.g1.teeth if turn is None else check_angle("turn", turn)
+        tol, method = self._check_drawing(tolerance, method, backlash, cutter, progress)
+        drawn = self._drawn(method, cutter)
+        check_budget(
+            "animation", f"{n} frames of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
+            lambda t: n * sum(outline_vertices(g, t, m, backlash, None, None, c)
+                              for g, m, c in drawn), tol, hint="fewer frames",
+        )  # fmt: skip
+        p1, p2 = self._unplaced(tol, method, backlash, cutter)
+        check_budget(
+            "animation", f"{n} frames of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
+            lambda t: n * sum(shapely.get_num_coordinates(o) for o in (p1, p2)), tol,
+            hint="fewer frames",
+        )  # fmt: skip
         c1, c2 = (np.asarray(COLOURS[k]) / 255.0 for k in ("gear1", "gear2"))
 
         def frame(i: int) -> list:

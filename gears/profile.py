@@ -50,6 +50,15 @@ from functools import cached_property
 import numpy as np
 import shapely
 
+from gears.arguments import (
+    MIN_TOLERANCE,
+    check_angle,
+    check_length,
+    check_point,
+    check_real,
+    check_tolerance,
+)
+from gears.budget import BUDGETS, check_budget
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import space_half_angle
@@ -63,9 +72,10 @@ __all__ = [
     "ToothProfile",
     "assemble",
     "check_backlash",
-    "check_size",
     "check_tolerance",
     "outline",
+    "outline_vertices",
+    "profile_of",
     "tooth_profile",
     "undercut_form_diameter",
 ]
@@ -83,6 +93,22 @@ def _refuse_protuberance(gear) -> None:
         )
 
 
+def _root(f, lo: float, hi: float, failure: str) -> float:
+    """The root of ``f`` in ``[lo, hi]`` (Brent's method to machine precision), or a
+    :class:`GearError` saying ``failure`` when the interval does not bracket one (a sampled
+    crossing that rounding moved): every root of the envelope is found through here."""
+    from scipy.optimize import brentq  # heavy: imported where used
+
+    a, b = float(f(lo)), float(f(hi))
+    if a == 0.0:
+        return lo
+    if b == 0.0:
+        return hi
+    if not (math.isfinite(a) and math.isfinite(b)) or (a > 0) == (b > 0) or not lo < hi:
+        raise GearError(failure)
+    return float(brentq(f, lo, hi, xtol=1e-15, rtol=1e-15))
+
+
 def involute_rolls(rb: float, t0: float, t1: float, sag: float) -> np.ndarray:
     """Roll angles from t0 to t1 on an involute of base radius ``rb`` whose chords sag at most
     ``sag``: the sag of a roll step dt is r_b t dt^2 / 8 (rho = r_b t), so the points are uniform
@@ -94,42 +120,21 @@ def involute_rolls(rb: float, t0: float, t1: float, sag: float) -> np.ndarray:
 
 
 def rim_width(gear, rim: float | None) -> float:
-    """Rim width of an internal gear outside its root circle, mm (default 3 m_n), checked."""
-    width = default_rim(gear) if rim is None else float(rim)
-    if not (math.isfinite(width) and width > 0):
-        raise GearError(f"rim = {rim!r} mm; valid is a finite width > 0")
-    return width
+    """Rim width of an internal gear outside its root circle, mm (default 3 m_n), checked
+    (:func:`gears.arguments.check_length`, relative to the module)."""
+    return default_rim(gear) if rim is None else check_length("rim", rim, gear.module)
 
 
-#: The finest tolerance honoured, mm. Double precision would allow less, but shapely's
-#: robustness on polygons of 10^6 vertices and the work of the simulations set the floor; a
-#: micrometre grinder needs 1e-4 mm (docs/profiles.md, "Bounded work").
-MIN_TOLERANCE = 1e-6
-#: Largest outline, in vertices (about 160 MB of coordinates with shapely's copy).
-MAX_OUTLINE_VERTICES = 10_000_000
-
-
-def check_tolerance(tolerance, name: str = "tolerance") -> float:
-    """``tolerance`` as a float in mm, or a :class:`GearError` naming the valid range
-    (``MIN_TOLERANCE <= tolerance``, finite)."""
-    if isinstance(tolerance, bool) or not isinstance(tolerance, int | float | np.floating):
-        raise GearError(f"{name} = {tolerance!r}; valid is a number of mm >= {MIN_TOLERANCE:g}")
-    t = float(tolerance)
-    if not (math.isfinite(t) and t >= MIN_TOLERANCE):
-        raise GearError(
-            f"{name} = {tolerance!r} mm; valid is a finite tolerance >= {MIN_TOLERANCE:g} mm "
-            "(the finest this library honours; 1e-4 mm already exceeds any grinder)"
-        )
-    return t
+#: Largest outline, in vertices (about 160 MB of coordinates with shapely's copy): the
+#: ``"outline"`` budget of :data:`gears.budget.BUDGETS`.
+MAX_OUTLINE_VERTICES = BUDGETS["outline"]
 
 
 def check_backlash(gear, backlash) -> float:
     """``backlash`` (the pair's normal backlash, mm) as a float, or a :class:`GearError` naming
     the valid range: 0 <= j < 2 s_t cos(alpha_t), beyond which this gear's half (each flank
     thinned by j/4 along its normal) leaves no tooth on the reference circle."""
-    if isinstance(backlash, bool) or not isinstance(backlash, int | float | np.floating):
-        raise GearError(f"backlash = {backlash!r}; valid is a number of mm >= 0")
-    j = float(backlash)
+    j = check_real("backlash", backlash)
     at = math.radians(gear.transverse_pressure_angle)
     most = 2 * gear.reference_thickness * math.cos(at)
     if not 0.0 <= j < most:  # NaN fails too
@@ -138,20 +143,6 @@ def check_backlash(gear, backlash) -> float:
             f"backlash z = {gear.teeth} keeps no tooth on its reference circle)"
         )
     return j
-
-
-def check_size(vertices: float, what: str, tolerance: float, budget: float) -> None:
-    """Refuse work whose estimated ``vertices`` exceed ``budget`` before it is allocated, naming
-    the estimate and the coarsest tolerance that fits (work grows as 1/tolerance)."""
-    if vertices > budget:
-        fits = tolerance * vertices / budget
-        fits = math.ceil(fits / 10 ** (math.floor(math.log10(fits)) - 1)) * 10 ** (
-            math.floor(math.log10(fits)) - 1
-        )  # rounded up to two digits, so the suggestion itself fits
-        raise GearError(
-            f"{what} at tolerance = {tolerance:g} mm would take about {vertices:.3g} vertices, "
-            f"over the budget of {budget:.3g}; use tolerance >= {fits:.2g} mm"
-        )
 
 
 def arc_segments(radius: float, angle: float, tolerance: float) -> int:
@@ -239,8 +230,6 @@ class ToothProfile:
     @cached_property
     def tau_form(self) -> float:
         """Fillet parameter where the flank (involute) takes over."""
-        from scipy.optimize import brentq  # heavy: imported where used
-
         if not self.undercut:
             return self._tau_tangent()
         tau = np.linspace(0.0, 2.0, 801)[:-1]
@@ -251,11 +240,12 @@ class ToothProfile:
         # fillet meets the involute right at the base circle, and the root is that jump.
         g = np.where(above, eta - self.eta_involute(np.maximum(rho, self.rb)), 1.0)
         idx = np.flatnonzero((g[:-1] > 0) & (g[1:] <= 0))
+        cut_away = (
+            f"z = {self.z}, x = {self.gear.profile_shift:g}: the undercut fillet does not "
+            "meet the involute (the tooth is cut away); use a larger profile shift"
+        )
         if idx.size == 0:
-            raise GearError(
-                f"z = {self.z}, x = {self.gear.profile_shift:g}: the undercut fillet does not "
-                "meet the involute (the tooth is cut away); use a larger profile shift"
-            )
+            raise GearError(cut_away)
         i = int(idx[0])
 
         def f(x):
@@ -264,7 +254,7 @@ class ToothProfile:
                 return 1.0
             return float(e_ - self.eta_involute(float(r_)))
 
-        return float(brentq(f, tau[i], tau[i + 1], xtol=1e-15, rtol=1e-15))
+        return _root(f, tau[i], tau[i + 1], cut_away)
 
     def _land_angle(self) -> float:
         """Angle from the space centre where the root arc (the tool tip's image) ends."""
@@ -284,8 +274,6 @@ class ToothProfile:
         it first reaches the form radius, and the fold (inside the space by less than 1e-4 of the
         module) is dropped.
         """
-        from scipy.optimize import brentq  # heavy: imported where used
-
         tau = np.linspace(0.0, 1.0, 801)
         rho = self.fillet(tau)[0] * self.tool.s
         r_form = self._tangent_radius * self.tool.s
@@ -300,7 +288,11 @@ class ToothProfile:
         def f(x):
             return float(self.fillet(x)[0]) * self.tool.s - r_form
 
-        return float(brentq(f, tau[first], tau[first + 1], xtol=1e-15, rtol=1e-15))
+        return _root(
+            f, tau[first], tau[first + 1],
+            f"z = {self.z}, x = {self.gear.profile_shift:g}: the tool round's envelope folds "
+            "where it should meet the involute; use method='shaper'",
+        )  # fmt: skip
 
     @cached_property
     def ring_fold(self) -> tuple[float, float] | None:
@@ -313,8 +305,6 @@ class ToothProfile:
         along that branch to where it crosses the involute (``tau_x``), then up the involute.
         Returns ``(tau_r, tau_x)`` or None when the fillet stays inside the root circle.
         """
-        from scipy.optimize import brentq  # heavy: imported where used
-
         if self.tool.s > 0 or self._tangent_radius <= self.rf * (1 + 1e-12):
             return None
         tau = np.linspace(0.0, 1.0, 801)
@@ -326,21 +316,24 @@ class ToothProfile:
         def fr(x):
             return float(self.fillet(x)[0]) - self.rf
 
-        tau_r = float(brentq(fr, tau[j - 1], tau[j], xtol=1e-15, rtol=1e-15))
+        no_fold = (
+            f"internal z = {self.z}, x = {self.gear.profile_shift:g}: the rack-limit fillet "
+            "does not meet the involute; use method='shaper'"
+        )
+        if j < 1:  # the whole fillet lies beyond the root circle
+            raise GearError(no_fold)
+        tau_r = _root(fr, tau[j - 1], tau[j], no_fold)
         g = eta[: i_min + 1] - self.eta_involute(rho[: i_min + 1])
         cross = np.flatnonzero((g[:-1] < 0) & (g[1:] >= 0))
         if not cross.size:
-            raise GearError(
-                f"internal z = {self.z}, x = {self.gear.profile_shift:g}: the rack-limit fillet "
-                "does not meet the involute; use method='shaper'"
-            )
+            raise GearError(no_fold)
         k = int(cross[-1])
 
         def fx(x):
             r_, e_, _ = self.fillet(x)
             return float(e_ - self.eta_involute(r_))
 
-        tau_x = float(brentq(fx, tau[k], tau[k + 1], xtol=1e-15, rtol=1e-15))
+        tau_x = _root(fx, tau[k], tau[k + 1], no_fold)
         return tau_r, tau_x
 
     @cached_property
@@ -355,17 +348,14 @@ class ToothProfile:
     @cached_property
     def tip_radius(self) -> float:
         """Radius where the flank ends: the tip circle, or where the flanks meet (pointed)."""
-        from scipy.optimize import brentq  # heavy: imported where used
-
         half = math.pi / self.z
         if self.tool.s * (half - self.eta_involute(self.ra)) >= 0 or self.tool.s < 0:
             return self.ra
         # external, pointed: eta_involute(r) = pi/z between the form and tip circles
-        return float(
-            brentq(
-                lambda r: float(self.eta_involute(r)) - half, self.form_radius, self.ra,
-                xtol=1e-14, rtol=1e-15,
-            )
+        return _root(
+            lambda r: float(self.eta_involute(r)) - half, self.form_radius, self.ra,
+            f"z = {self.z}, x = {self.gear.profile_shift:g}: the tooth is pointed below its "
+            "form circle (no flank left); use a smaller profile shift",
         )  # fmt: skip
 
     def _validate(self) -> None:
@@ -448,7 +438,7 @@ class ToothProfile:
         kind : ndarray of int
             Curve each point starts: 0 root arc, 1 fillet, 2 involute, 3 tip arc.
         """
-        tol = check_tolerance(tolerance)
+        tol = check_tolerance(tolerance, module=self.gear.module)
         rhos, etas, kinds = [], [], []
         # root arc, from the space centre to the end of the tip land's image
         eta_land = self._land_angle()
@@ -493,20 +483,29 @@ class ToothProfile:
     def tooth_points(self, tolerance: float = 0.001) -> np.ndarray:
         """One tooth, centred on the +x axis, from the space centre at -pi/z to the space centre
         at +pi/z, counter-clockwise (for an internal gear the 'tooth' is the ring's)."""
+        cache = self.__dict__.setdefault("_teeth", {})
+        if tolerance in cache:
+            return cache[tolerance]
         rho, eta, _ = self.half_space(tolerance)
         half = math.pi / self.z
         theta = half - eta  # angle from the tooth centre line, on the counter-clockwise flank
         # counter-clockwise flank runs tip -> root when walking counter-clockwise
         ccw = np.stack([rho * np.cos(theta), rho * np.sin(theta)], axis=-1)[::-1]
         cw = ccw[::-1] * np.array([1.0, -1.0])
-        return np.concatenate([cw[:-1], ccw])
+        cache[tolerance] = out = np.concatenate([cw[:-1], ccw])
+        return out
+
+    def vertices(self, tolerance: float = 0.001) -> float:
+        """Vertices of the whole toothed boundary at ``tolerance``: one tooth's samples times z
+        (the estimate :func:`gears.budget.check_budget` holds an outline to)."""
+        return float((len(self.tooth_points(tolerance)) - 1) * self.z)
 
     def ring(self, tolerance: float = 0.001, angle: float = 0.0) -> np.ndarray:
         """The whole toothed boundary (closed ring without the repeated point), counter-clockwise,
-        with tooth 0 centred at ``angle`` radians."""
-        tooth = self.tooth_points(tolerance)[:-1]
-        size = len(tooth) * self.z
-        check_size(size, f"the outline of z = {self.z}", tolerance, MAX_OUTLINE_VERTICES)
+        with tooth 0 centred at ``angle`` radians; refused over the outline budget."""
+        tol = check_tolerance(tolerance, module=self.gear.module)
+        check_budget("outline", f"the outline of z = {self.z}", self.vertices, tol)
+        tooth = self.tooth_points(tol)[:-1]
         step = 2 * math.pi / self.z
         angles = angle + step * np.arange(self.z)
         c, s = np.cos(angles)[:, None], np.sin(angles)[:, None]
@@ -547,9 +546,14 @@ def undercut_form_diameter(gear) -> float:
     return 2.0 * ToothProfile(gear).form_radius
 
 
+def circle_segments(radius: float, tolerance: float) -> int:
+    """Vertices of :func:`circle_points`."""
+    return max(8, arc_segments(radius, 2 * math.pi, tolerance))
+
+
 def circle_points(radius: float, tolerance: float, ccw: bool = True) -> np.ndarray:
     """A full circle sampled so that its sagitta stays below ``tolerance``."""
-    n = max(8, arc_segments(radius, 2 * math.pi, tolerance))
+    n = circle_segments(radius, tolerance)
     a = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
     if not ccw:
         a = -a
@@ -600,16 +604,51 @@ def outline(
     >>> p.is_valid, round(p.area / (math.pi * 10**2), 2)   # teeth and spaces nearly balance
     (True, 0.98)
     """
-    tol = check_tolerance(tolerance)
+    tol = check_tolerance(tolerance, module=gear.module)
+    angle = check_angle("angle", angle)
+    center = check_point("center", center)
     _refuse_protuberance(gear)
+    prof = profile_of(gear, cutter, backlash)
+    check_bore(bore, prof.rf)
+    rim_width(gear, rim)
+    pts = prof.ring(tol, math.radians(angle))
+    return assemble(gear, pts, tol, bore, rim, center, prof.rf)
+
+
+def profile_of(gear, cutter=None, backlash: float = 0.0) -> ToothProfile:
+    """The exact profile of ``gear``: its shaper ``cutter`` (or the gear's own) when there is
+    one, else its rack tool (:class:`ShaperProfile` or :class:`ToothProfile`)."""
     if cutter is None:
         cutter = getattr(gear, "cutter", None)
     if cutter is None:
-        prof = ToothProfile(gear, backlash)
-    else:
-        prof = ShaperProfile(gear, cutter, backlash)
-    pts = prof.ring(tol, math.radians(angle))
-    return assemble(gear, pts, tol, bore, rim, center, prof.rf)
+        return ToothProfile(gear, backlash)
+    return ShaperProfile(gear, cutter, backlash)
+
+
+def check_bore(bore, root_radius: float) -> float | None:
+    """``bore`` (a diameter, mm) as a float within 0 < bore < the root diameter, or None."""
+    if bore is None:
+        return None
+    bd = check_real("bore", bore, 0.0)
+    if not 1e-6 * root_radius <= bd < 2 * root_radius:
+        raise GearError(
+            f"bore = {bore!r} mm; valid is {2e-6 * root_radius:.3g} <= bore < root diameter "
+            f"{2 * root_radius:.6g} mm"
+        )
+    return bd
+
+
+def outline_vertices(gear, tolerance: float, backlash: float = 0.0, bore: float | None = None,
+                     rim: float | None = None, cutter=None) -> float:  # fmt: skip
+    """Vertices of :func:`outline` at ``tolerance`` (one tooth sampled, times z, plus the rim
+    or bore circle), without drawing it: the estimate budgets are checked on."""
+    prof = profile_of(gear, cutter, backlash)
+    n = prof.vertices(tolerance)
+    if gear.internal:
+        n += circle_segments(prof.rf + rim_width(gear, rim), tolerance)
+    elif bore is not None:
+        n += circle_segments(check_bore(bore, prof.rf) / 2, tolerance)
+    return n
 
 
 def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
@@ -621,12 +660,8 @@ def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
         poly = shapely.Polygon(outer, holes=[pts[::-1]])
     else:
         holes = []
-        if bore is not None:
-            bd = float(bore)
-            if not (math.isfinite(bd) and 0 < bd < 2 * root_radius):
-                raise GearError(
-                    f"bore = {bore!r} mm; valid is 0 < bore < root diameter {2 * root_radius:.6g}"
-                )
+        bd = check_bore(bore, root_radius)
+        if bd is not None:
             holes.append(circle_points(bd / 2, tol, ccw=False) + np.array([cx, cy]))
         poly = shapely.Polygon(pts, holes=holes)
     if not poly.is_valid:

@@ -21,7 +21,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 LAYERS = {
     "gears": [
         ["errors"],
-        ["involute", "report", "files", "materials"],
+        ["involute", "report", "files", "materials", "arguments", "budget"],
         ["geometry", "meshing"],
         ["rack", "cutter", "bevel"],
         ["profile", "measure", "checks", "rating", "spherical"],

@@ -49,9 +49,22 @@ from typing import Any
 import numpy as np
 
 from gears import Gear, GearPair
-from gears.animate import check_frames, write_animation
+from gears.animate import FORMATS, write_animation
+from gears.arguments import (
+    check_angle,
+    check_callback,
+    check_flag,
+    check_fps,
+    check_frames,
+    check_length,
+    check_positive,
+    check_tolerance,
+)
+from gears.budget import check_budget
 from gears.errors import GearError
+from gears.files import check_output
 from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
+from gears.outline import outline_vertices
 from gears.report import Finding, Report
 from trains.capacity import rating as rate_train
 from trains.conditions import assembly_number
@@ -1165,9 +1178,10 @@ class Planetary:
         fixed = self._member(fixed)
         if fixed not in ("sun", "ring", "carrier"):
             raise TrainError(f"fixed = {fixed!r}; valid are 'sun', 'ring', 'carrier'")
-        a = float(angle)
-        if not math.isfinite(a):
-            raise TrainError(f"angle = {angle!r}; valid is a finite number of degrees")
+        try:
+            a = check_angle("angle", angle)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
         drive = "sun" if fixed == "carrier" else "carrier"
         motion = self.train.solve({name[drive]: 1, name[fixed]: 0})
@@ -1203,10 +1217,19 @@ class Planetary:
         out = []
         for name, key, gear, centre, rot, _ in self._layout(angle, fixed):
             if key not in cache:
-                cache[key] = gear.outline(tolerance)
+                try:
+                    cache[key] = gear.outline(tolerance)
+                except GearError as exc:
+                    raise TrainError(f"{key}: {exc}") from None
             shape = affinity.rotate(cache[key], rot, origin=(0.0, 0.0))
             out.append((name, key, affinity.translate(shape, *centre)))
         return out
+
+    def _tolerance(self, tolerance) -> float:
+        try:
+            return check_tolerance(tolerance, module=self.module)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
 
     def outlines(self, angle: float = 0.0, tolerance: float = 0.01, fixed: str = "ring") -> dict:
         """Every gear's 2D outline placed in mesh with the carrier turned by ``angle`` degrees
@@ -1220,10 +1243,12 @@ class Planetary:
         >>> sorted(o), o["ring"].intersection(o["planet1"]).area < 0.01   # mm^2: chords only
         (['planet1', 'planet2', 'planet3', 'ring', 'sun'], True)
         """
+        tolerance = self._tolerance(tolerance)
         return {name: p for name, _, p in self._placed(angle, tolerance, fixed, {})}
 
     def scene(self, angle: float = 0.0, face_width: float | None = None,
-              tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False):  # fmt: skip
+              tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False,
+              progress=None):  # fmt: skip
         """The stage as a ``trimesh.Scene`` with real teeth, every mesh engaged.
 
         Sun, ring and every planet sit at the real centre distances, turned to their phase from
@@ -1232,7 +1257,10 @@ class Planetary:
         animates the stage. Identical planets share one geometry (instanced by node
         transforms), so a GLB holds one planet mesh. The ring side of a stepped planet stands
         on the sun side (mid-planes at -b/2 and +b/2). ``face_width`` defaults to the gears'
-        own or 10 modules; ``tolerance`` (mm) applies to each gear (:func:`gears.mesh.gear_solid`).
+        own or 10 modules; ``tolerance`` (mm) applies to each gear (:func:`gears.mesh.gear_solid`);
+        ``progress(done, total)`` is called after each distinct solid. Every argument is
+        checked and the scene's size (its distinct solids) estimated before any work: over the
+        mesh budget it is refused with the tolerance that fits (:data:`gears.budget.BUDGETS`).
 
         Examples
         --------
@@ -1240,21 +1268,42 @@ class Planetary:
         >>> len(s.geometry), len(s.graph.nodes_geometry)
         (3, 5)
         """
-
-        b = face_width
-        if b is None:
-            b = self.sun.face_width or 10.0 * self.module
+        try:
+            tol = check_tolerance(tolerance, module=self.module)
+            herringbone = check_flag("herringbone", herringbone)
+            check_callback("progress", progress)
+            b = face_width
+            if b is None:
+                b = self.sun.face_width or 10.0 * self.module
+            b = check_positive("face_width", b)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
+        layout = self._layout(angle, fixed)
+        distinct = {key: gear for _, key, gear, *_ in reversed(layout)}
+        twists = {}
+        try:
+            for key, gear in distinct.items():
+                check_length("face_width", b, gear.solid_radius(), f"the {key}'s radius")
+                twists[key] = helix_twist(b, gear.helix_angle, gear.reference_diameter)
+            check_budget(
+                "mesh", f"the scene of {self!r}",
+                lambda t: sum(g.solid_vertices(t, twists[k], herringbone=herringbone)
+                              for k, g in distinct.items()), tol,
+            )  # fmt: skip
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
         solids = {}
         parts = []
-        for name, key, gear, centre, rot, z in self._layout(angle, fixed):
+        for name, key, gear, centre, rot, z in layout:
             if key not in solids:
                 try:
-                    twist = helix_twist(b, gear.helix_angle, gear.reference_diameter)
-                    solids[key] = gear_solid(gear.outline(tolerance), b, twist, tolerance,
+                    solids[key] = gear_solid(gear.outline(tol), b, twists[key], tol,
                                              herringbone=herringbone)  # fmt: skip
                 except GearError as exc:
                     raise TrainError(f"{key}: {exc}") from None
                 solids[key].metadata["name"] = key
+                if progress is not None:
+                    progress(len(solids), len(distinct))
             colour = COLOURS.get(key.rstrip("'"), COLOURS["planet"])
             parts.append((name, solids[key], transform(rot, centre, z * b), colour))
         return scene(parts)
@@ -1267,20 +1316,37 @@ class Planetary:
         ``fixed``); default one mesh cycle, ``360 / (z_sun |w_sun - w_carrier|)`` per unit
         carrier speed, after which the picture repeats. Phasing from :meth:`placement`,
         speeds from the Willis solver; frames are written by
-        :func:`gears.animate.write_animation` (``progress(i, n)`` after each frame).
+        :func:`gears.animate.write_animation` (``progress(i, n)`` after each frame). Every
+        argument (the file's folder too) is checked and the drawing's size (frames times the
+        outline vertices of every gear drawn) estimated before any work: over the animation
+        budget it is refused with the tolerance that fits.
         """
-
         try:
+            path = check_output(path, FORMATS)
             n = check_frames(frames)
+            check_fps(fps)
+            tol = check_tolerance(tolerance, module=self.module)
+            check_callback("progress", progress)
+            if turn is not None:
+                turn = check_angle("turn", turn)
         except GearError as exc:
             raise TrainError(str(exc)) from None
         if turn is None:
             turn = self.mesh_cycle(fixed)
-        step = float(turn) / n
+        layout = self._layout(0.0, fixed)
+        try:
+            check_budget(
+                "animation", f"{n} frames of {self!r}",
+                lambda t: n * sum(outline_vertices(g, t) for _, _, g, *_ in layout), tol,
+                hint="fewer frames",
+            )  # fmt: skip
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
+        step = turn / n
         cache: dict = {}
 
         def frame(i: int) -> list:
-            placed = self._placed(i * step, tolerance, fixed, cache)
+            placed = self._placed(i * step, tol, fixed, cache)
             return [(p, np.asarray(COLOURS[key.rstrip("'")]) / 255.0) for _, key, p in placed]
 
         try:
