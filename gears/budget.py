@@ -48,7 +48,7 @@ BUDGETS = {
     "animation": 4_000_000,
 }
 
-_UNITS = {"animation": "vertices drawn", "simulation": "tool vertices placed"}
+_UNITS = {"animation": "vertices drawn", "simulation": "vertex operations"}
 
 
 def round_up(value: float, digits: int = 2) -> float:
