@@ -45,7 +45,7 @@ BUDGETS = {
     "outline": 10_000_000,
     "simulation": 20_000_000,
     "mesh": 2_000_000,
-    "animation": 4_000_000,
+    "animation": 1_000_000,
 }
 
 _UNITS = {"animation": "vertices drawn", "simulation": "vertex operations"}

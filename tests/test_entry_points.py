@@ -76,8 +76,9 @@ STAGE = Planetary(18, 45, 108, n_planets=3, module=2)
         (lambda: PAIR.scene(tolerance=math.inf), ["tolerance"]),
         (lambda: PAIR.scene(method="laser"), ["method", "'laser'"]),
         (
-            lambda: Gear(6, 50, 14.5, 0, 1.130071, internal=True, rack=BasicRack.iso53("B"))
-            .outline(0.05),
+            lambda: Gear(
+                6, 50, 14.5, 0, 1.130071, internal=True, rack=BasicRack.iso53("B")
+            ).outline(0.05),
             ["z = 6"],
         ),
     ],
