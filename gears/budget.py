@@ -38,7 +38,7 @@ from collections.abc import Callable
 
 from gears.errors import GearError
 
-__all__ = ["BUDGETS", "check_budget", "fitting_tolerance", "round_up"]
+__all__ = ["BUDGETS", "check_budget", "check_size", "fitting_tolerance", "round_up"]
 
 #: The budget of each kind of work, in its unit (see the module docstring).
 BUDGETS = {
@@ -113,7 +113,7 @@ def check_budget(
     naming the size, the budget and the coarsest tolerance that fits (or ``hint``, what else to
     reduce, when no tolerance does).
     """
-    limit = BUDGETS[kind] if budget is None else budget
+    limit = BUDGETS[kind] if budget is None else float(budget)
     n = float(estimate(tolerance))
     if n <= limit:
         return n
@@ -128,3 +128,9 @@ def check_budget(
             f": {hint}" if hint else ""))  # fmt: skip
     more = f" (or {hint})" if hint else ""
     raise GearError(f"{head}; use tolerance >= {fits:.2g} mm{more}")
+
+
+def check_size(vertices: float, what: str, tolerance: float, budget: float) -> None:
+    """:func:`check_budget` for a count known at one tolerance, work growing as 1/tolerance
+    (the form the bevel solids and the crown simulation use)."""
+    check_budget("vertex", what, lambda t: vertices * tolerance / t, tolerance, budget=budget)

@@ -58,7 +58,7 @@ from gears.arguments import (
     check_real,
     check_tolerance,
 )
-from gears.budget import BUDGETS, check_budget
+from gears.budget import BUDGETS, check_budget, check_size
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import space_half_angle
@@ -72,6 +72,7 @@ __all__ = [
     "ToothProfile",
     "assemble",
     "check_backlash",
+    "check_size",
     "check_tolerance",
     "outline",
     "outline_vertices",
