@@ -922,11 +922,12 @@ def rate_pairs(
         threads = default_threads()
     if n < 2 * _CHUNK:
         res = _rate_block(a, mats, fields)
+        wanted = {*fields, "valid", "reason"}  # as the blocked path: the others are None
         if n == 1 and shape == ():
-            result = PairRatings(**{f: res[f][()] if f in res else None for f in _FIELDS})
+            result = PairRatings(**{f: res[f][()] if f in wanted else None for f in _FIELDS})
         else:
             result = PairRatings(
-                **{f: np.broadcast_to(res[f], shape) if f in res else None for f in _FIELDS}
+                **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
             )
     else:
         flat = {k: v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}

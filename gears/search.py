@@ -42,13 +42,17 @@ from gears.geometry import check_real, min_profile_shift, transverse_pressure_an
 from gears.meshing import center_distance_shift_sum, default_threads, mesh_efficiency
 from gears.rack import BasicRack
 from gears.report import format_duration
+from gears.sizing import Load, load_case, pair_volume, smallest_width
+from gears.sizing import rate as rate_load
 
 __all__ = [
+    "Estimate",
     "Limits",
     "SearchResult",
     "check_table_output",
     "dask_client",
     "dask_results",
+    "estimate",
     "evaluate_chunk",
     "pairs",
     "write_table",
@@ -57,6 +61,9 @@ __all__ = [
 #: candidates per second per local thread assumed by the size check (measured 1.2e6 on one
 #: shared core, docs/performance.md)
 LOCAL_RATE = 1.0e6
+#: rated candidates (pair and face width) per second per local thread assumed by the size check
+#: when a torque is given (measured 2-5 x 10^5 on one shared core, docs/performance.md)
+RATED_RATE = 1.5e5
 #: default limit on the estimated time of a local search, seconds
 MAX_SECONDS = 600.0
 
@@ -81,6 +88,10 @@ _INTERNAL = (
     "ring_tip_above_base",
 )  # fmt: skip
 _SPLITS = ("proportional", "equal_sliding", "keep")
+#: columns of a search with a face width (and a load): b, the gears' volume (mm^3) and mass (kg)
+_SIZE = ("face_width", "volume", "mass")
+#: and with a torque: each gear's safety against pitting and bending, and the smaller of each
+_SAFETY = ("S_H1", "S_H2", "S_F1", "S_F2", "S_H", "S_F")
 
 
 @dataclass(frozen=True)
@@ -130,6 +141,11 @@ class _Space:
     friction: float = 0.1
     shift_range: tuple[float, float] = (-math.inf, math.inf)
     columns: tuple[str, ...] = field(default=())
+    widths: np.ndarray | None = None  # face widths (mm), ascending; None: no sizing
+    load: Load | None = None
+    smallest_width: bool = True
+    density: tuple[float, float] = (7.83e-6, 7.83e-6)
+    dataset: str | None = None  # a folder: each chunk writes its rows there (top=None)
 
     @property
     def shape(self) -> tuple[int, int, int]:
@@ -137,7 +153,17 @@ class _Space:
 
     @property
     def size(self) -> int:
+        """Geometries: the flat index the chunks cut."""
         return math.prod(self.shape)
+
+    @property
+    def per_geometry(self) -> int:
+        """Candidates per geometry: its face widths (1 without)."""
+        return 1 if self.widths is None else len(self.widths)
+
+    @property
+    def candidates(self) -> int:
+        return self.size * self.per_geometry
 
     @property
     def pareto(self) -> bool:
@@ -155,8 +181,9 @@ def evaluate_chunk(
 
     Returns ``(rows, feasible, checked)``: the chunk's best rows (its top-k, its Pareto set, or
     all its feasible rows when ``top`` is None), the number of feasible candidates and the
-    number checked. This one function runs on local threads and as a Dask task; it checks
-    ``block`` candidates at a time.
+    number checked (geometries times face widths). This one function runs on local threads and
+    as a Dask task; it checks ``block`` geometries at a time. With ``space.dataset`` (a folder)
+    the rows are written there as ``part-<start>.parquet`` and none are returned.
     """
     found = []
     for lo in range(start, stop, block):
@@ -170,15 +197,21 @@ def evaluate_chunk(
             f = _check_group(space, ib[a:b], i1[a:b], i2[a:b])
             if f is not None:
                 found.append(f)
+    checked = (stop - start) * space.per_geometry
     if not found:
-        return np.empty(0, _dtype(space.columns)), 0, stop - start
+        return np.empty(0, _dtype(space.columns)), 0, checked
     n_ok = sum(n for _, n in found)
     values = {c: np.concatenate([f[c] for f, _ in found]) for c in space.columns}
     pick = _preselect(values, space)
     rows = np.empty(len(pick), _dtype(space.columns))
     for c in space.columns:
         rows[c] = values[c][pick]
-    return _reduce(rows, space), n_ok, stop - start
+    rows = _reduce(rows, space)
+    if space.dataset is not None:
+        if len(rows):
+            write_table(rows, f"{space.dataset}/part-{start:015d}.parquet")
+        rows = rows[:0]
+    return rows, n_ok, checked
 
 
 def _check_group(space: _Space, ib, i1, i2) -> tuple[dict[str, np.ndarray], int] | None:
@@ -243,6 +276,20 @@ def _check_group(space: _Space, ib, i1, i2) -> tuple[dict[str, np.ndarray], int]
     def column(c: str) -> np.ndarray:
         return values[c] if c in values else f[c.replace("g1_", "g1.").replace("g2_", "g2.")]
 
+    if space.widths is not None:  # every feasible geometry over the face widths
+        sel = np.flatnonzero(ok)
+        cols = {c: np.broadcast_to(column(c), ok.shape)[sel] for c in space.columns
+                if c not in _SIZE and c not in _SAFETY}  # fmt: skip
+        cols = _size_rows(space, cols, m, beta)
+        n_ok = len(cols["z1"])
+        if not n_ok:
+            return None
+        if not space.pareto and space.top is not None and n_ok > space.top:
+            o = space.objective[0]
+            key = -cols[o[1:]] if o.startswith("-") else cols[o]
+            keep = key <= np.partition(key, space.top - 1)[space.top - 1]
+            cols = {c: v[keep] for c, v in cols.items()}
+        return cols, n_ok
     n_ok = int(ok.sum())
     if not space.pareto and space.top is not None and n_ok > space.top:
         # only rows that can reach the top-k leave the group (ties on the k-th value stay)
@@ -251,6 +298,47 @@ def _check_group(space: _Space, ib, i1, i2) -> tuple[dict[str, np.ndarray], int]
         key = np.where(ok, -key if o.startswith("-") else key, np.inf)
         ok &= key <= np.partition(key, space.top - 1)[space.top - 1]
     return {c: np.broadcast_to(column(c), ok.shape)[ok] for c in space.columns}, n_ok
+
+
+def _size_rows(space: _Space, cols: dict[str, np.ndarray], m: float, beta: float) -> dict:
+    """The geometry-feasible rows ``cols`` of one (module, helix) group over the face widths:
+    with a load, rated (:mod:`gears.sizing`) and kept where they meet the minimum safeties
+    (only the smallest such width per geometry with ``smallest_width``); then b, volume and
+    mass, and with a load the safeties, as columns."""
+    widths, load = space.widths, space.load
+    geometry = dict(pressure_angle=space.pressure_angle, helix_angle=beta,
+                    internal=space.internal, rack=space.rack,
+                    tip_shortening=space.tip_shortening)  # fmt: skip
+    safety = None
+    if load is not None and space.smallest_width:
+        index, r = smallest_width(load, widths, cols["z1"], cols["z2"], m, cols["x1"],
+                                  cols["x2"], **geometry)  # fmt: skip
+        keep = index >= 0
+        cols = {c: v[keep] for c, v in cols.items()}
+        b = widths[index[keep]]
+        safety = {f: np.asarray(getattr(r, f))[keep] for f in _SAFETY[:4]}
+    else:
+        n, w = len(cols["z1"]), len(widths)
+        cols = {c: np.repeat(v, w) for c, v in cols.items()}
+        b = np.tile(widths, n)
+        if load is not None:
+            with np.errstate(all="ignore"):
+                r = rate_load(load, cols["z1"], cols["z2"], m, b, cols["x1"], cols["x2"],
+                              **geometry)  # fmt: skip
+            keep = load.meets(r)
+            cols = {c: v[keep] for c, v in cols.items()}
+            b = b[keep]
+            safety = {f: np.broadcast_to(getattr(r, f), keep.shape)[keep] for f in _SAFETY[:4]}
+    volume, mass = pair_volume(cols["z1"], cols["z2"], m, b, beta, space.internal, cols["x2"],
+                               space.rack.dedendum, space.density)  # fmt: skip
+    cols["face_width"] = b
+    cols["volume"] = np.asarray(volume, float)
+    cols["mass"] = np.asarray(mass, float)
+    if safety is not None:
+        cols.update(safety)
+        cols["S_H"] = np.minimum(safety["S_H1"], safety["S_H2"])
+        cols["S_F"] = np.minimum(safety["S_F1"], safety["S_F2"])
+    return cols
 
 
 def _preselect(values: dict[str, np.ndarray], space: _Space) -> np.ndarray:
@@ -271,8 +359,9 @@ def _objectives(rows: np.ndarray, objective: Sequence[str]) -> list[np.ndarray]:
 
 
 def _order(rows: np.ndarray, objective: Sequence[str]) -> np.ndarray:
-    # lexsort: last key first; the parameters break ties, so the order is total
-    keys = [rows[k] for k in reversed(_KEYS)] + list(reversed(_objectives(rows, objective)))
+    # lexsort: last key first; the parameters (and the face width) break ties: a total order
+    params = (*_KEYS, "face_width") if "face_width" in rows.dtype.names else _KEYS
+    keys = [rows[k] for k in reversed(params)] + list(reversed(_objectives(rows, objective)))
     return np.lexsort(keys)
 
 
@@ -361,8 +450,14 @@ class SearchResult:
         """Candidates checked per second."""
         return self.examined / self.seconds if self.seconds > 0 else math.inf
 
+    @property
+    def dataset(self) -> str | None:
+        """The folder the rows were written to (``dataset=``), else None."""
+        return self._space.dataset
+
     def pair(self, i: int = 0):
-        """Row ``i`` as a :class:`gears.GearPair` (its ``check()`` gives the same margins)."""
+        """Row ``i`` as a :class:`gears.GearPair` (its ``check()`` gives the same margins; with
+        a face width, both gears carry it)."""
         from gears.gear import Gear
         from gears.pair import GearPair
 
@@ -371,10 +466,23 @@ class SearchResult:
         beta = float(r["helix_angle"])
         common = {"module": float(r["module"]), "pressure_angle": sp.pressure_angle,
                   "rack": sp.rack}  # fmt: skip
+        if "face_width" in self.columns:
+            common["face_width"] = float(r["face_width"])
         g1 = Gear(int(r["z1"]), profile_shift=float(r["x1"]), helix_angle=beta, **common)
         g2 = Gear(int(r["z2"]), profile_shift=float(r["x2"]), internal=sp.internal,
                   helix_angle=beta if sp.internal else -beta, **common)  # fmt: skip
         return GearPair(g1, g2, sp.tip_shortening)
+
+    def rating(self, i: int = 0):
+        """Row ``i`` rated on its own: ``pair(i).rating(...)`` under the search's load case
+        (torque, speed, materials, life, options, the row's face width, ``root="standard"``,
+        the route the search rates by): the same safeties as the row's ``S_H1 ... S_F2``."""
+        load = self._space.load
+        if load is None:
+            raise GearError("this search had no torque=: rate a row with "
+                            "result.pair(i).rating(torque, speed, ...)")  # fmt: skip
+        return self.pair(i).rating(load.torque, load.speed, load.materials,
+                                   **load.rating_options())  # fmt: skip
 
     def to_pandas(self):
         """The table as a ``pandas.DataFrame`` (needs pandas: ``pip install pandas``)."""
@@ -389,9 +497,14 @@ class SearchResult:
         write_table(self.table, path, ".parquet")
 
     def format(self, columns: Sequence[str] | None = None) -> str:
-        """A ranked text table (default: the parameters, a, eps, sliding, efficiency)."""
-        columns = columns or (*_KEYS, "center_distance", "contact_ratio", "sliding",
-                              "efficiency")  # fmt: skip
+        """A ranked text table (default: the parameters, a, eps, sliding, efficiency; with a
+        face width b and the volume, with a load the smaller safeties S_H and S_F)."""
+        if not columns:
+            columns = (*_KEYS, "center_distance", "contact_ratio", "sliding", "efficiency")
+            if "face_width" in self.columns:
+                columns = (*_KEYS, "face_width", "center_distance", "contact_ratio", "volume")
+            if "S_H" in self.columns:
+                columns = (*columns, "S_H", "S_F")
         head = ["#", *columns]
         body = []
         for i, r in enumerate(self.table, 1):
@@ -406,10 +519,12 @@ class SearchResult:
         return "\n".join(lines)
 
     def __str__(self) -> str:
-        return (
-            f"{len(self)} pairs of {self.feasible} feasible among {self.examined} candidates "
-            f"({self.seconds:.3g} s)\n" + self.format()
-        )
+        if self.dataset is not None:
+            return (f"{self.feasible} feasible pairs among {self.examined} candidates "
+                    f"({self.seconds:.3g} s), every one written to {self.dataset}")  # fmt: skip
+        head = (f"{len(self)} pairs of {self.feasible} feasible among {self.examined} candidates "
+                f"({self.seconds:.3g} s)")  # fmt: skip
+        return f"{head}\n" + self.format()
 
     def __repr__(self) -> str:
         return (f"SearchResult({len(self)} rows, examined={self.examined}, "
@@ -493,16 +608,27 @@ def _teeth(value) -> np.ndarray:
     return np.unique(z)
 
 
-def _objective(objective) -> tuple[str, ...]:
-    obj = (objective,) if isinstance(objective, str) else tuple(objective)
-    names = set(_KEYS) | set(_GEOMETRY) | set(_MARGINS)
+def _objective(objective, columns: Sequence[str]) -> tuple[str, ...]:
+    if isinstance(objective, str):
+        obj = (objective,)
+    elif isinstance(objective, list | tuple):
+        obj = tuple(objective)
+    else:
+        raise GearError(f"objective = {objective!r}; valid is a column name or 2-3 of them")
+    names = set(columns)
     if not 1 <= len(obj) <= 3 or not all(isinstance(o, str) for o in obj):
         raise GearError(f"objective = {objective!r}; valid is a column name or 2-3 of them")
     for o in obj:
-        if o.removeprefix("-") not in names:
-            raise GearError(
-                f"objective {o!r} is not a column; valid are {sorted(names)} ('-' maximises)"
-            )
+        name = o.removeprefix("-")
+        if name in names:
+            continue
+        if name in _SIZE:
+            raise GearError(f"objective {o!r} needs face_width= (mm): the gears' size")
+        if name in _SAFETY:
+            raise GearError(f"objective {o!r} needs torque= and speed=: the candidates rated")
+        raise GearError(
+            f"objective {o!r} is not a column; valid are {sorted(names)} ('-' maximises)"
+        )
     return obj
 
 
@@ -669,15 +795,15 @@ def _workers(client) -> int:
 
 
 def progress_callback(
-    progress, desc: str = "pair search", unit: str = "chunk"
+    progress, desc: str = "pair search", unit: str = "candidate"
 ) -> Callable[..., None] | None:
-    """``progress`` as a callback ``(done, total, items=None)`` or None: a user's callable gets
-    ``(done, total)``; None shows a tqdm bar on a terminal (with items/s when ``items`` is
-    given) and nothing otherwise; False nothing."""
+    """``progress`` as a callback ``(done, total)`` or None: a user's callable is returned as
+    it is; None shows a tqdm bar on a terminal (the units done, their rate per second and the
+    time left) and nothing otherwise; True always; False nothing."""
     if progress is False:
         return None
     if callable(progress):
-        return lambda done, total, n=None: progress(done, total)
+        return lambda done, total: progress(done, total)
     if progress is None and not sys.stderr.isatty():
         return None
     if progress not in (None, True):
@@ -686,20 +812,28 @@ def progress_callback(
 
     state = {}
 
-    def update(done: int, total: int, n: int | None = None) -> None:
+    def update(done: int, total: int) -> None:
         if "bar" not in state:
-            state["bar"] = tqdm(total=total, desc=desc, unit=unit, leave=False, file=sys.stderr)
-            state["t0"] = time.perf_counter()
+            state["bar"] = tqdm(total=total, desc=desc, unit=unit, unit_scale=True, leave=False,
+                                file=sys.stderr)  # fmt: skip
         bar = state["bar"]
-        bar.total, bar.n = total, done
-        if n is not None:
-            rate = n / max(time.perf_counter() - state["t0"], 1e-9)
-            bar.set_postfix_str(f"{rate:.3g} candidates/s", refresh=False)
+        bar.total = total
+        bar.update(done - bar.n)  # update(), not n =: tqdm's rate and time left follow it
         bar.refresh()
         if done >= total:
             bar.close()
 
     return update
+
+
+def _announce_dashboard(client, progress) -> None:
+    """Print the Dask dashboard's address on stderr above the progress bar (when the bar is
+    shown and the cluster has a dashboard)."""
+    if callable(progress):
+        return
+    link = getattr(client, "dashboard_link", None)
+    if link:
+        print(f"Dask dashboard: {link}", file=sys.stderr)
 
 
 # --- the search ----------------------------------------------------------------------------------
@@ -708,9 +842,10 @@ def progress_callback(
 def pairs(
     ratio=None, center_distance=None, module=1.0, teeth=(12, 60), shifts=(-0.5, 1.0, 0.1),
     helix=0.0, *, ratio_tolerance=0.01, split="proportional", pressure_angle=None, rack=None,
-    internal=False, tip_shortening=True, limits=None, objective="sliding", top=20,
-    friction=0.1, chunk_size=1 << 16, client=None, threads=None, progress=None,
-    max_seconds=MAX_SECONDS,
+    internal=False, tip_shortening=True, limits=None, objective=None, top=20,
+    friction=0.1, torque=None, speed=None, material="case-carburized", face_width=None,
+    life=20000.0, min_safety=None, smallest_width=True, dataset=None, chunk_size=1 << 16,
+    client=None, threads=None, progress=None, max_seconds=MAX_SECONDS, **rating_options,
 ) -> SearchResult:  # fmt: skip
     """Search gear pairs: every feasible candidate is checked as ``GearPair.check()`` does.
 
@@ -736,9 +871,40 @@ def pairs(
     objective : str or sequence of 2-3 str
         A column to minimise (``"-contact_ratio"`` maximises): the best ``top`` rows are
         returned. Two or three columns: the whole Pareto front (at most ``top`` of it, in
-        order of the first objective, when ``top`` is given).
+        order of the first objective, when ``top`` is given). Default ``"sliding"``, or
+        ``"volume"`` with a face width. With a face width also ``"volume"`` (both gears'
+        material, mm^3: :func:`gears.sizing.pair_volume`) and ``"mass"`` (kg), with a torque
+        ``"-S_H"`` and ``"-S_F"`` (the smaller safety of the two gears, maximised).
     top : int or None
-        Rows returned; None returns every feasible row (use ``to_parquet`` for large results).
+        Rows returned; None returns every feasible row (use ``to_parquet`` for large results,
+        or ``dataset=``).
+    torque, speed : float, optional
+        Rate every candidate by ISO 6336 method B (:func:`gears.rating.rate_pairs`, the
+        function ``GearPair.rating`` calls) with this torque on gear 1 (N m) at this speed
+        (rpm), and keep only those that meet ``min_safety``. The result gains the columns
+        ``S_H1, S_H2, S_F1, S_F2`` (each gear's safety against pitting and bending) and
+        ``S_H``, ``S_F`` (the smaller of each); ``result.rating(i)`` rates row i on its own.
+    material : name, Material or pair
+        ISO 6336-5 material of both gears or ``(gear 1, gear 2)`` (also the density of
+        ``"mass"``).
+    face_width : float, sequence or (low, high, step), optional
+        Face widths b to try, mm: each candidate pair is taken at each (a column
+        ``face_width``, with ``volume`` and ``mass``).
+    life : float
+        Required life, hours.
+    min_safety : dict, optional
+        ``{"pitting": S_Hmin, "bending": S_Fmin}``, default ``{"pitting": 1.0, "bending":
+        1.4}`` (a key left out keeps its default).
+    smallest_width : bool
+        With a torque: keep for each pair only the smallest face width of the set that meets
+        the safeties (the pair sized from the load); False keeps every width that meets them
+        as a candidate of its own (a Pareto front of volume against safety needs them).
+    dataset : str or path, optional
+        With ``top=None``: a folder in which each chunk writes its feasible rows as
+        ``part-<first index>.parquet``, where it runs (on a Dask worker or a local thread), so
+        no row passes through this process; the result's table is then empty and
+        ``result.dataset`` names the folder (read it with ``pyarrow.dataset`` or
+        ``pandas.read_parquet``). On a cluster the folder must be one the workers can write.
     chunk_size : int
         Candidates per chunk (the answer does not depend on it).
     client : dask.distributed.Client, str, None or False
@@ -747,11 +913,18 @@ def pairs(
     threads : int or None
         Local threads (default: :func:`gears.meshing.default_threads`).
     progress : None, bool or callable
-        A tqdm bar (None: when stderr is a terminal; True: always), False for none, or a
-        callback ``progress(chunks_done, chunks)``.
+        A tqdm bar with the candidates done, their rate and the time left (None: when stderr is
+        a terminal; True: always; on a cluster the Dask dashboard's address is printed above
+        it), False for none, or a callback ``progress(candidates_done, candidates)`` called
+        after each chunk.
     max_seconds : float
         A local search estimated to take longer is refused before any work (pass
-        ``client=``, narrow the space or raise the limit).
+        ``client=``, narrow the space or raise the limit); :func:`estimate` tells the time
+        before running.
+    **rating_options
+        Any other option of ``GearPair.rating`` (``quality``, ``application_factor``,
+        ``oil_viscosity``, ``sigma_Hlim``, ... and factors by their ISO symbols, ``K_v=1.0``),
+        with a torque (:func:`gears.sizing.load_case`).
 
     Returns
     -------
@@ -773,8 +946,64 @@ def pairs(
     (12, 28, 0.4, 0.3)
     >>> round(float(r["contact_ratio"][0]), 4)
     1.3046
+
+    The smallest (least material) 1:3 pair of module 2 that carries 60 N m at 1500 rpm for
+    20 000 h with S_H >= 1.1 and S_F >= 1.5, face widths 10 ... 40 mm:
+
+    >>> r = pairs(ratio=3, module=2, teeth=(14, 80), shifts=(0.0, 0.6, 0.2), torque=60,
+    ...           speed=1500, face_width=(10, 40, 5), min_safety={"pitting": 1.1,
+    ...           "bending": 1.5}, top=1, progress=False)
+    >>> int(r["z1"][0]), int(r["z2"][0]), float(r["face_width"][0]), round(float(r["S_H"][0]), 3)
+    (26, 78, 10.0, 1.101)
     """
     t0 = time.perf_counter()
+    space, client, threads = _prepare(
+        ratio, center_distance, module, teeth, shifts, helix, ratio_tolerance=ratio_tolerance,
+        split=split, pressure_angle=pressure_angle, rack=rack, internal=internal,
+        tip_shortening=tip_shortening, limits=limits, objective=objective, top=top,
+        friction=friction, torque=torque, speed=speed, material=material,
+        face_width=face_width, life=life, min_safety=min_safety, smallest_width=smallest_width,
+        dataset=dataset, chunk_size=chunk_size, client=client, threads=threads,
+        **rating_options,
+    )  # fmt: skip
+    check_real("max_seconds", max_seconds, 0.0)
+    n = space.candidates
+    if client is None:
+        rate = (RATED_RATE if space.load is not None else LOCAL_RATE) * threads
+        estimate = n / rate
+        if estimate > max_seconds:
+            raise GearError(
+                f"the search has {n:,} candidates: about {format_duration(estimate)} on "
+                f"{threads} local thread(s) at {rate / threads:.3g} candidates/s each, over the "
+                f"limit max_seconds = {max_seconds:g} s; pass client= (a dask.distributed "
+                "Client or scheduler address), narrow the space, or raise max_seconds"
+            )
+    if dataset is not None:
+        _open_dataset(space.dataset)
+    bounds = [(i, min(i + chunk_size, space.size)) for i in range(0, space.size, chunk_size)]
+    report = progress_callback(progress, unit="candidate")
+    if report is not None and client is not None and progress is not False:
+        _announce_dashboard(client, progress)
+    if client is None:
+        parts = _run_local(space, bounds, threads, report)
+    else:
+        parts = _run_dask(space, bounds, client, report)
+    table, feasible, examined = parts
+    if space.pareto and top is not None:  # the front is whole until here; then its head
+        table = table[:top]
+    return SearchResult(table, examined, feasible, len(bounds), time.perf_counter() - t0, space)
+
+
+def _prepare(
+    ratio=None, center_distance=None, module=1.0, teeth=(12, 60), shifts=(-0.5, 1.0, 0.1),
+    helix=0.0, *, ratio_tolerance=0.01, split="proportional", pressure_angle=None, rack=None,
+    internal=False, tip_shortening=True, limits=None, objective=None, top=20,
+    friction=0.1, torque=None, speed=None, material="case-carburized", face_width=None,
+    life=20000.0, min_safety=None, smallest_width=True, dataset=None, chunk_size=1 << 16,
+    client=None, threads=None, **rating_options,
+) -> tuple[_Space, object, int]:  # fmt: skip
+    """The checked candidate space of :func:`pairs`, its Dask client (or None) and the local
+    thread count; every bad argument is a GearError here, before any work."""
     rack = rack if rack is not None else BasicRack.iso53()
     if not isinstance(rack, BasicRack):
         raise GearError(f"rack must be a BasicRack; got {rack!r}")
@@ -791,7 +1020,10 @@ def pairs(
     limits = limits if limits is not None else Limits()
     if not isinstance(limits, Limits):
         raise GearError(f"limits must be a Limits or a dict; got {limits!r}")
-    obj = _objective(objective)
+    widths, load, density = _load(torque, speed, material, face_width, life, min_safety,
+                                  rating_options)  # fmt: skip
+    if objective is None:
+        objective = "sliding" if widths is None else "volume"
     if top is not None and (isinstance(top, bool) or not isinstance(top, int) or top < 1):
         raise GearError(f"top = {top!r}; valid is an integer >= 1 or None")
     if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
@@ -802,7 +1034,13 @@ def pairs(
         raise GearError("split='proportional' is defined for external pairs; use 'keep'")
     check_real("ratio_tolerance", ratio_tolerance, 0.0, low_open=False)
     check_real("friction", friction, 0.0, 1.0, low_open=False)
-    check_real("max_seconds", max_seconds, 0.0)
+    if not isinstance(smallest_width, bool):
+        raise GearError(f"smallest_width = {smallest_width!r}; valid are True and False")
+    if dataset is not None:
+        if top is not None:
+            raise GearError(f"dataset = {str(dataset)!r} holds every feasible row: it needs "
+                            f"top=None (top = {top!r})")  # fmt: skip
+        dataset = _dataset_path(dataset)
     internal = bool(internal)
 
     z1, z2 = (v.ravel() for v in np.meshgrid(z, z, indexing="ij"))
@@ -834,36 +1072,190 @@ def pairs(
         if split != "keep":
             x1 = np.zeros(1)
     columns = (*_KEYS, *_GEOMETRY, *_MARGINS, *(_INTERNAL if internal else ()))
+    if widths is not None:
+        columns = (*columns, *_SIZE, *(_SAFETY if load is not None else ()))
+    obj = _objective(objective, columns)
     space = _Space(
         base, x1, x2, None if center_distance is None else float(center_distance), split, pa,
         rack, internal, bool(tip_shortening), limits, obj, top, float(friction),
-        (float(x.min()), float(x.max())), columns,
+        (float(x.min()), float(x.max())), columns, widths, load, smallest_width, density,
+        dataset,
     )  # fmt: skip
-    n = space.size
     client = dask_client(client)
     if threads is None:
         threads = default_threads()
     elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
         raise GearError(f"threads = {threads!r}; valid is an integer >= 1")
-    if client is None:
-        estimate = n / (LOCAL_RATE * threads)
-        if estimate > max_seconds:
-            raise GearError(
-                f"the search has {n:,} candidates: about {format_duration(estimate)} on "
-                f"{threads} local thread(s) at {LOCAL_RATE:.3g} candidates/s each, over the "
-                f"limit max_seconds = {max_seconds:g} s; pass client= (a dask.distributed "
-                "Client or scheduler address), narrow the space, or raise max_seconds"
-            )
-    bounds = [(i, min(i + chunk_size, n)) for i in range(0, n, chunk_size)]
-    report = progress_callback(progress)
-    if client is None:
-        parts = _run_local(space, bounds, threads, report)
-    else:
-        parts = _run_dask(space, bounds, client, report)
-    table, feasible, examined = parts
-    if space.pareto and top is not None:  # the front is whole until here; then its head
-        table = table[:top]
-    return SearchResult(table, examined, feasible, len(bounds), time.perf_counter() - t0, space)
+    return space, client, threads
+
+
+def _load(torque, speed, material_, face_width, life, min_safety, options):
+    """``(widths, load, densities)``: the face widths (ascending, or None), the checked
+    :class:`gears.sizing.Load` (or None without a torque) and both materials' densities."""
+    from gears.materials import material as as_material
+
+    mats = material_ if isinstance(material_, tuple | list) else (material_, material_)
+    if len(mats) != 2:
+        raise GearError(f"material = {material_!r}; give one material or a pair (gear 1, gear 2)")
+    density = (as_material(mats[0]).density, as_material(mats[1]).density)
+    widths = None
+    if face_width is not None:
+        widths = np.unique(_grid("face_width", face_width))
+        if widths[0] <= 0 or widths[-1] > 1e5:
+            bad = widths[0] if widths[0] <= 0 else widths[-1]
+            raise GearError(f"face_width = {bad:g}; valid is 0 < face_width <= 1e5 mm")
+    if torque is None:
+        extra = [k for k, v in (("speed", speed), ("min_safety", min_safety)) if v is not None]
+        extra += list(options)
+        if extra:
+            raise GearError(f"{', '.join(extra)} rate the candidates under a load: "
+                            "give torque= (N m on gear 1) and speed= (rpm) too")  # fmt: skip
+        return widths, None, density
+    if speed is None:
+        raise GearError("torque= needs speed= (rpm of gear 1) to rate the candidates")
+    if widths is None:
+        raise GearError(
+            "torque= needs face_width=: a width in mm, a list of widths, or (low, high, step); "
+            "each candidate is rated at each width (the smallest that carries the load is kept)"
+        )
+    load = load_case(torque, speed, material_, life, min_safety, **options)
+    return widths, load, density
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """What a search will cost, before it runs (:func:`estimate`).
+
+    Attributes
+    ----------
+    candidates : int
+        Candidates the search decides (geometries times face widths).
+    chunks : int
+        Chunks (tasks) it is cut into.
+    rate : float
+        Candidates per second on one thread, measured on ``sampled`` candidates spread over
+        the space.
+    sampled : int
+    threads : int
+        Local threads :func:`pairs` would use.
+    """
+
+    candidates: int
+    chunks: int
+    rate: float
+    sampled: int
+    threads: int
+
+    @property
+    def local_seconds(self) -> float:
+        """Expected wall time on the local threads (at :data:`THREAD_EFFICIENCY` per thread
+        beyond the first)."""
+        return self.candidates / (self.rate * (1 + THREAD_EFFICIENCY * (self.threads - 1)))
+
+    @property
+    def worker_seconds(self) -> float:
+        """Expected time on one single-threaded Dask worker: a cluster of ``w`` of them takes
+        about ``worker_seconds / w``."""
+        return self.candidates / self.rate
+
+    def __str__(self) -> str:
+        return (
+            f"{self.candidates:,} candidates in {self.chunks:,} chunks at about "
+            f"{self.rate:.3g} candidates/s per thread (measured on {self.sampled:,}): about "
+            f"{_duration(self.local_seconds)} on {self.threads} local thread(s); on a Dask "
+            f"cluster about {_duration(self.worker_seconds)} divided by its worker threads"
+        )
+
+
+def _duration(seconds: float) -> str:
+    return f"{seconds:.2g} s" if seconds < 10 else format_duration(seconds)
+
+
+#: speed-up of each local thread beyond the first (measured 1.47-1.68 on 2 threads,
+#: docs/performance.md)
+THREAD_EFFICIENCY = 0.7
+#: geometries :func:`estimate` times by default (each with its face widths), in four windows
+ESTIMATE_SAMPLE = 1 << 14
+
+
+def estimate(*args, sample: int = ESTIMATE_SAMPLE, **kwargs) -> Estimate:
+    """The size and expected time of ``pairs(*args, **kwargs)`` (the same arguments), before
+    running it: the candidates are counted exactly; their rate is measured by checking (and
+    rating) some of them on one thread (a rate depends on how many pass the cheap tests
+    first). ``sample`` counts geometries (pairs
+    before their face widths), timed in four windows spread over the space, each long enough
+    that the per-block overhead weighs as in the search. Takes a fraction of a second.
+
+    >>> e = estimate(ratio=3.2, module=[2, 2.5], teeth=(12, 100), shifts=(-0.5, 1.0, 0.05))
+    >>> e.candidates, e.chunks
+    (49972, 1)
+    >>> e.local_seconds < 10
+    True
+    """
+    for name in ("progress", "max_seconds"):
+        kwargs.pop(name, None)
+    if isinstance(sample, bool) or not isinstance(sample, int) or sample < 1:
+        raise GearError(f"sample = {sample!r}; valid is an integer >= 1")
+    space, _, threads = _prepare(*args, **kwargs)
+    chunk_size = kwargs.get("chunk_size", 1 << 16)
+    space = _replace(space, dataset=None, top=1 if space.top is not None else None)
+    n = space.size
+    windows = 4
+    width = max(1, min(n, sample) // windows)
+    starts = sorted({int(i) for i in np.linspace(0, max(n - width, 0), windows)})
+    if n:
+        evaluate_chunk(space, 0, min(n, 64), _LOCAL_BLOCK)  # first calls: imports, caches
+    t0 = time.perf_counter()
+    checked = 0
+    for lo in starts:
+        checked += evaluate_chunk(space, lo, min(lo + width, n), _LOCAL_BLOCK)[2]
+    seconds = max(time.perf_counter() - t0, 1e-9)
+    rate = checked / seconds if checked else LOCAL_RATE
+    return Estimate(space.candidates, -(-n // chunk_size), rate, checked, threads)
+
+
+def _dataset_path(path) -> str:
+    """``path`` as the absolute folder of a Parquet dataset, checked before any work: not a
+    file name, new or without part files, in a writable folder, pyarrow importable."""
+    import os
+    import pathlib
+
+    try:
+        p = pathlib.Path(os.fspath(path)).absolute()
+    except TypeError:
+        raise GearError(f"dataset = {path!r}; valid is a folder path") from None
+    if p.suffix.lower() in TABLE_FORMATS:
+        raise GearError(f"dataset = {str(path)!r} names a file; give a folder (a Parquet "
+                        "dataset: one part file per chunk)")  # fmt: skip
+    if p.exists() and not p.is_dir():
+        raise GearError(f"dataset = {str(path)!r} exists and is not a folder")
+    if p.is_dir() and any(p.glob("part-*.parquet")):
+        raise GearError(f"dataset = {str(path)!r} already holds part files; give a new or "
+                        "empty folder")  # fmt: skip
+    if not p.parent.is_dir() or not os.access(p.parent, os.W_OK):
+        raise GearError(f"dataset = {str(path)!r}: its folder {str(p.parent)!r} does not exist "
+                        "or is not writable")  # fmt: skip
+    try:
+        import pyarrow.parquet  # noqa: F401
+    except ImportError:
+        raise GearError("dataset= writes Parquet: it needs pyarrow: pip install "
+                        "'geartrain[parquet]'") from None  # fmt: skip
+    return str(p)
+
+
+def _open_dataset(path: str) -> None:
+    import os
+
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as exc:
+        raise GearError(f"dataset = {path!r} cannot be made: {exc}") from None
+
+
+def _replace(space: _Space, **changes) -> _Space:
+    import dataclasses
+
+    return dataclasses.replace(space, **changes)
 
 
 def _merge(acc: np.ndarray | None, part: np.ndarray, space: _Space) -> np.ndarray:
@@ -874,6 +1266,7 @@ def _merge(acc: np.ndarray | None, part: np.ndarray, space: _Space) -> np.ndarra
 
 def _run_local(space, bounds, threads, report):
     acc, feasible, examined, done = None, 0, 0, 0
+    total = space.candidates
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
     if threads == 1:
@@ -882,7 +1275,7 @@ def _run_local(space, bounds, threads, report):
             acc, feasible, examined, done = _merge(acc, rows, space), feasible + f, examined + c, \
                 done + 1  # fmt: skip
             if report:
-                report(done, len(bounds), examined)
+                report(examined, total)
         return acc, feasible, examined
     pool = ThreadPoolExecutor(threads, thread_name_prefix="gears.search")
     try:
@@ -900,13 +1293,14 @@ def _run_local(space, bounds, threads, report):
                 if nxt is not None:
                     pending.add(pool.submit(evaluate_chunk, space, *nxt, _LOCAL_BLOCK))
                 if report:
-                    report(done, len(bounds), examined)
+                    report(examined, total)
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
     return acc, feasible, examined
 
 
 def _run_dask(space, bounds, client, report):
+    total = space.candidates
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
     seconds = dask_timeout()
@@ -931,5 +1325,5 @@ def _run_dask(space, bounds, client, report):
         if nxt is not None:
             pending.add(client.submit(evaluate_chunk, spec, *nxt, pure=False))
         if report:
-            report(done, len(bounds), examined)
+            report(examined, total)
     return acc, feasible, examined

@@ -25,7 +25,7 @@ LAYERS = {
         ["geometry", "meshing"],
         ["rack", "cutter", "bevel"],
         ["profile", "measure", "checks", "rating", "spherical"],
-        ["generate", "crown"],
+        ["generate", "crown", "sizing"],
         ["outline", "root"],
         ["mesh", "animate", "bevel_mesh"],
         ["gear", "capacity", "render"],

@@ -186,7 +186,9 @@ def test_progress_callback_and_off(capsys):
     seen = []
     r = pairs(ratio=2, module=2, teeth=(14, 40), chunk_size=500, progress=lambda d, n: seen.append(
         (d, n)))  # fmt: skip
-    assert seen[-1] == (r.chunks, r.chunks) and len(seen) == r.chunks
+    # one call per chunk, counting candidates
+    assert seen[-1] == (r.examined, r.examined) and len(seen) == r.chunks
+    assert [d for d, _ in seen] == sorted(d for d, _ in seen)
     pairs(ratio=2, module=2, teeth=(14, 40), progress=False)
     assert capsys.readouterr().err == ""
 

@@ -251,20 +251,22 @@ def show_progress() -> bool:
 
 @contextlib.contextmanager
 def progress_bar(
-    desc: str, total: int | None = None, delay: float = 1.0
+    desc: str, total: int | None = None, delay: float = 1.0, unit: str = "block"
 ) -> Iterator[Callable[[int, int], None]]:
     """A tqdm bar on stderr (off when stderr is not a terminal; shown after ``delay`` s) and its
-    ``(done, total)`` callback, the signature of the library's ``progress=`` parameters."""
+    ``(done, total)`` callback, the signature of the library's ``progress=`` parameters; it
+    shows the units done, their rate and the time left."""
     if not show_progress():
         yield lambda done, total: None
         return
     from tqdm import tqdm
 
-    bar = tqdm(total=total, desc=desc, file=sys.stderr, leave=False, unit="block", delay=delay)
+    bar = tqdm(total=total, desc=desc, file=sys.stderr, leave=False, unit=unit, delay=delay,
+               unit_scale=unit != "block")  # fmt: skip
 
     def update(done: int, total: int) -> None:
         bar.total = total
-        bar.n = done
+        bar.update(done - bar.n)  # update(), not n =: tqdm's rate and time left follow it
         bar.refresh()
 
     try:
