@@ -111,6 +111,10 @@ def test_the_resolver_refuses_bad_addresses_with_gear_errors():
         dask_client(_closed_port(), timeout=0.5)
     with pytest.raises(GearError, match=r"timeouts\.connect"):
         dask_client(_closed_port(), timeout=float("nan"))
+    with pytest.raises(GearError, match="unknown address scheme"):
+        pairs(ratio=2, client="foo://127.0.0.1:1")
+    with pytest.raises(TrainError, match="unknown address scheme"):
+        synthesize_gearbox(37, 2, 3, client="foo://127.0.0.1:1", progress=False)
 
 
 def test_losing_the_last_worker_mid_search_is_a_gear_error():
