@@ -179,6 +179,11 @@ class BevelPair:
         set_(self, "z1", check_teeth("z1", z1))
         set_(self, "z2", check_teeth("z2", z2))
         set_(self, "module", _number("module", module, 0.0))
+        if not 1e-6 <= self.module <= 1e5:
+            raise GearError(
+                f"module = {self.module:g} mm; valid is 1e-06 <= module <= 1e+05 mm (finite "
+                "cone geometry)"
+            )
         set_(self, "face_width", _number("face_width", face_width, 0.0))
         set_(self, "shaft_angle", check_shaft_angle(shaft_angle))
         set_(self, "pressure_angle", _number("pressure_angle", pressure_angle, 0.0, 45.0))
@@ -195,9 +200,18 @@ class BevelPair:
         set_(self, "profile", profile)
         if tool_radius is None:
             full = float(full_round_radius(self.addendum, self.dedendum, self.pressure_angle))
+            # the tool tip land of the rack, less 5 %: the crown tooth on the sphere is a little
+            # narrower at its tip than the planar rack (checked exactly in _validate)
             fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
-            tool_radius = max(min(full, fits), 0.0)
+            tool_radius = max(min(full, 0.95 * fits), 0.0)
         set_(self, "tool_radius", _number("tool_radius", tool_radius, 0.0, low_open=False))
+        fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
+        if self.tool_radius > fits + 1e-12:
+            raise GearError(
+                f"tool_radius = {self.tool_radius:g} (mean modules) does not fit the tip of the "
+                f"generating crown gear's tooth; valid is 0 <= tool_radius <= {fits:.4f} for this "
+                "pressure angle, dedendum and thickness"
+            )
         self._validate()
 
     @classmethod
@@ -258,6 +272,19 @@ class BevelPair:
         self._rack(0)  # the generating tool must fit: a clear error now
         self._rack(1)
         _ = self.virtual_pair  # the virtual gears must exist (tips, roots): a clear error now
+        for gear in self.gears:
+            if gear.pitch_angle >= 90.0:
+                continue  # a crown or internal bevel wheel: its teeth are not drawn
+            try:
+                gear.tooth()
+            except GearError as exc:
+                if "tip land" not in str(exc):
+                    raise
+                raise GearError(
+                    f"tool_radius = {self.tool_radius:g} (mean modules): the generating crown "
+                    f"gear's tip rounds of gear {gear.index + 1} do not fit its tip land; valid "
+                    f"is tool_radius <= {gear._largest_tool_radius():.4f}"
+                ) from None
 
     # --- geometry --------------------------------------------------------------------------------
     @cached_property
@@ -719,6 +746,31 @@ class BevelGear:
             self.teeth, math.radians(self.pitch_angle), alpha, psi_p,
             math.radians(self.dedendum_angle), p.tool_radius * m_m / r_m, p.profile,
         )  # fmt: skip
+
+    def _largest_tool_radius(self) -> float:
+        """The largest crown-tooth tip radius (mean modules) that leaves a tip land (bisection
+        on the crown tooth's land longitude)."""
+        p, g = self.pair, self.pair.geometry
+        r_m, m_m = float(g.mean_cone_distance), float(g.mean_module)
+        lo, hi = 0.0, max(p.tool_radius, 1e-6)
+        base = dict(
+            teeth=self.teeth, pitch_angle=math.radians(self.pitch_angle),
+            pressure_angle=math.radians(p.pressure_angle),
+            crown_half_thickness=(math.pi * m_m - self.mean_thickness) / (2.0 * r_m),
+            root_angle=math.radians(self.dedendum_angle), kind=p.profile,
+        )  # fmt: skip
+
+        def fits(rho: float) -> bool:
+            try:
+                SphericalTooth(tool_radius=rho * m_m / r_m, **base)
+            except GearError:
+                return False
+            return True
+
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+        return lo
 
     @property
     def blank(self) -> BevelBlank:

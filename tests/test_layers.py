@@ -39,7 +39,7 @@ LAYERS = {
         ["willis"],
         ["power", "coaxial"],
         ["capacity"],
-        ["planetary", "catalog"],
+        ["planetary", "catalog", "differential"],
         ["synthesis", "toml_format"],
         ["gearbox"],
         ["commands", "commands._common"],

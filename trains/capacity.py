@@ -13,7 +13,8 @@ then rates each mesh built from real gears with :meth:`gears.GearPair.rating`:
 * the mesh load factor K_gamma of planet meshes defaults to :func:`load_sharing` of the planet
   count (AGMA 6123 values, as ISO 6336-1 leaves them to the designer), or is given.
 
-:meth:`trains.Planetary.rating` rates one stage this way.
+:meth:`trains.Planetary.rating` rates one stage this way. Bevel meshes
+(:class:`gears.BevelPair`) are left out of the result: their rating (ISO 10300) is not modelled.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import numbers
 from collections.abc import Iterable, Mapping
 from typing import Any
 
-from gears import Rating
+from gears import GearPair, Rating
 from gears.errors import GearError
 from trains.errors import TrainError
 from trains.power import power_flow
@@ -128,9 +129,13 @@ def rating(
                       friction=friction)  # fmt: skip
     speeds = flow.speeds
     planets = dict(getattr(train, "_planets", {}))
-    relations = [r for r in train.relations if r.pair is not None]
+    # bevel meshes (gears.BevelPair) would need ISO 10300, which is not modelled: left out
+    relations = [r for r in train.relations if isinstance(r.pair, GearPair)]
     if not relations:
-        raise TrainError("the train has no mesh of real gears to rate (build meshes with gears=)")
+        raise TrainError(
+            "the train has no mesh of real spur or helical gears to rate (build meshes with "
+            "gears=; bevel meshes are not rated: ISO 10300 is not modelled)"
+        )
     scale = max(abs(float(t)) for t in flow.torques.values())
     out: dict[str, Rating] = {}
     for r in relations:

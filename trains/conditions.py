@@ -8,7 +8,8 @@ Pure formulas (no classes, no trains): :class:`trains.willis.Train` (``Train.che
 * assembly number of identical planets between two central gears (lectures §4.3,
   standards.md §4): ``T = |z_b z_c - s_a s_b z_a z_d| / gcd(z_c, z_d)``, s = -1 for an external
   mesh and +1 for an internal one; ``k`` equally spaced planets assemble iff ``T % k == 0``;
-* neighbour gap of ``k`` planets in one row: ``2 a_w sin(pi/k) - d_a`` (Ozols §21-13);
+* neighbour gap of ``k`` planets in one row: ``2 a_w sin(pi/k) - d_a`` (Ozols §21-13), and of
+  ``k`` bevel planets on a common apex (a differential's pinions);
 * closure of a chain of centre distances between two coaxial axes: two distances must be equal
   (the reverted-train and planetary coaxiality condition ``a_w12 = a_w34``), three or more form
   a polygon that closes iff the longest side does not exceed the sum of the others.
@@ -27,7 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["assembly_number", "closure_margin", "neighbour_gap"]
+__all__ = ["assembly_number", "bevel_neighbour_gap", "closure_margin", "neighbour_gap"]
 
 
 def assembly_number(z_a, z_c, z_d, z_b, internal_a=False, internal_b=False):
@@ -65,6 +66,23 @@ def neighbour_gap(center_distance, tip_diameter, n):
     n = np.asarray(n, float)
     with np.errstate(divide="ignore"):
         out = np.where(n >= 2, 2.0 * a * np.sin(np.pi / np.maximum(n, 1.0)) - d, np.inf)
+    return out[()] if out.ndim == 0 else out
+
+
+def bevel_neighbour_gap(face_angle, reach, n):
+    """Gap between ``n`` equally spaced bevel planets on a common apex (the pinions of a
+    differential), mm: their axes are ``360/n`` deg apart and each face cone (half angle
+    ``face_angle`` deg) reaches ``reach`` mm from the apex at its outer tips, so the cones clear
+    each other by ``reach (2 pi / n - 2 delta_a)`` (an arc at the outer tips); infinite for one.
+
+    >>> round(float(bevel_neighbour_gap(36.0, 30.0, 4)), 4)   # 30 mm x (90 - 72) deg
+    9.4248
+    """
+    da = np.radians(np.asarray(face_angle, float))
+    r = np.asarray(reach, float)
+    n = np.asarray(n, float)
+    with np.errstate(divide="ignore"):
+        out = np.where(n >= 2, r * (2.0 * np.pi / np.maximum(n, 1.0) - 2.0 * da), np.inf)
     return out[()] if out.ndim == 0 else out
 
 

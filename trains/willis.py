@@ -49,8 +49,13 @@ from typing import Any
 
 import numpy as np
 
-from gears import Finding, Gear, GearError, GearPair, Report
-from trains.conditions import assembly_number, closure_margin, neighbour_gap
+from gears import BevelPair, Finding, Gear, GearError, GearPair, Report
+from trains.conditions import (
+    assembly_number,
+    bevel_neighbour_gap,
+    closure_margin,
+    neighbour_gap,
+)
 from trains.errors import TrainError
 
 FRAME = "frame"
@@ -93,8 +98,12 @@ class Relation:
         True for an internal mesh.
     gears : (Gear, Gear) or None
         The real gears on ``a`` and ``b`` of a mesh built from gears (None: kinematic only).
-    pair : GearPair or None
-        Their :class:`gears.GearPair` (the external gear is its ``g1``).
+    pair : GearPair or BevelPair or None
+        Their :class:`gears.GearPair` (the external gear is its ``g1``) or
+        :class:`gears.BevelPair`.
+    opposed : bool
+        A bevel mesh whose members' speeds are counted about axes of opposite sense relative
+        to the common apex (the sign of ``k_b`` is turned, as for an internal mesh).
     """
 
     kind: str
@@ -107,7 +116,8 @@ class Relation:
     teeth: tuple[int, int] | None = None
     internal: bool = False
     gears: tuple[Gear, Gear] | None = field(default=None, compare=False, repr=False)
-    pair: GearPair | None = field(default=None, compare=False, repr=False)
+    pair: GearPair | BevelPair | None = field(default=None, compare=False, repr=False)
+    opposed: bool = False
 
     def gear_of(self, member: str) -> tuple[Gear, float] | None:
         """The gear on ``member`` in this mesh and its tip diameter as mounted (with the pair's
@@ -474,7 +484,8 @@ class Train:
         internal: bool | None = None,
         name: str | None = None,
         gears: tuple[Gear, Gear] | None = None,
-        pair: GearPair | None = None,
+        pair: GearPair | BevelPair | None = None,
+        opposed: bool = False,
     ) -> None:
         """Add one mesh: ``(w_a - w_c)/(w_b - w_c) = -z_b/z_a`` (``+z_b/z_a`` if internal).
 
@@ -501,9 +512,15 @@ class Train:
         gears : (Gear, Gear), optional
             The gear on ``a`` and the gear on ``b``; at most one internal (the ring may sit on
             either member).
-        pair : GearPair, optional
+        pair : GearPair or BevelPair, optional
             A ready pair: its ``g1`` sits on ``a`` and its ``g2`` on ``b`` (a pair keeps its own
-            tip-shortening choice).
+            tip-shortening choice). A :class:`gears.BevelPair` makes a bevel mesh: with both
+            speeds counted about the axes pointing away from the common apex it is an external
+            mesh (``z_a w_a + z_b w_b = 0`` relative to the carrier; docs/bevel.md).
+        opposed : bool
+            Bevel meshes only: True when the speeds of ``a`` and ``b`` are counted about axes of
+            opposite sense relative to the apex (both side gears of a differential about the one
+            axle direction): then ``(w_a - w_c)/(w_b - w_c) = +z_b/z_a``.
 
         Raises
         ------
@@ -532,6 +549,13 @@ class Train:
         (Fraction(-40, 17), 57.0)
         """
         real, pair = self._gears_of(a, b, gears, pair, name)
+        if not isinstance(opposed, bool):
+            raise TrainError(f"mesh {a}-{b}: opposed = {opposed!r}; valid is True or False")
+        if opposed and not isinstance(pair, BevelPair):
+            raise TrainError(
+                f"mesh {a}-{b}: opposed=True applies to bevel meshes (pair=BevelPair(...)); a "
+                "kinematic bevel relation is Train.link(..., ratio=...)"
+            )
         if real is not None:
             zg = (real[0].teeth, real[1].teeth)
             if teeth is not None:
@@ -553,8 +577,9 @@ class Train:
             raise TrainError(f"teeth must be a pair (z_a, z_b), got {teeth!r}")
         za, zb = _teeth(teeth[0], "first"), _teeth(teeth[1], "second")
         internal = bool(internal)
-        self._add("mesh", a, b, carrier, za, -zb if internal else zb, name, teeth=(za, zb),
-                  internal=internal, gears=real, pair=pair)  # fmt: skip
+        self._add("mesh", a, b, carrier, za, -zb if internal or opposed else zb, name,
+                  teeth=(za, zb), internal=internal, gears=real, pair=pair,
+                  opposed=opposed)  # fmt: skip
 
     @staticmethod
     def _gears_of(
@@ -565,9 +590,15 @@ class Train:
             return None, None
         if gears is not None and pair is not None:
             raise TrainError(f"{where}: give gears=(g_a, g_b) or pair=, not both")
+        if isinstance(pair, BevelPair):
+            if gears is not None:
+                raise TrainError(f"{where}: give gears=(g_a, g_b) or pair=, not both")
+            return (pair.g1, pair.g2), pair
         if pair is not None:
             if not isinstance(pair, GearPair):
-                raise TrainError(f"{where}: pair must be a gears.GearPair, got {pair!r}")
+                raise TrainError(
+                    f"{where}: pair must be a gears.GearPair or gears.BevelPair, got {pair!r}"
+                )
             if pair.is_rack:
                 raise TrainError(
                     f"{where}: a pinion and rack has no second axis; use Train.link for it"
@@ -734,7 +765,8 @@ class Train:
         meshes on its carrier with real gears, which turn about the carrier's axis)."""
         groups = list(self._coaxial)
         for planet, central, _carrier in self._planet_meshes():
-            real = [r for r in central if r.pair is not None]
+            # bevel meshes (intersecting axes) put their central members on one axis by design
+            real = [r for r in central if isinstance(r.pair, GearPair)]
             members = tuple(dict.fromkeys(r.b if r.a == planet else r.a for r in real))
             if len(members) >= 2 and not any(set(members) <= set(g) for g in groups):
                 groups.append(members)
@@ -829,7 +861,7 @@ class Train:
         edges: dict[str, list[tuple[str, Relation]]] = {}
         for r in self._relations:
             a, b = axis(r.a), axis(r.b)
-            if r.kind == "mesh" and r.pair is not None and a != b:
+            if r.kind == "mesh" and isinstance(r.pair, GearPair) and a != b:
                 edges.setdefault(a, []).append((b, r))
                 edges.setdefault(b, []).append((a, r))
         axes = list(dict.fromkeys(axis(m) for m in group))
@@ -912,7 +944,7 @@ class Train:
                     z.append(
                         (r.teeth[1] if on_a else r.teeth[0], r.teeth[0] if on_a else r.teeth[1])
                     )
-                    internal.append(r.internal)
+                    internal.append(r.internal or r.opposed)
                 (za, zc), (zb, zd) = z
                 t = int(assembly_number(za, zc, zd, zb, internal[0], internal[1]))
                 rem = t % k if t else 0
@@ -930,6 +962,9 @@ class Train:
                 if got is not None:
                     tips.append(got[1])
                     modules.append(got[0].module)
+            if isinstance(real[0].pair, BevelPair):
+                out.append(self._bevel_neighbour(planet, real[0], k, clearance))
+                continue
             tips_by_gear = max(tips)
             a = real[0].pair.center_distance
             gap = float(neighbour_gap(a, tips_by_gear, k))
@@ -940,6 +975,22 @@ class Train:
                 f" {tips_by_gear:.4f} mm) {gap:.4f} mm vs clearance {need:.4f} mm",
             ))  # fmt: skip
         return out
+
+    @staticmethod
+    def _bevel_neighbour(planet: str, r: Relation, k: int, clearance: float) -> Finding:
+        """``k`` bevel planets on a common apex, their axes 360/k deg apart (a differential's
+        pinions): the gap between their face cones at the outer tips
+        (:func:`trains.conditions.bevel_neighbour_gap`) against ``clearance`` modules."""
+        gear = r.gears[0] if r.a == planet else r.gears[1]
+        reach = math.hypot(gear.cone_distance, gear.addendum)
+        gap = float(bevel_neighbour_gap(gear.face_angle, reach, k))
+        need = clearance * gear.module
+        return Finding(
+            f"{planet}.neighbour", gap - need,
+            f"{k} bevel planets {planet} (face cone {gear.face_angle:.4f} deg, outer tips "
+            f"{reach:.4f} mm from the apex): gap between neighbours {gap:.4f} mm vs clearance "
+            f"{need:.4f} mm",
+        )  # fmt: skip
 
     def _known_names(self) -> str:
         return ", ".join(sorted(self._members))

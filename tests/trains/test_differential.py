@@ -1,0 +1,214 @@
+"""The bevel differential on real bevel gears (issue 19): trains.Differential, bevel meshes in
+Train (check, power_flow, rating), the 3D scene through a turn.
+
+Reference values and their sources:
+- Ozols (7.9), the car differential: w_left + w_right = 2 w_case; the seeds' kinematic model
+  trains.catalog.bevel_differential (tested against Ozols in test_worked_examples.py) for the
+  pinion's spin in the case;
+- the assembly condition of equally spaced pinions: the generic assembly number T of lectures
+  §4.3 (trains.conditions.assembly_number) counts 2 z_side for this train, so 2 z_side / n_pinions
+  must be an integer (independent count: pinion k sits 360 k / n around the axle, and the side
+  gears' tooth positions repeat every 360 / z_side, seen from both sides, i.e. 180 / z_side);
+- Ozols (14.25) on the Tredgold pair for the mesh losses (gears.BevelPair.mesh_efficiency);
+- manifold3d boolean volumes for interpenetration (as tests/gears/test_mesh.py).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from gears import BevelPair, Gear
+from trains import Differential, Train, TrainError, bevel_differential, power_flow, rating
+
+GLEASON = {"module": 3, "gleason": True}
+
+
+@pytest.mark.parametrize(("left", "right"), [(90, 110), (0, 200), (100, 100), (-50, 50)])
+def test_willis_relation_case_is_the_mean(left, right):
+    d = Differential(16, 10, **GLEASON)
+    m = d.solve(left=left, right=right)
+    assert m["case"] == Fraction(left + right, 2)  # Ozols (7.9), exact
+    # the seeds' kinematic model gives the same pinion spin in the case
+    k = bevel_differential(16, 10).solve(carrier=m["case"], left=left)
+    assert m.relative("pinion", "case") == k.relative("pinion", "carrier")
+    assert m.relative("pinion", "case") == Fraction(16, 10) * (m["case"] - right)
+
+
+def test_a_wheel_held_and_the_case_held():
+    d = Differential(16, 10, **GLEASON)
+    assert d.solve(left=0, case=100)["right"] == 200  # Ozols: w1 = 0 gives w2 = 2 w_H
+    assert d.solve(case=0, left=30)["right"] == -30  # w_H = 0 gives w1 = -w2
+    assert d.train.ratio("case", "right", fixed=["left"]) == Fraction(1, 2)
+
+
+def test_check_reports_every_mesh_and_the_pinion_conditions():
+    d = Differential(16, 10, **GLEASON)
+    r = d.check()
+    assert r.ok, r.failed()
+    for mesh in ("pinion-right", "pinion-left"):
+        assert f"{mesh}.contact_ratio" in r and f"{mesh}.face_width" in r
+    assert r["pinion.assembly"].message.find("T = 32") > 0
+    assert "coaxiality(right, left)" not in r  # bevel meshes set the axle by design
+    # four pinions of 12 teeth on 12-tooth side gears: face cones 2 x 48.x deg > 90 deg
+    crowded = Differential(12, 12, n_pinions=4, module=3)
+    f = crowded.check()["pinion.neighbour"]
+    assert not f.ok and f.margin < 0
+    assert crowded.check()["pinion.assembly"].ok  # 24 / 4 = 6
+
+
+@pytest.mark.parametrize(("side", "n", "ok"), [(16, 2, True), (15, 3, True), (15, 4, False),
+                                                 (16, 3, False), (13, 2, True)])  # fmt: skip
+def test_assembly_condition_reported_and_refused(side, n, ok):
+    d = Differential(side, 10, n_pinions=n, **GLEASON)
+    f = d.check()["pinion.assembly"]
+    assert f.ok == ok == ((2 * side) % n == 0)
+    if ok:
+        d.placements(5.0, 0.9, 1.1)
+    else:
+        assert f.margin < 0
+        with pytest.raises(TrainError, match=r"2 z_side / n_pinions = .* is not an integer"):
+            d.scene(tolerance=0.2)
+
+
+def _overlaps(sc):
+    from gears.mesh import to_manifold
+
+    solids = {n: to_manifold(sc.geometry[sc.graph[n][1]], sc.graph[n][0])
+              for n in sc.graph.nodes_geometry}  # fmt: skip
+    names = sorted(solids)
+    worst, gaps = 0.0, {}
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            worst = max(worst, (solids[a] ^ solids[b]).volume())
+            if ("pinion" in a) != ("pinion" in b):
+                gaps[(a, b)] = solids[a].min_gap(solids[b], 1.0)
+    return worst, gaps
+
+
+@pytest.mark.parametrize(("side", "pinion", "n"), [(16, 10, 2), (15, 10, 3)])
+def test_scene_is_overlap_free_through_a_turn(side, pinion, n):
+    pytest.importorskip("manifold3d")
+    d = Differential(side, pinion, n_pinions=n, **GLEASON)
+    tol = 0.02
+    for angle in (0.0, 7.0, 23.0, 41.0):
+        worst, gaps = _overlaps(d.scene(angle, left=0.8, right=1.2, tolerance=tol))
+        assert worst <= 1e-6, angle  # no interpenetration ...
+        assert len(gaps) == 2 * n and max(gaps.values()) <= tol  # ... and every mesh engaged
+    sc = d.scene(tolerance=tol)
+    assert sorted(sc.graph.nodes_geometry)[:2] == ["left", "pinion1"]
+    assert len(sc.geometry) == 2  # one side-gear mesh, one pinion mesh, instanced
+
+
+def test_scene_turns_members_by_their_speeds():
+    import numpy as np
+
+    d = Differential(16, 10, **GLEASON)
+    p0, p1 = d.placements(0.0, 0.9, 1.1), d.placements(10.0, 0.9, 1.1)
+
+    def turned(a, b, axis):
+        r = a[:3, :3].T @ b[:3, :3]  # the member's own turn between the frames
+        return math.degrees(math.atan2(r[1, 0], r[0, 0])), np.allclose(a[:3, 2], axis)
+
+    # the faster wheel turns by the angle, the others in proportion to their speeds
+    assert turned(p0["right"], p1["right"], [0, 1, 0])[0] == pytest.approx(10.0)
+    assert turned(p0["left"], p1["left"], [0, -1, 0])[0] == pytest.approx(-10 * 0.9 / 1.1)
+    # the pinions ride on the case (10 / 1.1 deg about the axle)
+    axis0 = p0["pinion1"][:3, 2]
+    axis1 = p1["pinion1"][:3, 2]
+    assert math.degrees(math.acos(float(axis0 @ axis1))) == pytest.approx(10.0 / 1.1)
+
+
+def test_power_flow_with_friction_on_bevel_meshes():
+    d = Differential(16, 10, **GLEASON)
+    flow = power_flow(d.train, "case", "left", fixed=["right"], friction=0.06)
+    eta = d.pair.mesh_efficiency(0.06)
+    z = d.pair.virtual_teeth
+    eps = d.pair.contact_ratio
+    assert eta == pytest.approx(1 - math.pi * 0.06 * eps / 2 * (1 / z[0] + 1 / z[1]))
+    assert 0.9 < flow.efficiency < 1.0
+    for name in ("pinion-right", "pinion-left"):
+        assert flow.relations[name].loss > 0
+
+
+def test_rating_leaves_bevel_meshes_out():
+    d = Differential(16, 10, **GLEASON)
+    t = d.train
+    with pytest.raises(TrainError, match="ISO 10300"):
+        rating(t, "case", "left", fixed=["right"], torque=100, speed=500)
+    # a spur final drive on the case is rated; the bevel meshes are left out
+    t.mesh("input", "case", gears=(Gear(13, 4, face_width=30), Gear(41, 4, face_width=30)),
+           name="final-drive")  # fmt: skip
+    r = rating(t, "input", "left", fixed=["right"], torque=100, speed=1500)
+    assert list(r) == ["final-drive"]
+
+
+def test_train_bevel_mesh_input_is_checked():
+    t = Train()
+    p = BevelPair(10, 16, 3, 8)
+    with pytest.raises(TrainError, match="opposed=True applies to bevel meshes"):
+        t.mesh("a", "b", teeth=(10, 16), opposed=True)
+    with pytest.raises(TrainError, match="opposed"):
+        t.mesh("a", "b", pair=p, opposed="yes")
+    with pytest.raises(TrainError, match=r"GearPair or gears\.BevelPair"):
+        t.mesh("a", "b", pair="pair")
+    t.mesh("a", "b", pair=p)
+    assert t.ratio("a", "b") == Fraction(-16, 10)  # an external mesh about outward axes
+    t.mesh("a", "c", pair=p, opposed=True)
+    assert t.ratio("a", "c") == Fraction(16, 10)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"side": 0}, "side"),
+        ({"pinion": 2.5}, "pinion"),
+        ({"n_pinions": 0}, "n_pinions"),
+        ({"module": -1}, "module"),
+        ({"face_width": 500.0}, "face_width"),
+        ({"gleason": "yes"}, "gleason"),
+    ],
+)
+def test_bad_input_names_the_value(kwargs, match):
+    with pytest.raises(TrainError, match=match):
+        Differential(**{"side": 16, "pinion": 10, "module": 3, **kwargs})
+
+
+def test_animation_cornering(tmp_path):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    d = Differential(16, 10, **GLEASON)
+    out = d.animate(tmp_path / "diff.gif", frames=3, tolerance=0.3)
+    with Image.open(out) as im:
+        assert im.n_frames == 3
+    with pytest.raises(TrainError, match="frames"):
+        d.animate(tmp_path / "x.gif", frames=0)
+    with pytest.raises(TrainError, match="left"):
+        d.scene(left=float("nan"))
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    side=st.integers(1, 60),
+    pinion=st.integers(1, 40),
+    n=st.integers(1, 8),
+    module=st.floats(0.1, 20),
+    left=st.integers(-1000, 1000),
+    right=st.integers(-1000, 1000),
+)
+def test_property_finite_answer_or_train_error(side, pinion, n, module, left, right):
+    try:
+        d = Differential(side, pinion, n_pinions=n, module=module)
+    except TrainError as exc:
+        assert str(exc)
+        return
+    m = d.solve(left=left, right=right)
+    assert 2 * m["case"] == left + right
+    r = d.check()
+    if n >= 2:  # one pinion has no neighbour to assemble with
+        assert r["pinion.assembly"].ok == ((2 * side) % n == 0)
