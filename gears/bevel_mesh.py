@@ -35,13 +35,11 @@ from typing import NamedTuple
 
 import numpy as np
 
+from gears.budget import check_budget
 from gears.errors import GearError
 from gears.spherical import SphericalTooth, direction, polar
 
-__all__ = ["MAX_BEVEL_VERTICES", "BevelBlank", "bevel_placement", "bevel_solid", "rotation"]
-
-#: Largest vertex count of one bevel solid (a guard against a tolerance far below what is useful).
-MAX_BEVEL_VERTICES = 4_000_000
+__all__ = ["BevelBlank", "bevel_placement", "bevel_solid", "rotation", "solid_estimate"]
 
 
 class BevelBlank(NamedTuple):
@@ -172,7 +170,8 @@ def bevel_solid(
     theta_lo = tooth.root_polar
     t_max = float(np.max(back.distance(np.array([theta_lo, max(tips)]))))
     eps = tolerance / t_max
-    _check_budget(eps, z, len(f_levels), tolerance)
+    check_budget("mesh", f"the bevel solid of z = {z}",
+                 solid_estimate(tooth, blank, back_cone, len(f_levels)), tolerance)  # fmt: skip
     half = tooth.conical_half(eps, max(tips))
     n_con = len(half.y)
     # one half profile per level: (theta, azimuth from the space centre, tau)
@@ -220,23 +219,34 @@ def bevel_solid(
         faces.append(_zipper(bores[0], steps, bores[1], steps, float(bore_steps))[:, ::-1])
     v = np.concatenate(verts)
     fc = np.concatenate([np.asarray(x, dtype=np.int64).reshape(-1, 3) for x in faces])
-    if len(v) > MAX_BEVEL_VERTICES:
-        raise GearError(
-            f"the bevel solid takes {len(v)} vertices, over the budget of {MAX_BEVEL_VERTICES}; "
-            f"use a coarser tolerance (now {tolerance:g} mm)"
-        )
     return trimesh.Trimesh(v, fc, process=False)
 
 
-def _check_budget(eps: float, z: int, n_levels: int, tolerance: float) -> None:
-    """Refuse a solid whose estimated vertex count exceeds :data:`MAX_BEVEL_VERTICES` before
-    any sampling: a half tooth space takes about ``0.4 / sqrt(eps)`` vertices (measured on
-    the KHK pairs: 31 at eps = 1.4e-4 rad), a tooth four halves with its end faces."""
-    from gears.profile import check_size  # the budget rule of the outlines
+def solid_estimate(tooth: SphericalTooth, blank: BevelBlank, back_cone: bool = True,
+                   n_levels: int = 2):  # fmt: skip
+    """The vertex count of :func:`bevel_solid` as a function of the tolerance (mm), for the
+    budget check before any sampling (:func:`gears.budget.check_budget`): a half tooth space
+    takes about ``0.4 / sqrt(eps) + 8`` vertices on the unit sphere (measured on the KHK pairs:
+    31 at eps = 1.4e-4 rad; eps = tolerance / t_max), each level a ring of ``2 z`` halves, each
+    end face a strip of ``k + 1`` columns per row (``k`` from the end surface's curvature,
+    :func:`_end_face`)."""
+    z = tooth.z
+    back = _End(
+        blank.cone_distance * np.array([math.sin(blank.pitch_angle), math.cos(blank.pitch_angle)]),
+        np.array([math.cos(blank.pitch_angle), -math.sin(blank.pitch_angle)])
+        if back_cone else np.array([1.0, 0.0]),
+    )  # fmt: skip
+    t_max = float(np.max(back.distance(np.array([tooth.root_polar, blank.face_angle]))))
+    r_in = (blank.cone_distance - blank.face_width) * math.sin(tooth.root_polar)
+    kappa = 0.0 if not back_cone else abs(back.d[1]) / max(r_in, 1e-12)
+    width = 2.0 * math.pi * blank.cone_distance * math.sin(blank.pitch_angle) / z
 
-    per_half = 0.4 / math.sqrt(eps) + 8
-    check_size(z * per_half * 2 * (n_levels + 4), f"the bevel solid of z = {z}", tolerance,
-               MAX_BEVEL_VERTICES)  # fmt: skip
+    def vertices(tolerance: float) -> float:
+        half = 0.4 / math.sqrt(tolerance / t_max) + 8.0
+        k = 1.0 + width * math.sqrt(kappa / (2.0 * tolerance))
+        return z * half * 2.0 * (n_levels + k + 2.0)
+
+    return vertices
 
 
 def _level_fractions(tooth: SphericalTooth, levels: _Levels, tolerance: float) -> list[float]:

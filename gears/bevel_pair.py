@@ -16,7 +16,15 @@ from functools import cached_property
 
 import numpy as np
 
-from gears.animate import check_frames
+from gears.arguments import (
+    check_angle,
+    check_flag,
+    check_fps,
+    check_frames,
+    check_module,
+    check_positive,
+    check_tolerance,
+)
 from gears.bevel import (
     CLEARANCES,
     BevelGeometry,
@@ -27,7 +35,8 @@ from gears.bevel import (
     gleason_coefficients,
     max_face_width,
 )
-from gears.bevel_mesh import BevelBlank, bevel_placement, bevel_solid
+from gears.bevel_mesh import BevelBlank, bevel_placement, bevel_solid, solid_estimate
+from gears.budget import check_budget
 from gears.checks import pointed_tip_margin
 from gears.errors import GearError
 from gears.gear import Gear
@@ -38,7 +47,14 @@ from gears.rack import BasicRack
 from gears.report import Finding, Report
 from gears.spherical import SphericalTooth
 
-__all__ = ["PROFILES", "BevelGear", "BevelPair", "VirtualGear"]
+__all__ = [
+    "ANIMATION_BUDGET_3D",
+    "DRAWN_PER_VERTEX",
+    "PROFILES",
+    "BevelGear",
+    "BevelPair",
+    "VirtualGear",
+]
 
 #: The tooth forms a bevel pair can be drawn with (docs/bevel.md, "Octoid or spherical involute").
 PROFILES = ("octoid", "spherical_involute")
@@ -85,12 +101,12 @@ def _placed(mesh, matrix) -> np.ndarray:
     return mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
 
 
-def _positive(name: str, value) -> float:
-    """A finite number > 0 (mm), or a GearError naming it; the finest tolerance is 1e-6 mm."""
-    v = check_real(name, value, 0.0)
-    if name == "tolerance" and v < 1e-6:
-        raise GearError(f"tolerance = {v:g} mm; valid is >= 1e-06 mm (the finest honoured)")
-    return v
+#: Triangle vertices a 3D animation draws per vertex of its solids and frame (about half the
+#: faces face the camera, two faces a vertex, three vertices a face: measured 2.9 on the pairs).
+DRAWN_PER_VERTEX = 3.0
+#: The work budget of a 3D animation, in triangle vertices drawn over all frames: Pillow fills
+#: about 3 us a vertex on one free core (10 us under a load of 6), so 15 to 50 s at most.
+ANIMATION_BUDGET_3D = 5_000_000
 
 
 def _backlash(backlash, thickness: float) -> float:
@@ -178,12 +194,7 @@ class BevelPair:
         set_ = object.__setattr__
         set_(self, "z1", check_teeth("z1", z1))
         set_(self, "z2", check_teeth("z2", z2))
-        set_(self, "module", _number("module", module, 0.0))
-        if not 1e-6 <= self.module <= 1e5:
-            raise GearError(
-                f"module = {self.module:g} mm; valid is 1e-06 <= module <= 1e+05 mm (finite "
-                "cone geometry)"
-            )
+        set_(self, "module", check_module(module))
         set_(self, "face_width", _number("face_width", face_width, 0.0))
         set_(self, "shaft_angle", check_shaft_angle(shaft_angle))
         set_(self, "pressure_angle", _number("pressure_angle", pressure_angle, 0.0, 45.0))
@@ -452,6 +463,11 @@ class BevelPair:
         ['gear1', 'gear2']
         """
         p1, p2 = self.placement(angle)
+        tolerance = check_tolerance(tolerance, module=self.module)
+        check_budget(
+            "mesh", f"the scene of the bevel pair {self.z1}/{self.z2}",
+            lambda t: sum(g._vertices(back_cone)(t) for g in self.gears), tolerance,
+        )  # fmt: skip
         m1 = self.g1.mesh(tolerance, bore, back_cone, backlash)
         m2 = self.g2.mesh(tolerance, bore, back_cone, backlash)
         return scene([("gear1", m1, p1, COLOURS["gear1"]), ("gear2", m2, p2, COLOURS["gear2"])])
@@ -468,7 +484,14 @@ class BevelPair:
         from gears.render import Camera, write_animation_3d
 
         n = check_frames(frames)
-        turn = 360.0 / self.z1 if turn is None else check_real("turn", turn)
+        fps = check_fps(fps)
+        turn = 360.0 / self.z1 if turn is None else check_angle("turn", turn)
+        tolerance = check_tolerance(tolerance, module=self.module)
+        check_budget(
+            "animation", f"{n} frames of the bevel pair {self.z1}/{self.z2}",
+            lambda t: n * DRAWN_PER_VERTEX * sum(g._vertices(True)(t) for g in self.gears),
+            tolerance, hint="fewer frames", budget=ANIMATION_BUDGET_3D,
+        )  # fmt: skip
         m1 = self.g1.mesh(tolerance, backlash=backlash)
         m2 = self.g2.mesh(tolerance, backlash=backlash)
         c1, c2 = COLOURS["gear1"], COLOURS["gear2"]
@@ -800,12 +823,15 @@ class BevelGear:
         >>> m.is_watertight, m.is_winding_consistent, bool(m.volume > 0)
         (True, True, True)
         """
-        tolerance = _positive("tolerance", tolerance)
+        tolerance = check_tolerance(tolerance, module=self.module)
         if bore is not None:
-            bore = _positive("bore", bore)
-        if not isinstance(back_cone, bool):
-            raise GearError(f"back_cone = {back_cone!r}; valid is True or False")
+            bore = check_positive("bore", bore)
+        back_cone = check_flag("back_cone", back_cone)
         return bevel_solid(self.tooth(backlash), self.blank, tolerance, bore, back_cone)
+
+    def _vertices(self, back_cone: bool = True):
+        """The solid's vertex count as a function of the tolerance (the budget's estimate)."""
+        return solid_estimate(self.tooth(), self.blank, back_cone, 4)
 
     def check(self, min_tip_land: float = 0.2) -> Report:
         """This gear's findings of :meth:`BevelPair.check` (without the ``gN.`` prefix)."""

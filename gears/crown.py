@@ -21,14 +21,12 @@ import math
 import numpy as np
 import shapely
 
+from gears.budget import check_budget
 from gears.errors import GearError
-from gears.profile import check_size
 from gears.spherical import SphericalTooth, _adaptive, _rotate, direction
 
-__all__ = ["MAX_PLACED_VERTICES", "crown_positions", "crown_space", "gnomonic"]
+__all__ = ["crown_positions", "crown_space", "gnomonic"]
 
-#: Largest simulation in tool vertices placed (positions x tool polygon), as gears.generate's.
-MAX_PLACED_VERTICES = 20_000_000
 _EZ = np.array([0.0, 0.0, 1.0])
 
 
@@ -90,21 +88,28 @@ def crown_positions(tooth: SphericalTooth, eps: float, theta_tip: float) -> np.n
     return np.concatenate([-half[:0:-1], half])
 
 
-def crown_space(tooth: SphericalTooth, eps: float, theta_tip: float) -> shapely.Geometry:
-    """One tooth space cut by the crown gear (centred on azimuth 0), as a shapely geometry in
-    the gnomonic plane of :func:`gnomonic`, clipped by the tip circle ``theta_tip``.
+def crown_space(tooth: SphericalTooth, tolerance: float, distance: float,
+                theta_tip: float) -> shapely.Geometry:  # fmt: skip
+    """One tooth space cut by the crown gear (centred on azimuth 0) on the sphere of radius
+    ``distance`` (mm) about the apex, to ``tolerance`` (mm), as a shapely geometry in the
+    gnomonic plane of :func:`gnomonic` (unit sphere), clipped by the tip circle ``theta_tip``.
 
     Raises
     ------
     GearError
-        When the simulation would place more than :data:`MAX_PLACED_VERTICES` tool vertices;
-        the message names the size and the coarsest tolerance that fits.
+        When the simulation would place more tool vertices than the simulation budget of
+        :mod:`gears.budget`; the message names the size and the coarsest tolerance that fits.
     """
     depth = theta_tip - tooth.delta + 0.05
+
+    def placed(tol: float) -> float:
+        e = tol / distance
+        return len(_tool(tooth, e, depth)) * len(crown_positions(tooth, e, theta_tip))
+
+    check_budget("simulation", f"the crown simulation of z = {tooth.z}", placed, tolerance)
+    eps = tolerance / distance
     tool = _tool(tooth, eps, depth)
     phis = crown_positions(tooth, eps, theta_tip)
-    check_size(len(tool) * len(phis), f"the crown simulation of z = {tooth.z}", eps,
-               MAX_PLACED_VERTICES)  # fmt: skip
     polys = []
     for phi in phis:
         y = _rotate(tool, tooth.ec, tooth.sigma * phi)

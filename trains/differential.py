@@ -216,9 +216,19 @@ class Differential:
         >>> sorted(sc.graph.nodes_geometry), len(sc.geometry)
         (['left', 'pinion1', 'pinion2', 'right'], 2)
         """
+        from gears.arguments import check_tolerance
+        from gears.budget import check_budget
         from gears.mesh import scene
 
         place = self.placements(angle, left, right)
+        try:
+            tolerance = check_tolerance(tolerance, module=self.module)
+            check_budget(
+                "mesh", f"the scene of the differential {self.side}/{self.pinion}",
+                lambda t: self.pair.g1._vertices()(t) + self.pair.g2._vertices()(t), tolerance,
+            )  # fmt: skip
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
         side, pinion = self._solids(tolerance, backlash, bore)
         parts = [("left", side, place["left"], COLOURS["side"]),
                  ("right", side, place["right"], COLOURS["side"])]  # fmt: skip
@@ -238,11 +248,22 @@ class Differential:
         every member in proportion (:meth:`placements`), seen from ``elevation`` and ``azimuth``
         degrees
         (:func:`gears.render.write_animation_3d`; ``progress(i, n)`` after each frame)."""
-        from gears.animate import check_frames
+        from gears.arguments import check_frames, check_tolerance
+        from gears.bevel_pair import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
+        from gears.budget import check_budget
         from gears.render import Camera, write_animation_3d
 
         try:
             n = check_frames(frames)
+            tolerance = check_tolerance(tolerance, module=self.module)
+            # every placed part is drawn: two side gears and the pinions
+            g1, g2 = self.pair.g1, self.pair.g2
+            check_budget(
+                "animation", f"{n} frames of the differential {self.side}/{self.pinion}",
+                lambda t: n * DRAWN_PER_VERTEX * (2 * g2._vertices()(t)
+                                                  + self.n_pinions * g1._vertices()(t)),
+                tolerance, hint="fewer frames", budget=ANIMATION_BUDGET_3D,
+            )  # fmt: skip
         except GearError as exc:
             raise TrainError(str(exc)) from None
         turn = 2 * 360.0 / self.pinion if turn is None else turn

@@ -246,7 +246,7 @@ def test_crown_simulation_agrees_with_the_envelope(undercut):
     assert tooth.undercut == undercut
     eps = 2e-4
     tip = math.radians(p.g1.face_angle)
-    space = crown_space(tooth, eps, tip)
+    space = crown_space(tooth, eps * p.cone_distance, p.cone_distance, tip)
     half = tooth.conical_half(eps / 20, tip - 1e-4)
     exact = gnomonic(tooth, half.y)
     exact = np.concatenate([exact[::-1] * [-1, 1], exact])

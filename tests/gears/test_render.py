@@ -28,7 +28,7 @@ def test_picture_of_a_scene(tmp_path):
     sc = BevelPair(20, 40, module=3, face_width=20).scene(tolerance=0.1)
     parts = scene_parts(sc)
     assert len(parts) == 2 and all(len(v) > 100 for v, _, _ in parts)
-    f = render_image(tmp_path / "pair.png", parts, Camera(30, -40), size=3, dpi=60)
+    f = render_image(tmp_path / "pair.png", parts, Camera(30, -40), size=180)
     img = np.asarray(Image.open(f).convert("RGB"), float)
     assert img.shape[:2] == (180, 180)
     # both gears' colours appear (blue and orange, shaded)
@@ -57,7 +57,7 @@ def test_animation_writes_every_frame(tmp_path):
         v, f, c = _box()
         return [(v + np.array([i * 0.1, 0.0, 0.0]), f, c)]
 
-    out = write_animation_3d(tmp_path / "a.gif", frame, 4, fps=5, size=2, dpi=40)
+    out = write_animation_3d(tmp_path / "a.gif", frame, 4, fps=5, size=80)
     with Image.open(out) as im:
         assert im.format == "GIF" and im.n_frames == 4
 

@@ -165,6 +165,9 @@ def run(args: argparse.Namespace) -> int:
     if args.animate is not None:
         tol = 0.05 if args.tolerance is None else args.tolerance
         frames = 24 if args.frames is None else args.frames
-        pair.animate(args.animate, frames=frames, tolerance=tol)
+        from trains.commands._common import progress_bar
+
+        with progress_bar("frames", frames) as bar:
+            pair.animate(args.animate, frames=frames, tolerance=tol, progress=bar)
         print(f"wrote {args.animate} ({frames} frames: the pinion turning by one pitch)")
     return OK if report.ok else CHECK_FAILED

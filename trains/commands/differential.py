@@ -133,6 +133,10 @@ def run(args: argparse.Namespace) -> int:
     if args.animate is not None:
         tol = 0.05 if args.tolerance is None else args.tolerance
         frames = 36 if args.frames is None else args.frames
-        d.animate(args.animate, frames=frames, left=args.left, right=args.right, tolerance=tol)
+        from trains.commands._common import progress_bar
+
+        with progress_bar("frames", frames) as bar:
+            d.animate(args.animate, frames=frames, left=args.left, right=args.right,
+                      tolerance=tol, progress=bar)  # fmt: skip
         print(f"wrote {args.animate} ({frames} frames turning through a corner)")
     return OK if report.ok else CHECK_FAILED
