@@ -133,8 +133,8 @@ def rating(
     relations = [r for r in train.relations if isinstance(r.pair, GearPair)]
     if not relations:
         raise TrainError(
-            "the train has no mesh of real spur or helical gears to rate (build meshes with "
-            "gears=; bevel meshes are not rated: ISO 10300 is not modelled)"
+            "the train has no mesh of real gears to rate (build meshes with gears=; bevel "
+            "meshes are not rated: ISO 10300 is not modelled)"
         )
     scale = max(abs(float(t)) for t in flow.torques.values())
     out: dict[str, Rating] = {}
