@@ -30,6 +30,7 @@ from typing import NamedTuple
 import numpy as np
 
 from gears.geometry import (
+    CROSSING,
     base_diameter,
     form_diameter,
     half_angle_at_reference,
@@ -53,6 +54,7 @@ __all__ = [
     "GearMargins",
     "PairMargins",
     "equal_sliding_split",
+    "flank_depth",
     "form_lengths",
     "gear_margins",
     "has_working_angle",
@@ -67,6 +69,7 @@ __all__ = [
 
 _GRID = 801  # fillet parameter samples that bracket the crossing (as ToothProfile.tau_form)
 _BISECT = 64  # halvings of the bracket: below 1e-18 of the fillet parameter
+
 
 
 def _out(a):
@@ -115,6 +118,22 @@ def tooth_height_margin(tip_diameter, root_diameter, form_diameter, internal=Fal
     return _out(s * (da - np.where(s > 0, np.maximum(df, dff), np.minimum(df, dff))) / 2.0)
 
 
+def flank_depth(rack, pressure_angle):
+    """The rack tool's straight-flank depth h*_eff at each pressure angle (arrays): the rack
+    re-angled as :class:`gears.Gear` re-angles it (:meth:`BasicRack.with_pressure_angle`: its
+    root radius capped to fit the tool), one rack per distinct angle.
+
+    >>> round(float(flank_depth(BasicRack.iso53("A"), 30.0)), 6)   # the round capped at 30 deg
+    1.194825
+    """
+    pa = np.asarray(pressure_angle, float)
+    out = np.empty(pa.shape)
+    for a in np.unique(pa):
+        r = rack if a == rack.pressure_angle else rack.with_pressure_angle(float(a))
+        out[pa == a] = r.straight_flank_depth
+    return _out(out)
+
+
 def gear_margins(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0,
                  internal=False, rack=None, tip_alteration=0.0, min_tip_land=0.2,
                  form=None, root=None):  # fmt: skip
@@ -134,14 +153,15 @@ def gear_margins(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=
     rack = rack or BasicRack.iso53()
     z, m, x = (np.asarray(v, float) for v in (z, module, profile_shift))
     internal = np.asarray(internal, bool)
+    depth = flank_depth(rack, pressure_angle)
     da = tip_diameter(z, m, x, helix_angle, rack.addendum, internal, tip_alteration)
     db = base_diameter(z, m, pressure_angle, helix_angle)
     df = root_diameter(z, m, x, helix_angle, rack.dedendum, internal) if root is None else root
-    x_min = min_profile_shift(z, pressure_angle, helix_angle, rack.straight_flank_depth)
+    x_min = min_profile_shift(z, pressure_angle, helix_angle, depth)
     undercut = np.where(internal, np.inf, x - x_min)
     if form is None:
-        form = form_diameter(z, m, x, pressure_angle, helix_angle, rack.straight_flank_depth,
-                             internal, rack.dedendum)  # fmt: skip
+        form = form_diameter(z, m, x, pressure_angle, helix_angle, depth, internal,
+                             rack.dedendum)  # fmt: skip
         cut = ~internal & (undercut < -1e-12)
         if np.any(cut):
             form = np.array(np.broadcast_to(form, np.broadcast_shapes(np.shape(form),
@@ -182,10 +202,9 @@ def undercut_form_diameter(z, module, profile_shift, pressure_angle=20.0, helix_
     )
     shape = args[0].shape
     z, m, x, pa, hb = (v.ravel() for v in args)
-    out = np.asarray(
-        form_diameter(z, m, x, pa, hb, rack.straight_flank_depth, False, rack.dedendum), float
-    ).copy()
-    cut = x < min_profile_shift(z, pa, hb, rack.straight_flank_depth) - 1e-12
+    depth = flank_depth(rack, pa)
+    out = np.asarray(form_diameter(z, m, x, pa, hb, depth, False, rack.dedendum), float).copy()
+    cut = x < min_profile_shift(z, pa, hb, depth) - 1e-12
     groups = np.unique(np.stack([m[cut], pa[cut], hb[cut]], axis=1), axis=0) if cut.any() else []
     for mg, pg, bg in groups:
         sel = cut & (m == mg) & (pa == pg) & (hb == bg)
@@ -233,14 +252,17 @@ def _undercut_group(z, x, module, pressure_angle, helix_angle, rack):
 
     grid = np.linspace(0.0, 2.0, _GRID)[:-1]
     _, g = gap(grid[None, :])
-    hit = (g[:, :-1] > 0) & (g[:, 1:] <= 0)
+    hit = (g[:, :-1] > CROSSING) & (g[:, 1:] <= CROSSING)
     found = hit.any(axis=1)
     i = np.argmax(hit, axis=1)
     lo, hi = grid[i][:, None], grid[np.minimum(i + 1, grid.size - 1)][:, None]
+    # the crossing itself (g = 0), or where a fillet that only touches comes within CROSSING
+    level = np.where(g[np.arange(len(i)), np.minimum(i + 1, grid.size - 1)] > 0, CROSSING, 0.0)
+    level = level[:, None]
     for _ in range(_BISECT):
         mid = 0.5 * (lo + hi)
         _, gm = gap(mid)
-        right = gm > 0
+        right = gm > level
         lo, hi = np.where(right, mid, lo), np.where(right, hi, mid)
     rho, _ = fillet(0.5 * (lo + hi))
     return np.where(found, 2.0 * rho[:, 0], np.nan)
@@ -328,10 +350,15 @@ def equal_sliding_split(z1, z2, module, total, pressure_angle=20.0, helix_angle=
     return _out(np.where(found, x1, np.nan).reshape(shape))
 
 
-def form_lengths(form_diameter, base_diameter):
+def form_lengths(form_diameter, base_diameter, tip_diameter=None):
     """Distance along the line of action from the base-circle tangent point to the form circle:
-    ``sqrt(r_Ff^2 - r_b^2)`` (0 when the form circle is the base circle)."""
-    rff, rb = np.asarray(form_diameter, float) / 2, np.asarray(base_diameter, float) / 2
+    ``sqrt(r_Ff^2 - r_b^2)`` (0 when the form circle is the base circle). A NaN form diameter
+    (the undercut fillet cuts the whole involute away) counts as the tip: no flank is left for
+    the mate to meet (as in :func:`tooth_height_margin`)."""
+    form = np.asarray(form_diameter, float)
+    if tip_diameter is not None:
+        form = np.where(np.isnan(form), np.asarray(tip_diameter, float), form)
+    rff, rb = form / 2, np.asarray(base_diameter, float) / 2
     return _out(np.sqrt(np.maximum(rff * rff - rb * rb, 0.0)))
 
 
@@ -418,23 +445,23 @@ def pair_margins(z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angl
     True
     """
     rack = rack or BasicRack.iso53()
-    if pressure_angle != rack.pressure_angle:
-        rack = rack.with_pressure_angle(float(np.asarray(pressure_angle).flat[0]))
     g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal,
                       rack.addendum, tip_shortening, threads=threads)  # fmt: skip
     k = g.tip_alteration
-    shape = np.shape(g.center_distance)
+    shape = np.broadcast_shapes(
+        np.shape(g.center_distance), *(np.shape(v) for v in (z1, z2, module, x1, x2,
+                                                             pressure_angle, helix_angle))
+    )  # fmt: skip
     internal = np.asarray(internal, bool)  # stays 0-d (and its helix trigonometry scalar)
     s = np.where(internal, -1.0, 1.0)
     z1, z2, m = (np.asarray(v, float) for v in (z1, z2, module))
     hb2 = np.where(internal, helix_angle, -np.asarray(helix_angle, float))
+    depth = flank_depth(rack, pressure_angle)
     if allow_undercut:
         f1 = f2 = None
     else:  # closed form only: rows where it differs fail their undercut finding anyway
-        f1 = form_diameter(z1, m, x1, pressure_angle, helix_angle, rack.straight_flank_depth,
-                           False, rack.dedendum)  # fmt: skip
-        f2 = form_diameter(z2, m, x2, pressure_angle, hb2, rack.straight_flank_depth,
-                           internal, rack.dedendum)  # fmt: skip
+        f1 = form_diameter(z1, m, x1, pressure_angle, helix_angle, depth, False, rack.dedendum)
+        f2 = form_diameter(z2, m, x2, pressure_angle, hb2, depth, internal, rack.dedendum)
     m1 = gear_margins(z1, m, x1, pressure_angle, helix_angle, False, rack, k, min_tip_land, f1)
     m2 = gear_margins(z2, m, x2, pressure_angle, hb2, internal, rack, np.where(internal, 0, k),
                       min_tip_land, f2)  # fmt: skip
@@ -448,7 +475,7 @@ def pair_margins(z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angl
     u_a, u_e, u_n2 = line_positions(ra1, ra2, rb1, rb2, tan_wt, s)
     meshes = (ra1 >= rb1) & (ra2 >= rb2)
     cr_margin = np.where(meshes, g.contact_ratio - min_contact_ratio, -min_contact_ratio)
-    l1, l2 = form_lengths(f1, 2 * rb1), form_lengths(f2, 2 * rb2)
+    l1, l2 = form_lengths(f1, 2 * rb1, 2 * ra1), form_lengths(f2, 2 * rb2, 2 * ra2)
     t1, t2 = tip_interference(u_a, u_e, u_n2, l1, l2, internal)
     big = np.inf
     t1 = np.where(meshes, t1, big)  # not reported when the contact ratio fails first
@@ -461,31 +488,29 @@ def pair_margins(z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angl
     if np.any(internal):
         ok = internal & meshes & (ra2 > rb2) & (ra1 > rb1)
         ii = internal_interference(
-            z1,
-            z2,
-            g.center_distance,
-            np.maximum(ra1, rb1),
-            np.maximum(ra2, rb2),
-            rb1,
-            rb2,
+            z1, z2, g.center_distance, np.maximum(ra1, rb1), np.maximum(ra2, rb2), rb1, rb2,
             g.working_pressure_angle,
-        )
+        )  # fmt: skip
         inv_m, tro_m, rad_m = (np.where(ok, v, np.where(internal & meshes, -big, big))
                                for v in ii)  # fmt: skip
         ring = np.where(internal & meshes, ra2 - rb2, big)
     else:
-        inv_m = tro_m = rad_m = ring = np.full(shape, big)
-    inv_m, tro_m, rad_m, ring = (np.broadcast_to(v, shape) for v in (inv_m, tro_m, rad_m, ring))
+        inv_m = tro_m = rad_m = ring = big
+
+    def full(v):  # every margin of one shape: a scalar input never leaves one 0-d
+        return np.broadcast_to(np.asarray(v, float), shape)
+
     return PairMargins(
-        g.center_distance, g.working_pressure_angle, g.tip_diameter_1, g.tip_diameter_2,
-        np.where(meshes, g.contact_ratio, 0.0), sl1, sl2, m1, m2, cr_margin, t1, t2,
-        inv_m, tro_m, rad_m, ring,
+        *(full(v) for v in (g.center_distance, g.working_pressure_angle, g.tip_diameter_1,
+                            g.tip_diameter_2, np.where(meshes, g.contact_ratio, 0.0), sl1, sl2)),
+        GearMargins(*(full(v) for v in m1)), GearMargins(*(full(v) for v in m2)),
+        *(full(v) for v in (cr_margin, t1, t2, inv_m, tro_m, rad_m, ring)),
     )  # fmt: skip
 
 
 def _form(z, m, x, pressure_angle, helix_angle, internal, rack):
     """Form diameters: the undercut solve for external gears, the closed form for rings."""
     ext = undercut_form_diameter(z, m, x, pressure_angle, helix_angle, rack)
-    ring = form_diameter(z, m, x, pressure_angle, helix_angle, rack.straight_flank_depth, True,
-                         rack.dedendum)  # fmt: skip
+    ring = form_diameter(z, m, x, pressure_angle, helix_angle, flank_depth(rack, pressure_angle),
+                         True, rack.dedendum)  # fmt: skip
     return np.where(internal, ring, ext)

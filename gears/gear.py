@@ -22,7 +22,7 @@ from gears.arguments import (
     check_tolerance,
 )
 from gears.budget import check_budget
-from gears.checks import gear_margins
+from gears.checks import gear_margins, undercut_form_diameter
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import (
@@ -46,7 +46,7 @@ from gears.geometry import (
 from gears.involute import inv, inv_inverse, pressure_angle_at
 from gears.mesh import gear_solid, helix_twist, solid_levels
 from gears.outline import METHODS, gear_outline, outline_vertices
-from gears.profile import ShaperProfile, default_rim, undercut_form_diameter
+from gears.profile import ShaperProfile, default_rim
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 
@@ -313,18 +313,23 @@ class Gear:
         return (not self.internal) and self.profile_shift < self.min_profile_shift - 1e-12
 
     @cached_property
-    def form_diameter(self) -> float:
-        """Form-circle diameter d_Ff, the start of the usable involute (standards.md §1.7).
-
-        For an undercut external gear the fillet cuts the involute; the exact point comes from
-        :func:`gears.profile.undercut_form_diameter`.
-        """
+    def _form(self) -> float:
+        """:attr:`form_diameter`, or NaN where the undercut fillet cuts the whole involute away
+        (the checks count the flank as gone up to the tip)."""
         if self.cutter is not None:
-            if self.undercut:
+            if not self.undercut:
+                return self.cutter.form_diameter(self)
+            try:
                 return 2.0 * ShaperProfile(self, self.cutter).form_radius
-            return self.cutter.form_diameter(self)
-        if self.undercut:
-            return float(undercut_form_diameter(self))
+            except GearError:
+                return math.nan
+        if self.undercut:  # the one vectorised solve the margins use too
+            return float(
+                undercut_form_diameter(
+                    self.teeth, self.module, self.profile_shift, self.pressure_angle,
+                    self.helix_angle, self.rack,
+                )
+            )  # fmt: skip
         return float(
             form_diameter(
                 self.teeth, self.module, self.profile_shift, self.pressure_angle,
@@ -332,6 +337,22 @@ class Gear:
                 self.rack.dedendum,
             )
         )  # fmt: skip
+
+    @property
+    def form_diameter(self) -> float:
+        """Form-circle diameter d_Ff, the start of the usable involute (standards.md §1.7).
+
+        For an undercut external gear the fillet cuts the involute; the exact point comes from
+        :func:`gears.checks.undercut_form_diameter`. Raises :class:`GearError` where the fillet
+        cuts the whole involute away (no form circle exists; the checks report it).
+        """
+        form = self._form
+        if math.isnan(form):
+            raise GearError(
+                f"z = {self.teeth}, x = {self.profile_shift:g}: the undercut fillet does not "
+                "meet the involute (the tooth is cut away); use a larger profile shift"
+            )
+        return form
 
     # --- measurements -----------------------------------------------------------------------
     def span(self, k: int | None = None) -> tuple[int, float]:
@@ -423,10 +444,7 @@ class Gear:
     def _findings(self, min_tip_land: float) -> list[Finding]:
         out = []
         m = self.module
-        try:
-            form = self.form_diameter
-        except GearError:  # the undercut fillet cuts the whole involute away
-            form = math.nan
+        form = self._form  # NaN: the undercut fillet cuts the whole involute away
         g = gear_margins(
             self.teeth, m, self.profile_shift, self.pressure_angle, self.helix_angle,
             self.internal, self.rack, self.tip_alteration, min_tip_land, form,

@@ -25,6 +25,7 @@ from gears.errors import GearError
 from gears.involute import inv, inv_inverse, pressure_angle_at
 
 __all__ = [
+    "CROSSING",
     "base_diameter",
     "check_real",
     "check_teeth",
@@ -43,6 +44,13 @@ __all__ = [
     "tooth_thickness",
     "transverse_pressure_angle",
 ]
+
+
+#: Where an undercut fillet meets the involute: where its space angle comes within this many
+#: radians of the involute's (:func:`gears.checks.undercut_form_diameter` and
+#: ``ToothProfile.tau_form`` both). A gear a hair inside the undercut limit (x_min - 1e-9) has its
+#: fillet touch the involute at the base circle, 1e-16 rad away: it is not cut away.
+CROSSING = 1e-12
 
 
 def _out(a):

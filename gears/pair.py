@@ -8,6 +8,7 @@ of action); the outlines in mesh come from :mod:`gears.outline`.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -125,6 +126,11 @@ class PathOfContact:
         return (lo, hi) if hi > lo else None
 
 
+def _form_text(gear: Gear) -> str:
+    form = gear._form
+    return "none (the undercut cuts the flank away)" if math.isnan(form) else f"{form:.4f} mm"
+
+
 def _same(name: str, a: float, b: float) -> None:
     if not math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-12):
         raise GearError(f"the gears of a pair need equal {name}; got {a:g} and {b:g}")
@@ -197,21 +203,35 @@ class GearPair:
         object.__setattr__(self, "g1", g1)
         object.__setattr__(self, "g2", g2)
         object.__setattr__(self, "tip_shortening", bool(tip_shortening))
-        if isinstance(g2, Gear) and not g2.internal and tip_shortening:
-            total = g1.profile_shift + g2.profile_shift
-            if total > 0 and any(
-                (g.tip_diameter - g.root_diameter) / (2 * g.module) + self.tip_alteration <= 0
-                for g in (g1, g2)
-            ):
-                _, high = self.center_distance_range(g1, g2)
-                most = float(center_distance_shift_sum(
-                    g1.teeth, g2.teeth, g1.module, high, g1.pressure_angle, g1.helix_angle
-                ))  # fmt: skip
-                raise GearError(
-                    f"x1 + x2 = {total:g} is too large for z = {g1.teeth}/{g2.teeth}: the tip "
-                    f"shortening k = {self.tip_alteration:.4f} it needs (DIN 3960) would take the "
-                    f"whole tooth; valid is x1 + x2 < {most:.4f}"
-                )
+        if isinstance(g2, Gear):
+            _ = self._geometry  # a working pressure angle exists (else the error names the sum)
+            if not g2.internal and tip_shortening:
+                self._require_tooth_after_shortening()
+
+    def _require_tooth_after_shortening(self) -> None:
+        """Refuse a pair whose DIN 3960 tip shortening would take the whole tooth of a gear (a
+        large shift sum of either sign), naming the valid range of x1 + x2 (the constructor
+        decides it once: a pair it accepts is checked, measured and drawn without raising)."""
+        g1, g2 = self.g1, self.g2
+        k = self.tip_alteration
+        if all((g.tip_diameter - g.root_diameter) / (2 * g.module) + k > 0 for g in (g1, g2)):
+            return
+        total = g1.profile_shift + g2.profile_shift
+        low, high = self.center_distance_range(g1, g2)
+
+        def shift_sum(a: float) -> float:
+            return float(center_distance_shift_sum(
+                g1.teeth, g2.teeth, g1.module, a, g1.pressure_angle, g1.helix_angle
+            ))  # fmt: skip
+
+        least = shift_sum(low) if math.isfinite(low) else -math.inf
+        most = shift_sum(high) if math.isfinite(high) else math.inf
+        bound = f"x1 + x2 < {most:.4f}" if total > 0 else f"x1 + x2 > {least:.4f}"
+        raise GearError(
+            f"x1 + x2 = {total:g} is too {'large' if total > 0 else 'small'} for z = "
+            f"{g1.teeth}/{g2.teeth}: the tip shortening k = {k:.4f} it needs (DIN 3960) would "
+            f"take the whole tooth (or pass tip_shortening=False); valid is {bound}"
+        )
 
     # --- construction ------------------------------------------------------------------------
     @classmethod
@@ -238,12 +258,16 @@ class GearPair:
         """
         if not isinstance(g2, Gear):
             raise GearError("at_center_distance needs two Gears (a rack has no centre distance)")
-        cls(g1, g2)  # validates modules, hands, counts
+        zero = {"profile_shift": 0.0, "tip_alteration": 0.0}  # the shifts are replaced below
+        cls(g1.with_(**zero), g2.with_(**zero))  # validates modules, hands, counts
         if split not in ("equal_sliding", "proportional", "keep"):
             raise GearError(f"split = {split!r}; valid are 'equal_sliding', 'proportional', 'keep'")
         low, high = cls.center_distance_range(g1, g2, tip_shortening)
-        a_w = float(center_distance) if isinstance(center_distance, int | float) else math.nan
-        if not low <= a_w <= high:
+        finite = isinstance(center_distance, numbers.Real) and not isinstance(center_distance, bool)
+        a_w = float(center_distance) if finite else math.nan
+        # the range ends are roots found to 1e-12: a pair's own centre distance next to an end
+        # is the constructor's to judge, not the rounding's
+        if not low * (1 - 1e-9) <= a_w <= high * (1 + 1e-9):
             raise GearError(
                 f"center_distance = {center_distance!r} mm cannot be reached by profile shift for "
                 f"z = {g1.teeth}/{g2.teeth}, m = {g1.module:g}; valid is {low:.6f} <= "
@@ -782,7 +806,7 @@ class GearPair:
             if isinstance(g, Rack):
                 lengths.append(0.0)
                 continue
-            lengths.append(float(form_lengths(g.form_diameter, g.base_diameter)))
+            lengths.append(float(form_lengths(g._form, g.base_diameter, g.tip_diameter)))
         return lengths[0], lengths[1]
 
     @cached_property
@@ -824,7 +848,7 @@ class GearPair:
             Finding(
                 "tip_interference", margin1,
                 f"mate's tip meets gear 1's flank {margin1:+.4f} mm along the line of action from "
-                f"its form circle d_Ff1 = {g1.form_diameter:.4f} mm"
+                f"its form circle d_Ff1 = {_form_text(g1)}"
                 + ("" if margin1 >= 0 else f" (it reaches the fillet; {remedy})"),
             )
         ]  # fmt: skip
@@ -835,7 +859,7 @@ class GearPair:
             Finding(
                 "tip_interference_2", margin2,
                 f"gear 1's tip meets gear 2's flank {margin2:+.4f} mm along the line of action "
-                f"from its form circle d_Ff2 = {g2.form_diameter:.4f} mm"
+                f"from its form circle d_Ff2 = {_form_text(g2)}"
                 + (
                     ""
                     if margin2 >= 0

@@ -61,7 +61,7 @@ from gears.arguments import (
 from gears.budget import BUDGETS, check_budget, check_size
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
-from gears.geometry import space_half_angle
+from gears.geometry import CROSSING, space_half_angle
 from gears.involute import inv
 from gears.rack import RackTool
 
@@ -240,7 +240,8 @@ class ToothProfile:
         # f below uses the same rule, so every bracket found is valid; in a marginal undercut the
         # fillet meets the involute right at the base circle, and the root is that jump.
         g = np.where(above, eta - self.eta_involute(np.maximum(rho, self.rb)), 1.0)
-        idx = np.flatnonzero((g[:-1] > 0) & (g[1:] <= 0))
+        # a hair inside the limit the fillet only touches the involute at d_b (g ~ 1e-16 > 0)
+        idx = np.flatnonzero((g[:-1] > CROSSING) & (g[1:] <= CROSSING))
         cut_away = (
             f"z = {self.z}, x = {self.gear.profile_shift:g}: the undercut fillet does not "
             "meet the involute (the tooth is cut away); use a larger profile shift"
@@ -255,6 +256,8 @@ class ToothProfile:
                 return 1.0
             return float(e_ - self.eta_involute(float(r_)))
 
+        if f(tau[i + 1]) > 0:  # touching, not crossing: where it comes within CROSSING
+            return _root(lambda x: f(x) - CROSSING, tau[i], tau[i + 1], cut_away)
         return _root(f, tau[i], tau[i + 1], cut_away)
 
     def _land_angle(self) -> float:

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 import shapely
 
-from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter
+from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter, gear_margins, pair_margins
 from gears.arguments import check_tolerance, min_tolerance
 from gears.budget import BUDGETS, check_budget, fitting_tolerance
 from trains import Planetary, TrainError
@@ -47,6 +47,77 @@ def refused(fn, *words, exc=GearError):
     for w in words:
         assert w in str(out), (w, str(out))
     return str(out)
+
+
+# --- 1. checks never raise for a pair the constructor accepts ------------------------------------
+def test_check_of_a_marginally_undercut_pinion_reports_instead_of_raising():
+    # issue: x = x_min - 1e-9 on a B rack made _form_lengths raise "undercut fillet does not
+    # meet the involute". A hair inside the limit the fillet touches the involute at the base
+    # circle (independent: at x = x_min the closed form gives d_Ff = d_b), so the form circle is
+    # d_b, continuous with x_min, and every finding has a finite margin.
+    B = BasicRack.iso53("B")
+    g1 = Gear(7, 1, helix_angle=-13.248786, profile_shift=0.6115320105763605, rack=B)
+    g2 = Gear(226, 1, helix_angle=13.248786, profile_shift=-0.5, rack=B)
+    report = bounded(lambda: GearPair(g1, g2).check())
+    assert all(math.isfinite(f.margin) for f in report.values())
+    assert g1.form_diameter == pytest.approx(g1.base_diameter, rel=1e-9)
+    assert report["g1.undercut"].margin == pytest.approx(-1e-9, abs=1e-12)
+
+
+def test_shift_sums_that_leave_no_tooth_are_refused_by_the_constructor():
+    # a large negative sum: DIN 3960's k = y - (x1 + x2) < 0 on both sides of zero; where it
+    # would take the whole tooth the pair is refused at once, naming the limit (it used to be
+    # accepted and raise in check()). Independent limit: the low end of center_distance_range.
+    g1, g2 = Gear(200, 1, profile_shift=-4.5), Gear(300, 1, profile_shift=-4.5)
+    low, _ = GearPair.center_distance_range(g1, g2)
+    text = refused(lambda: GearPair(g1, g2), "x1 + x2 = -9", "too small", "valid is x1 + x2 >")
+    least = float(text.rsplit("> ", 1)[1])
+    ok = GearPair.at_center_distance(g1, g2, low * (1 + 1e-6), split="keep")
+    assert ok.g1.profile_shift + ok.g2.profile_shift == pytest.approx(least, abs=2e-4)
+    assert GearPair(g1, g2, tip_shortening=False).check() is not None
+    refused(lambda: GearPair(Gear(8, 1, profile_shift=-1), Gear(9, 1, profile_shift=-1)),
+            "no working pressure angle")  # fmt: skip
+
+
+@pytest.mark.parametrize("shift", [-0.7, 0.0, 3.0, 6.4])
+def test_at_center_distance_accepts_a_pairs_own_centre_distance(shift):
+    # the range ends are roots found to 1e-12; a pair's own a_w near an end is still reached
+    g1, g2 = Gear(12, 3, profile_shift=shift / 2), Gear(24, 3, profile_shift=shift / 2)
+    p = GearPair(g1, g2)
+    q = GearPair.at_center_distance(g1, g2, p.center_distance, split="keep")
+    assert q.center_distance == pytest.approx(p.center_distance, rel=1e-12)
+
+
+# --- 2. the vectorised margins equal check()'s findings -------------------------------------------
+def test_gear_margins_re_angle_the_rack_like_gear():
+    # issue: the undercut margin of z = 30 at 30 deg was 2.750 (the 20-deg rack's tip round)
+    # against Gear's 2.555 (the round capped to fit the 30-deg tool: BasicRack.with_pressure_angle)
+    g = Gear(30, 1, 30.0)
+    m = gear_margins(30, 1, 0, 30.0, 0, False, BasicRack.iso53("A"))
+    assert float(m.undercut) == pytest.approx(g.check()["undercut"].margin, rel=1e-12)
+    assert float(m.undercut) == pytest.approx(2.555174761587831, rel=1e-12)
+
+
+def test_margins_of_a_gear_a_hair_inside_the_undercut_limit_are_finite():
+    # issue: Gear(77, 1, 29.471921, x = x_min - 1e-9): tip_interference NaN in pair_margins
+    # against -2.25 in check(); now one vectorised form circle for both (d_Ff = d_b here)
+    x = Gear(77, 1, 29.471921).min_profile_shift - 1e-9
+    m = gear_margins(77, 1, x, 29.471921)
+    g = Gear(77, 1, 29.471921, profile_shift=x)
+    for name, f in g.check().items():
+        assert float(getattr(m, name)) == pytest.approx(f.margin, rel=1e-9, abs=1e-12), name
+
+
+def test_pair_margins_take_array_pressure_angles_and_scalars_give_arrays():
+    p = pair_margins(17, 30, 1, pressure_angle=np.array([20.0, 25.0]))
+    for name, v in p.findings().items():
+        assert np.shape(v) == (2,), name
+    for i, pa in enumerate((20.0, 25.0)):
+        ref = GearPair(Gear(17, 1, pa), Gear(30, 1, pa)).check()
+        for name, f in ref.items():
+            assert float(p.findings()[name][i]) == pytest.approx(f.margin, rel=1e-9), name
+    ok = pair_margins(17, np.arange(20, 80), 1).ok()  # raised: one margin stayed 0-d
+    assert ok.shape == (60,)
 
 
 # --- 3. foreign exceptions from the 3D, scene and animation calls -----------------------------

@@ -499,13 +499,12 @@ def test_unreachable_center_distance_and_bad_split():
 
 
 def test_shift_sum_too_negative_names_the_shifts():
-    # inv alpha_wt < 0: no working pressure angle exists; the error names the shift sum
-    p = _pair(8, 9, -1.0, -1.0)
+    # inv alpha_wt < 0: no working pressure angle exists; the constructor refuses it, naming the
+    # shift sum (issue 17: a pair it accepted had check() raise on this)
     with pytest.raises(GearError, match=r"x1 \+ x2 = -2 .* valid is x1 \+ x2 > -0.3"):
-        _ = p.center_distance
-    q = GearPair(Gear(20, 1, profile_shift=0.5), Gear(30, 1, internal=True, profile_shift=-0.1))
+        _pair(8, 9, -1.0, -1.0)
     with pytest.raises(GearError, match=r"x2 - x1 = -0.6"):
-        _ = q.contact_ratio
+        GearPair(Gear(20, 1, profile_shift=0.5), Gear(30, 1, internal=True, profile_shift=-0.1))
 
 
 # --- helical pairs, validation ------------------------------------------------------------------

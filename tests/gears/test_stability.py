@@ -94,8 +94,10 @@ def test_pair_finite_or_gear_error(z1, z2, x1, x2, m, beta, internal, shortening
     try:
         g2 = Gear(z2, m, helix_angle=g2_beta, profile_shift=x2, internal=internal, face_width=10)
         p = GearPair(g1, g2, tip_shortening=shortening)
-    except GearError:
-        assert internal and z2 <= z1
+    except GearError as exc:
+        # refused at once: a ring too small, or shifts with no working pressure angle or whose
+        # tip shortening takes the tooth (issue 17: never accepted, then raised by check())
+        assert (internal and z2 <= z1) or ("x1 + x2" in str(exc) or "x2 - x1" in str(exc))
         return
     geometry = _attempt(
         lambda: (
