@@ -71,7 +71,6 @@ _GRID = 801  # fillet parameter samples that bracket the crossing (as ToothProfi
 _BISECT = 64  # halvings of the bracket: below 1e-18 of the fillet parameter
 
 
-
 def _out(a):
     a = np.asarray(a)
     return a[()] if a.ndim == 0 else a
