@@ -266,7 +266,7 @@ def rate_pair(
         protuberance=(g1.rack.protuberance, g2.rack.protuberance),
         tip_shortening=pair.tip_shortening,
         tip_alteration=(pair.g1.tip_alteration, pair.g2.tip_alteration), root=tuple(roots),
-        factors=factors, errors="raise", threads=1,
+        factors=factors, errors="raise", threads=1, geometry=pair._geometry,
     )  # fmt: skip
     settings = {
         "torque": float(torque), "speed": float(speed), "life": float(life), "face_width": b,

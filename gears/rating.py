@@ -145,7 +145,7 @@ REASONS = (
     "the outer point of single contact lies inside the base circle of the virtual gear: method "
     "B's Y_F does not apply",
     "the 30 deg tangent does not meet a root fillet that carries the tooth (s_Fn <= 0 or "
-    "h_Fe <= 0): method B's Y_F does not apply",
+    "h_Fe <= 0, or ISO 6336-3's theta iteration has no solution): method B's Y_F does not apply",
     "q_s = s_Fn / (2 rho_F) lies outside 1 <= q_s < 8, the range of Y_S by method B",
     "the inner point of single contact lies inside gear 1's base circle (the mesh interferes): "
     "Z_B does not apply",
@@ -259,6 +259,14 @@ def _out(a):
     return a[()] if a.ndim == 0 else a
 
 
+def _where(cond, a, b):
+    """``np.where`` that keeps one pair's numbers numpy scalars (a Python branch: ten times
+    faster than 0-d arrays, which is most of rating one pair)."""
+    if np.ndim(cond) == 0 and np.ndim(a) == 0 and np.ndim(b) == 0:
+        return a if cond else b
+    return np.where(cond, a, b)
+
+
 # --- ISO 1328-1 deviations --------------------------------------------------------------------
 def tolerances(module, diameter, face_width, quality):
     """ISO 1328-1:1995 single pitch, profile form and helix slope deviations, um:
@@ -297,7 +305,7 @@ def single_stiffness(zn1, zn2, x1, x2, helix_angle=0.0, dedendum=1.25, pressure_
     12.37
     """
     zn1 = np.asarray(zn1, float)
-    inv2 = np.where(np.asarray(internal, bool), 0.0, 1.0 / np.asarray(zn2, float))
+    inv2 = _where(np.asarray(internal, bool), 0.0, 1.0 / np.asarray(zn2, float))
     x1, x2 = np.asarray(x1, float), np.asarray(x2, float)
     c1, c2, c3, c4, c5, c6, c7, c8, c9 = _Q
     q = c1 + c2 / zn1 + c3 * inv2 + c4 * x1 + c5 * x1 / zn1 + c6 * x2 + c7 * x2 * inv2
@@ -308,7 +316,7 @@ def single_stiffness(zn1, zn2, x1, x2, helix_angle=0.0, dedendum=1.25, pressure_
     c = 0.8 * c_b * np.cos(np.radians(helix_angle)) / q
     if line_load is not None:
         w = np.asarray(line_load, float)
-        c = c * np.where(w < 100.0, np.sqrt(np.sqrt(np.maximum(w, 0.0) / 100.0)), 1.0)
+        c = c * _where(w < 100.0, np.sqrt(np.sqrt(np.maximum(w, 0.0) / 100.0)), 1.0)
     return _out(c)
 
 
@@ -345,21 +353,21 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     bf = c * np.asarray(f_f_eff, float) / w
     bk = np.abs(1.0 - c * np.asarray(tip_relief, float) / w)
     low = eg <= 2.0
-    egx = np.where(low, 3.0, eg)  # keeps the eps_gamma > 2 branch finite where unused
+    egx = _where(low, 3.0, eg)  # keeps the eps_gamma > 2 branch finite where unused
     cv1 = 0.32
-    cv2 = np.where(low, 0.34, 0.57 / (egx - 0.3))
-    cv3 = np.where(low, 0.23, 0.096 / (egx - 1.56))
-    cv4 = np.where(low, 0.90, (0.57 - 0.05 * egx) / (egx - 1.44))
+    cv2 = _where(low, 0.34, 0.57 / (egx - 0.3))
+    cv3 = _where(low, 0.23, 0.096 / (egx - 1.56))
+    cv4 = _where(low, 0.90, (0.57 - 0.05 * egx) / (egx - 1.44))
     cv5 = 0.47
-    cv6 = np.where(low, 0.47, 0.12 / (egx - 1.74))
-    cv7 = np.where(eg <= 1.5, 0.75, np.where(eg <= 2.5, 0.125 * np.sin(np.pi * (eg - 2.0)) + 0.875,
+    cv6 = _where(low, 0.47, 0.12 / (egx - 1.74))
+    cv7 = _where(eg <= 1.5, 0.75, _where(eg <= 2.5, 0.125 * np.sin(np.pi * (eg - 2.0)) + 0.875,
                                              1.0))  # fmt: skip
-    ns = np.where(w < 100.0, 0.5 + 0.35 * np.sqrt(np.maximum(w, 0.0) / 100.0), 0.85)
+    ns = _where(w < 100.0, 0.5 + 0.35 * np.sqrt(np.maximum(w, 0.0) / 100.0), 0.85)
     sub = n * (cv1 * bp + cv2 * bf + cv3 * bk) + 1.0
     main = cv1 * bp + cv2 * bf + cv4 * bk + 1.0
     sup = cv5 * bp + cv6 * bf + cv7
     between = sup + (main - sup) * (1.5 - n) / 0.35
-    k = np.where(n <= ns, sub, np.where(n <= 1.15, main, np.where(n < 1.5, between, sup)))
+    k = _where(n <= ns, sub, _where(n <= 1.15, main, _where(n < 1.5, between, sup)))
     return _out(k)
 
 
@@ -374,7 +382,7 @@ def face_load_factor(misalignment, c_gamma_beta, line_load):
     """
     k = np.asarray(misalignment, float) * np.asarray(c_gamma_beta, float)
     k = k / (2.0 * np.asarray(line_load, float))
-    return _out(np.where(k <= 1.0, 1.0 + k, np.sqrt(4.0 * np.maximum(k, 0.0))))
+    return _out(_where(k <= 1.0, 1.0 + k, np.sqrt(4.0 * np.maximum(k, 0.0))))
 
 
 def face_load_factor_root(k_hbeta, face_width, tooth_height):
@@ -401,7 +409,7 @@ def transverse_load_factors(c_gamma_alpha, f_pb, y_alpha, line_load_h, eps_alpha
     ea, eg = np.asarray(eps_alpha, float), np.asarray(eps_gamma, float)
     low = eg / 2.0 * (0.9 + 0.4 * q)
     high = 0.9 + 0.4 * np.sqrt(2.0 * np.maximum(eg - 1.0, 0.0) / eg) * q
-    k = np.maximum(np.where(eg <= 2.0, low, high), 1.0)
+    k = np.maximum(_where(eg <= 2.0, low, high), 1.0)
     kh = np.minimum(k, eg / (ea * np.asarray(z_eps, float) ** 2))
     kf = np.minimum(k, eg / (0.25 * ea + 0.75))
     return _out(kh), _out(kf)
@@ -452,7 +460,7 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
     towards its root) and M2 likewise; ``Z = max(1, M - min(eps_beta, 1)(M - 1))``;
     ``Z_D = 1`` for internal gears. NaN where a single-contact point lies inside a base circle.
     """
-    s = np.where(np.asarray(internal, bool), -1.0, 1.0)
+    s = _where(np.asarray(internal, bool), -1.0, 1.0)
     z1, z2 = np.asarray(z1, float), np.asarray(z2, float)
     l1 = np.sqrt(np.maximum((np.asarray(da1) / db1) ** 2 - 1.0, 0.0))
     l2 = np.sqrt(np.maximum((np.asarray(da2) / db2) ** 2 - 1.0, 0.0))
@@ -463,14 +471,14 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
         m2 = tw / np.sqrt((l2 - s * 2 * np.pi / z2) * (l1 - (ea - 1.0) * 2 * np.pi / z1))
     eb = np.minimum(np.asarray(eps_beta, float), 1.0)
     zb = np.maximum(1.0, m1 - eb * (m1 - 1.0))
-    zd = np.where(s < 0, 1.0, np.maximum(1.0, m2 - eb * (m2 - 1.0)))
-    zb = np.where(np.isnan(m1), np.nan, zb)
+    zd = _where(s < 0, 1.0, np.maximum(1.0, m2 - eb * (m2 - 1.0)))
+    zb = _where(np.isnan(m1), np.nan, zb)
     return _out(zb), _out(zd)
 
 
 def _c_zl(sigma_hlim):
     s = np.asarray(sigma_hlim, float)
-    return np.where(s < 850.0, 0.83, np.where(s < 1200.0, s / 4375.0 + 0.6357, 0.91))
+    return _where(s < 850.0, 0.83, _where(s < 1200.0, s / 4375.0 + 0.6357, 0.91))
 
 
 def lubrication_factors(sigma_hlim, oil_viscosity, speed):
@@ -497,7 +505,7 @@ def roughness_factor(sigma_hlim, rz, rho_red):
     0.966
     """
     s = np.asarray(sigma_hlim, float)
-    czr = np.where(s < 850.0, 0.15, np.where(s < 1200.0, 0.32 - 0.0002 * s, 0.08))
+    czr = _where(s < 850.0, 0.15, _where(s < 1200.0, 0.32 - 0.0002 * s, 0.08))
     rz10 = np.asarray(rz, float) * np.cbrt(10.0 / np.asarray(rho_red, float))
     return _out((3.0 / rz10) ** czr)
 
@@ -526,10 +534,10 @@ def load_point(z, module, tip_diameter_, reference_diameter, pressure_angle, hel
     dbn = dn * np.cos(an)
     dan = dn + np.asarray(tip_diameter_, float) - np.asarray(reference_diameter, float)
     ean = np.asarray(eps_alpha, float) / cbb2
-    s = np.where(np.asarray(internal, bool), -1.0, 1.0)
+    s = _where(np.asarray(internal, bool), -1.0, 1.0)
     la = np.sqrt(np.maximum(dan * dan - dbn * dbn, 0.0)) / 2.0
     le = la - s * np.pi * m * np.cos(an) * (ean - 1.0)
-    le = np.where((dan >= dbn) & (le >= 0.0), le, np.nan)
+    le = _where((dan >= dbn) & (le >= 0.0), le, np.nan)
     den = 2.0 * np.sqrt(le * le + dbn * dbn / 4.0)
     return _out(den), _out(np.arccos(dbn / den)), _out(zn), _out(dbn)
 
@@ -566,11 +574,13 @@ def root_form(zn, module, profile_shift, pressure_angle, d_en, alpha_en, dedendu
     h = 2.0 / zn * (np.pi / 2 - e) - np.pi / 3
     k = 2.0 * g / zn
     # theta - k tan theta + h = 0 by Newton's method from pi/6 (the standard iterates the fixed
-    # point, a contraction on real teeth; Newton reaches 1e-15 in five steps from pi/6)
+    # point, a contraction on real teeth; six Newton steps from pi/6 reach 1e-15 from z_n = 5 to
+    # 1000, x = -0.8 ... 1.5); where it has not converged (no real tooth) the root form is NaN
     theta = np.pi / 6 - (np.pi / 6 - k * math.tan(np.pi / 6) + h) / (1.0 - k * 4.0 / 3.0)
-    for _ in range(4):
+    for _ in range(5):
         ct = np.cos(theta)
         theta = theta - (theta - k * np.tan(theta) + h) / (1.0 - k / (ct * ct))
+    theta = _where(np.abs(theta - k * np.tan(theta) + h) < 1e-9, theta, np.nan)
     ct = np.cos(theta)
     s_fn = m * (zn * np.sin(np.pi / 3 - theta) + np.sqrt(3.0) * (g / ct - rho))
     rho_f = m * (rho + 2.0 * g * g / (ct * (zn * ct * ct - 2.0 * g)))
@@ -654,9 +664,9 @@ def _running_in(deviation, code, sigma_hlim, v, hard, soft, grey, limits):
     if _HARD[code]:
         return np.minimum(hard[0] * d, hard[1])
     if _GREY[code]:
-        cap = np.where(v > 10.0, limits[3], np.where(v > 5.0, limits[2], np.inf))
+        cap = _where(v > 10.0, limits[3], _where(v > 5.0, limits[2], np.inf))
         return np.minimum(grey * d, cap)
-    cap = np.where(v > 10.0, limits[1] / s, np.where(v > 5.0, limits[0] / s, np.inf))
+    cap = _where(v > 10.0, limits[1] / s, _where(v > 5.0, limits[0] / s, np.inf))
     return np.minimum(soft / s * d, cap)
 
 
@@ -671,24 +681,23 @@ def _y_beta(deviation, code, sigma_hlim, v):
 
 
 def _surface_factor(rz, code):
+    """Y_RrelT of a material group (``code`` a Python int) at root roughness R_z (um)."""
     rz = np.asarray(rz, float)
     cls = _ROUGH[code]
-    smooth = np.where(cls == 0, 1.120, np.where(cls == 1, 1.070, 1.025))
     r1 = rz + 1.0
-    rough = np.where(
-        cls == 0, 1.674 - 0.529 * r1**0.1,
-        np.where(cls == 1, 5.306 - 4.203 * r1**0.01, 4.299 - 3.259 * r1**0.0058),
-    )  # fmt: skip
-    return np.where(rz < 1.0, smooth, rough)
+    if cls == 0:
+        return _where(rz < 1.0, 1.120, 1.674 - 0.529 * r1**0.1)
+    if cls == 1:
+        return _where(rz < 1.0, 1.070, 5.306 - 4.203 * r1**0.01)
+    return _where(rz < 1.0, 1.025, 4.299 - 3.259 * r1**0.0058)
 
 
 def _size_factor(m, code):
+    """Y_X of a material group (``code`` a Python int) at normal module m (mm)."""
     m = np.asarray(m, float)
-    cls = _SIZE[code]
-    a = np.where(m <= 5.0, 1.0, np.where(m < 30.0, 1.03 - 0.006 * m, 0.85))
-    b = np.where(m <= 5.0, 1.0, np.where(m < 25.0, 1.05 - 0.01 * m, 0.8))
-    c = np.where(m <= 5.0, 1.0, np.where(m < 25.0, 1.075 - 0.015 * m, 0.7))
-    return np.where(cls == 0, a, np.where(cls == 1, b, c))
+    slope, top, floor_ = ((0.006, 30.0, 0.85), (0.01, 25.0, 0.8), (0.015, 25.0, 0.7))[_SIZE[code]]
+    base = 1.0 + slope * 5.0  # the lines meet 1.0 at m = 5
+    return _where(m <= 5.0, 1.0, _where(m < top, base - slope * m, floor_))
 
 
 # --- input checking ---------------------------------------------------------------------------
@@ -762,7 +771,7 @@ def rate_pairs(
     load_sharing=1.0, contacts=(1, 1), idler=(False, False), misalignment=None,
     addendum=1.0, dedendum=1.25, root_radius=0.38, protuberance=0.0, tip_shortening=True,
     tip_alteration=(0.0, 0.0), root=(None, None), factors=None, errors="raise",
-    fields=None, threads=None,
+    fields=None, threads=None, geometry=None,
 ) -> PairRatings:  # fmt: skip
     """ISO 6336 method B pitting and bending ratings of many pairs at once (arrays broadcast).
 
@@ -823,6 +832,9 @@ def rate_pairs(
         ``("S_H1", "S_H2", "S_F1", "S_F2")`` (``valid`` and ``reason`` always come).
     threads : int, optional
         As for :func:`gears.meshing.pair_geometry`.
+    geometry : PairGeometry, optional
+        The pairs' :func:`gears.meshing.pair_geometry` when the caller has it (``GearPair``
+        passes its own): it is then not computed again.
 
     Returns
     -------
@@ -906,8 +918,11 @@ def rate_pairs(
                                        (0.0, 0.0, 0.0, -1.6), strict=True):  # fmt: skip
                 a[f"root_{key}{i}"] = _number(f"{key} of gear {i}", value, low, 1e6)
     a.update({f"o_{k}": v for k, v in _overrides(factors or {}).items()})
-    geo = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal, addendum,
-                        tip_shortening, threads)  # fmt: skip
+    if geometry is None:
+        geo = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal,
+                            addendum, tip_shortening, threads)  # fmt: skip
+    else:
+        geo = geometry
     base = [np.asarray(v, float) for v in (z1, z2, module, x1, x2, pressure_angle, helix_angle,
                                            addendum)]  # fmt: skip
     base.append(np.asarray(internal, bool))
@@ -924,7 +939,9 @@ def rate_pairs(
         res = _rate_block(a, mats, fields)
         wanted = {*fields, "valid", "reason"}  # as the blocked path: the others are None
         if n == 1 and shape == ():
-            result = PairRatings(**{f: res[f][()] if f in wanted else None for f in _FIELDS})
+            result = PairRatings(
+                **{f: np.asarray(res[f])[()] if f in wanted else None for f in _FIELDS}
+            )
         else:
             result = PairRatings(
                 **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
@@ -980,7 +997,7 @@ def _rate(a, mats, fields):
     code1, code2 = m1.code, m2.code
     z1, z2, m, x1, x2 = a["z1"], a["z2"], a["m"], a["x1"], a["x2"]
     internal = a["internal"]
-    s = np.where(internal, -1.0, 1.0)
+    s = _where(internal, -1.0, 1.0)
     b, T, n = a["b"], a["T"], a["n"]
     an = np.radians(a["pa"])
     tan_an = np.tan(an)
@@ -998,7 +1015,7 @@ def _rate(a, mats, fields):
     ha = a["ha"]
     k = a["k"]
     da1 = tip_diameter(z1, m, x1, a["helix"], ha, False, k + a["k1"])
-    da2 = tip_diameter(z2, m, x2, a["helix"], ha, internal, np.where(internal, 0.0, k) + a["k2"])
+    da2 = tip_diameter(z2, m, x2, a["helix"], ha, internal, _where(internal, 0.0, k) + a["k2"])
     df1 = root_diameter(z1, m, x1, a["helix"], a["hf1"], False)
     df2 = root_diameter(z2, m, x2, a["helix"], a["hf2"], internal)
     p_bt = np.pi * m / cos_b * cos_at
@@ -1042,7 +1059,7 @@ def _rate(a, mats, fields):
     dm1, dm2 = (da1 + df1) / 2, (da2 + df2) / 2
     mass1 = np.pi / 8 * m1.density * dm1**4 / db1**2 / a["c1"]
     mass2 = np.pi / 8 * m2.density * dm2**4 / db2**2 / a["c2"]
-    m_red = np.where(internal, mass1, mass1 * mass2 / (mass1 + mass2))
+    m_red = _where(internal, mass1, mass1 * mass2 / (mass1 + mass2))
     n_e1 = 30000.0 / (np.pi * z1) * np.sqrt(c_ga / m_red)
     N = n / n_e1
     K_v = given("K_v", dynamic_factor(N, w, c_p, f_pb - y_a, f_f - y_f, c_a, eg))
@@ -1073,7 +1090,7 @@ def _rate(a, mats, fields):
     Z_beta = given("Z_beta", 1.0 / np.sqrt(cos_b))
     Z_B, Z_D = single_pair_factors(z1, z2, da1, da2, db1, db2, a["alpha_wt"], ea, eb, internal)
     interferes = np.isnan(Z_B)
-    Z_B = given("Z_B", np.where(interferes, 1.0, Z_B))
+    Z_B = given("Z_B", _where(interferes, 1.0, Z_B))
     Z_D = given("Z_D", Z_D)
     s_min = np.minimum(sH1, sH2)
     Z_L, Z_v = lubrication_factors(s_min, a["nu40"], v)
@@ -1114,7 +1131,7 @@ def _rate(a, mats, fields):
         form2 = internal_root_form(m, pa, den2, dfn2, *rack2)
         if not np.all(internal):
             external = root_form(zn2, m, x2, pa, den2, aen2, *rack2)
-            form2 = tuple(np.where(internal, i, e) for e, i in zip(external, form2, strict=True))
+            form2 = tuple(_where(internal, i, e) for e, i in zip(external, form2, strict=True))
     forms = []
     for i, form in ((1, form1), (2, form2)):
         if f"root_s_Fn{i}" in a:
@@ -1129,7 +1146,7 @@ def _rate(a, mats, fields):
     Y_B1 = given("Y_B1", np.ones_like(F_t))
     Y_B2 = given("Y_B2", np.ones_like(F_t))
     ean = ea / cbb2
-    Y_DT = np.where((Q <= 4) & (ean > 2.05), np.where(ean > 2.5, 0.9, -0.666 * ean + 2.366), 1.0)
+    Y_DT = _where((Q <= 4) & (ean > 2.05), _where(ean > 2.5, 0.9, -0.666 * ean + 2.366), 1.0)
     Y_DT = given("Y_DT", Y_DT)
     Y_ST = given("Y_ST", np.full_like(F_t, 2.0))
     Y_NT1 = given("Y_NT1", bending_life_factor(N_L1, code1))
@@ -1144,8 +1161,8 @@ def _rate(a, mats, fields):
     Y_R2 = given("Y_RrelT2", _surface_factor(rz_root, code2))
     Y_X1 = given("Y_X1", _size_factor(m, code1))
     Y_X2 = given("Y_X2", _size_factor(m, code2))
-    Y_M1 = given("Y_M1", np.where(a["idler1"], 0.7, 1.0))
-    Y_M2 = given("Y_M2", np.where(a["idler2"], 0.7, 1.0))
+    Y_M1 = given("Y_M1", _where(a["idler1"], 0.7, 1.0))
+    Y_M2 = given("Y_M2", _where(a["idler2"], 0.7, 1.0))
     nominal = F_t / (b * m) * Y_beta * Y_DT
     sigma_F01 = nominal * Y_F1 * Y_S1 * Y_B1
     sigma_F02 = nominal * Y_F2 * Y_S2 * Y_B2
@@ -1178,7 +1195,7 @@ def _rate(a, mats, fields):
     ]
     reason = np.zeros(shape, int)
     for code, ok in reversed(list(enumerate(checks, 1))):
-        reason = np.where(ok, reason, code)
+        reason = _where(ok, reason, code)
     valid = reason == 0
     res = {
         "sigma_H0": sigma_H0, "sigma_H1": sigma_H1, "sigma_H2": sigma_H2,
@@ -1208,7 +1225,7 @@ def _rate(a, mats, fields):
         if np.shape(value) != shape:
             value = np.broadcast_to(value, shape)
         if not everywhere:
-            value = np.where(valid, value, 0.0 if key.startswith("S_") else np.nan)
+            value = _where(valid, value, 0.0 if key.startswith("S_") else np.nan)
         res[key] = value
     res["valid"] = valid
     res["reason"] = reason

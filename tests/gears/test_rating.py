@@ -420,3 +420,54 @@ def test_random_operating_input_is_rated_or_refused(torque, speed, quality):
     except GearError:
         return
     assert all(math.isfinite(s) and s > 0 for s in (*r.safety_pitting, *r.safety_bending))
+
+
+@settings(max_examples=20, deadline=None)
+@given(
+    z=st.integers(6, 150),
+    x=st.floats(-0.8, 1.2),
+    internal=st.booleans(),
+    where=st.floats(0.0, 1.0),
+    tangent=st.one_of(st.none(), st.floats(-10, 100)),
+)
+def test_measure_root_gives_a_root_or_refuses(z, x, internal, where, tangent):
+    """measure_root on random gears and load points: a finite root form (s_Fn, rho_F, h_Fe > 0)
+    or a GearError saying why method B does not apply."""
+    try:
+        g = Gear(z + (20 if internal else 0), 2, profile_shift=x, internal=internal)
+        d_en = g.base_diameter + where * abs(g.tip_diameter - g.base_diameter) * 1.2
+        r = measure_root(g, d_en, tangent=tangent)
+    except GearError:
+        return
+    assert all(math.isfinite(v) and v > 0 for v in (r.s_Fn, r.rho_F, r.h_Fe))
+    assert math.isfinite(r.alpha_Fen)
+
+
+@settings(max_examples=20, deadline=None)
+@given(
+    n=st.integers(1, 40),
+    seed=st.integers(0, 10**6),
+    bad=st.sampled_from([None, "nan", "zero", "negative"]),
+)
+def test_rate_pairs_over_random_arrays(n, seed, bad):
+    """rate_pairs over random rows: with errors="mask" every row is rated (finite, positive
+    safeties) or marked invalid with a reason and zero safeties; bad input raises naming it."""
+    rng = np.random.default_rng(seed)
+    z1 = rng.integers(6, 60, n)
+    z2 = rng.integers(6, 200, n)
+    m = rng.uniform(0.3, 20, n)
+    torque = rng.uniform(0.01, 1e4, n) * m * m
+    if bad is not None:
+        torque[rng.integers(0, n)] = {"nan": np.nan, "zero": 0.0, "negative": -1.0}[bad]
+        with pytest.raises(GearError, match="torque"):
+            rate_pairs(z1, z2, m, 10 * m, torque, 1000, errors="mask")
+        return
+    try:
+        r = rate_pairs(z1, z2, m, 10 * m, torque, 1000, x1=rng.uniform(-0.5, 1.0, n),
+                       x2=rng.uniform(-0.5, 1.0, n), helix_angle=rng.uniform(0, 40, n),
+                       errors="mask")  # fmt: skip
+    except GearError:  # a row with no working pressure angle is bad input (pair_geometry)
+        return
+    for s in (r.S_H1, r.S_H2, r.S_F1, r.S_F2):
+        assert np.all(np.where(r.valid, np.isfinite(s) & (s > 0), s <= 0.0))  # zero if invalid
+    assert np.all((r.reason == 0) == r.valid)
