@@ -147,8 +147,8 @@ REASONS = (
     "the 30 deg tangent does not meet a root fillet that carries the tooth (s_Fn <= 0 or "
     "h_Fe <= 0, or ISO 6336-3's theta iteration has no solution): method B's Y_F does not apply",
     "q_s = s_Fn / (2 rho_F) lies outside 1 <= q_s < 8, the range of Y_S by method B",
-    "the inner point of single contact lies inside gear 1's base circle (the mesh interferes): "
-    "Z_B does not apply",
+    "an inner point of single contact lies inside a base circle (the mesh interferes): Z_B or "
+    "Z_D does not apply",
 )
 
 _FIELDS = ["S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_HP1",
@@ -458,7 +458,8 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
     ``M1 = tan alpha_wt / sqrt((sqrt(da1^2/db1^2 - 1) - 2 pi/z1)(sqrt(da2^2/db2^2 - 1)
     - sigma (eps_alpha - 1) 2 pi/z2))`` (sigma = -1 internal: the ring's flank radius grows
     towards its root) and M2 likewise; ``Z = max(1, M - min(eps_beta, 1)(M - 1))``;
-    ``Z_D = 1`` for internal gears. NaN where a single-contact point lies inside a base circle.
+    ``Z_D = 1`` for internal gears, both 1 for eps_beta >= 1. NaN where a single-contact point lies
+    inside a base circle (and eps_beta < 1).
     """
     s = _where(np.asarray(internal, bool), -1.0, 1.0)
     z1, z2 = np.asarray(z1, float), np.asarray(z2, float)
@@ -470,9 +471,12 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
         m1 = tw / np.sqrt((l1 - 2 * np.pi / z1) * (l2 - s * (ea - 1.0) * 2 * np.pi / z2))
         m2 = tw / np.sqrt((l2 - s * 2 * np.pi / z2) * (l1 - (ea - 1.0) * 2 * np.pi / z1))
     eb = np.minimum(np.asarray(eps_beta, float), 1.0)
-    zb = np.maximum(1.0, m1 - eb * (m1 - 1.0))
-    zd = _where(s < 0, 1.0, np.maximum(1.0, m2 - eb * (m2 - 1.0)))
-    zb = _where(np.isnan(m1), np.nan, zb)
+    # eps_beta >= 1: 1 whatever M (the single-contact points do not matter then); else NaN
+    # where M does not exist (the point lies inside a base circle: the mesh interferes)
+    zb = _where(eb >= 1.0, 1.0, np.maximum(1.0, m1 - eb * (m1 - 1.0)))
+    zd = _where(s < 0, 1.0, _where(eb >= 1.0, 1.0, np.maximum(1.0, m2 - eb * (m2 - 1.0))))
+    zb = _where(np.isnan(m1) & (eb < 1.0), np.nan, zb)
+    zd = _where(np.isnan(m2) & (eb < 1.0) & (s > 0), np.nan, zd)
     return _out(zb), _out(zd)
 
 
@@ -1089,9 +1093,9 @@ def _rate(a, mats, fields):
                                          m2.poisson))  # fmt: skip
     Z_beta = given("Z_beta", 1.0 / np.sqrt(cos_b))
     Z_B, Z_D = single_pair_factors(z1, z2, da1, da2, db1, db2, a["alpha_wt"], ea, eb, internal)
-    interferes = np.isnan(Z_B)
-    Z_B = given("Z_B", _where(interferes, 1.0, Z_B))
-    Z_D = given("Z_D", Z_D)
+    interferes = (np.isnan(Z_B) & ("o_Z_B" not in a)) | (np.isnan(Z_D) & ("o_Z_D" not in a))
+    Z_B = given("Z_B", _where(np.isnan(Z_B), 1.0, Z_B))
+    Z_D = given("Z_D", _where(np.isnan(Z_D), 1.0, Z_D))
     s_min = np.minimum(sH1, sH2)
     Z_L, Z_v = lubrication_factors(s_min, a["nu40"], v)
     Z_L, Z_v = given("Z_L", Z_L), given("Z_v", Z_v)
@@ -1191,7 +1195,7 @@ def _rate(a, mats, fields):
         np.isfinite(den1) & np.isfinite(den2),
         root_ok,
         qs_ok,
-        ~interferes | ("o_Z_B" in a),
+        ~interferes,
     ]
     reason = np.zeros(shape, int)
     for code, ok in reversed(list(enumerate(checks, 1))):
