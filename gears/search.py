@@ -365,16 +365,37 @@ def _order(rows: np.ndarray, objective: Sequence[str]) -> np.ndarray:
     return np.lexsort(keys)
 
 
+#: Objective values within this relative distance tie on the Pareto front: module twins (the same
+#: teeth and shifts at another module) have the same sliding and contact ratio up to the last
+#: bits (1.4e-15 apart), and one must not dominate the other.
+PARETO_TOLERANCE = 1e-9
+
+
+def _tie(values: np.ndarray) -> np.ndarray:
+    """``values`` with each run of neighbours within :data:`PARETO_TOLERANCE` (relative) of
+    the previous one replaced by the run's smallest value."""
+    order = np.argsort(values, kind="stable")
+    v = values[order]
+    gap = np.diff(v) > PARETO_TOLERANCE * np.maximum(np.abs(v[:-1]), np.abs(v[1:]))
+    gap |= ~np.isfinite(v[1:]) | ~np.isfinite(v[:-1])  # infinities tie only exactly
+    start = np.concatenate([[0], np.flatnonzero(gap) + 1])
+    runs = np.repeat(start, np.diff(np.concatenate([start, [len(v)]])))
+    out = np.empty_like(values)
+    out[order] = np.where(np.isfinite(v), v[runs], v)
+    return out
+
+
 def _pareto(rows: np.ndarray, objective: Sequence[str]) -> np.ndarray:
     """The rows no other row dominates (all objectives <=, one <), in objective order.
 
-    Rows with equal objective vectors stand or fall together. Two objectives: one sweep in
-    sorted order (a running minimum); three: each distinct vector against the front so far.
+    Rows with equal objective vectors (equal within :data:`PARETO_TOLERANCE`) stand or fall
+    together. Two objectives: one sweep in sorted order (a running minimum); three: each
+    distinct vector against the front so far.
     """
     if len(rows) < 2:
         return rows
     rows = rows[_order(rows, objective)]
-    obj = np.stack(_objectives(rows, objective), axis=1)
+    obj = np.stack([_tie(np.asarray(o, float)) for o in _objectives(rows, objective)], axis=1)
     vec, inverse = np.unique(obj, axis=0, return_inverse=True)
     inverse = inverse.ravel()
     if vec.shape[1] == 2:  # vec is sorted by (o1, o2): an earlier vector has o1 <=

@@ -278,3 +278,56 @@ def test_the_tolerance_floor_follows_the_module():
     refused(lambda: check_tolerance(2e-8, module=1.0), "tolerance", "1e-06")
     p = bounded(lambda: Gear(20, 0.01).outline(1e-7))
     assert isinstance(p, shapely.Polygon) and p.is_valid
+
+
+# --- 7. small slips ------------------------------------------------------------------------------
+def test_synthesize_candidates_pass_their_own_neighbour_check():
+    # issue: a candidate failed its own neighbour check by -1.4e-14. Six planets at clearance 0
+    # touch exactly (2 a sin 30 deg = a = the tip diameter, in exact arithmetic); the search and
+    # the stage decide with the one stated tolerance (trains.planetary.NEIGHBOUR_TOLERANCE)
+    from trains import synthesize
+
+    found = synthesize(3, 6, scheme="stepped", clearance=0.0, module=0.3, z_min=17, z_max=100,
+                       tolerance=0.02, limit=50)  # fmt: skip
+    assert found
+    for cand in found:
+        assert cand.stage.check()["neighbour"].ok, cand
+
+
+def test_pareto_keeps_module_twins_whose_objectives_tie():
+    # issue: the front dropped a module twin whose objectives differ by 1.4e-15. Sliding and
+    # contact ratio do not depend on the module (independent: similar geometry), so every
+    # front row appears once per module
+    import collections
+
+    from gears import search
+
+    r = search.pairs(ratio=2.5, module=(1, 2, 3), teeth=(12, 40), shifts=(-0.5, 1.0, 0.1),
+                     objective=("sliding", "-contact_ratio"), top=None)  # fmt: skip
+    rows = zip(r["z1"], r["z2"], np.round(r["x1"], 9), np.round(r["x2"], 9), strict=True)
+    twins = collections.Counter(rows)
+    assert set(twins.values()) == {3}
+
+
+def test_power_flow_friction_errors_are_train_errors():
+    # issue: a mesh whose ring tip lies inside its base circle made power_flow(friction=...)
+    # raise GearError; the train's own error names the relation
+    from trains import Train, power_flow
+
+    t = Train()
+    t.mesh("a", "b", gears=(Gear(20, 1), Gear(24, 1, internal=True)), carrier="h")
+    text = refused(lambda: power_flow(t, "a", "h", fixed=["b"], friction=0.1), "a-b",
+                   exc=TrainError)  # fmt: skip
+    assert "base circle" in text
+
+
+def test_an_unreachable_ratio_says_what_one_stage_reaches():
+    # issue: synthesize(1e9, 3) said only which filters removed the sets. Independent bound: a
+    # simple stage, ring fixed, reaches 1 + z3 / z1 <= 1 + 200 / 17 = 12.8 within z 17 ... 200
+    from trains import synthesize
+
+    found = bounded(lambda: synthesize(1e9, 3))
+    assert not found
+    assert "reach" in found.reason and "at most about 1:" in found.reason
+    most = float(found.reason.split("at most about 1:")[1].split()[0].rstrip(";,:"))
+    assert 9 < most <= 1 + 200 / 17

@@ -73,6 +73,7 @@ from trains.power import power_flow
 from trains.willis import Train
 
 __all__ = [
+    "NEIGHBOUR_TOLERANCE",
     "SCHEMES",
     "Assembly",
     "Placement",
@@ -382,6 +383,13 @@ _GEARS = {
 }  # fmt: skip
 _TRAIN_MEMBER = {"sun": "sun", "planet": "planet", "planet'": "planet", "planet2": "planet2",
                  "ring": "ring"}  # fmt: skip
+
+
+#: How far (in modules) a gap between planet tip circles may fall short of the clearance and
+#: still pass: the rounding of ``2 a_w sin(pi / k)`` (six planets at clearance 0 touch exactly,
+#: and land 1.8e-15 mm short). :func:`trains.synthesize` filters with the same tolerance, so its
+#: candidates pass their own stage's check.
+NEIGHBOUR_TOLERANCE = 1e-9
 
 
 class Planetary:
@@ -939,7 +947,7 @@ class Planetary:
     @property
     def max_planets(self) -> int:
         """The largest planet count that passes the neighbour condition (>= 1)."""
-        need = self.clearance * self.module
+        need = (self.clearance - NEIGHBOUR_TOLERANCE) * self.module
         n = 1
         while n < 10_000 and self._neighbour_gap(n + 1) >= need:
             n += 1
@@ -966,6 +974,7 @@ class Planetary:
                 "coaxiality", margins[worst],
                 f"double-planet closure: a_sun-planet {a1:.4f}, a_planet-planet2 {a12:.4f}, "
                 f"a_planet2-ring {a2:.4f} mm; tightest: {worst} by {margins[worst]:+.4f} mm",
+                ok=margins[worst] >= -NEIGHBOUR_TOLERANCE * self.module,  # as the search
             )  # fmt: skip
         a = [p.center_distance for p in pairs.values()]
         spread = max(a) - min(a)
@@ -1041,6 +1050,7 @@ class Planetary:
                 f"smallest gap between planet tip circles {gap:.4f} mm (largest planet tip "
                 f"d_a = {max(tips):.4f} mm after tip shortening) vs clearance {need:.4f} mm; "
                 f"the largest planet count that fits is {self.max_planets}",
+                ok=gap - need >= -NEIGHBOUR_TOLERANCE * self.module,
             )  # fmt: skip
         findings.append(nb)
         findings.append(

@@ -153,7 +153,13 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
     if friction is not None:
         for r in rel:
             if r.pair is not None:
-                geometric[r.name] = r.pair.mesh_efficiency(friction)
+                try:
+                    geometric[r.name] = r.pair.mesh_efficiency(friction)
+                except GearError as exc:  # e.g. a tip inside its base circle: no contact
+                    raise TrainError(
+                        f"relation {r.name!r}: no efficiency from its gears with friction "
+                        f"{friction:g}: {exc}"
+                    ) from None
     if isinstance(mesh_efficiency, Mapping):
         names = {r.name for r in rel}
         for k in mesh_efficiency:

@@ -48,6 +48,7 @@ from gears.rack import BasicRack
 from gears.report import format_duration
 from trains.errors import TrainError
 from trains.planetary import (
+    NEIGHBOUR_TOLERANCE,
     Planetary,
     _default_roles,
     assembly_ticks,
@@ -133,10 +134,13 @@ class Candidates(list):
         Condition -> number of sets it removed, in the order the filters ran.
     """
 
-    def __init__(self, items: Iterable[Candidate], examined: int, removed: dict[str, int]):
+    def __init__(self, items: Iterable[Candidate], examined: int, removed: dict[str, int],
+                 reach: tuple[float, float] | None = None, request: str = ""):  # fmt: skip
         super().__init__(items)
         self.examined = examined
         self.removed = dict(removed)
+        self.reach = reach  # the ratios the sets within the tooth range reached (lo, hi)
+        self.request = request  # e.g. "one simple stage with z 17 ... 200", for the reason
 
     @property
     def reason(self) -> str:
@@ -158,8 +162,18 @@ class Candidates(list):
         head = "no candidate meets the request" if not self else f"{len(self)} candidates"
         counts = ", ".join(f"{k} {v}" for k, v in self.removed.items())
         tail = f"; the last sets were removed by '{last[-1]}'" if last and not self else ""
+        reach = ""
+        if not self and self.reach is not None and self.request and last and last[-1] == "ratio":
+            lo, hi = self.reach
+            if lo <= hi:
+                most_ = max(abs(lo), abs(hi))
+                reach = (
+                    f"; {self.request} reaches ratios {lo:.4g} ... {hi:.4g}, at most about "
+                    f"1:{most_:.3g}: more stages (synthesize_gearbox) or a wider tooth range "
+                    "reach further"
+                )
         return (
-            f"{head}: of {self.examined} tooth-number sets {most}{tail}; "
+            f"{head}: of {self.examined} tooth-number sets {most}{tail}{reach}; "
             f"removed per condition: {counts}"
         )
 
@@ -439,7 +453,8 @@ def synthesize(
         removed["shifted stage"] = dropped_shift
     if mesh_checks == "full":
         removed["full checks"] = dropped_full
-    return Candidates(out, search.examined, removed)
+    request = f"one {scheme} stage with z {z_min} ... {z_max}"
+    return Candidates(out, search.examined, removed, tuple(search.reach), request)
 
 
 def _check_size(scheme: str, z_min: int, z_max: int, shifts: int, budget: float) -> None:
@@ -499,6 +514,7 @@ class _Search:
         self.geometry = geometry
         self.removed: dict[str, int] = {}
         self.examined = 0
+        self.reach = [math.inf, -math.inf]  # the ratios the sets reaching the ratio filter have
 
     def _count(self, name: str, before: int, after: int) -> None:
         self.removed[name] = self.removed.get(name, 0) + int(before - after)
@@ -549,6 +565,9 @@ class _Search:
         num, den = stage_ratio(self.scheme, b["z1"], b["z2"], b["z2p"], b["z3"], *self.roles)
         num, den = np.asarray(num, np.int64), np.asarray(den, np.int64)
         ok_den = den != 0
+        if ok_den.any():
+            r = num[ok_den] / den[ok_den]
+            self.reach = [min(self.reach[0], float(r.min())), max(self.reach[1], float(r.max()))]
         a, q = self.target.numerator, self.target.denominator
         diff = np.abs(num * q - a * den)
         if self.tol == 0:
@@ -606,7 +625,7 @@ class _Search:
         tip = np.maximum(z2, z2p) + 2 * self.ha
         with np.errstate(divide="ignore"):
             chord = np.where(k > 1, 2 * a * np.sin(np.pi / np.maximum(k, 1)), np.inf)
-        return self._keep(b, chord - tip >= self.c - 1e-12, "neighbour")
+        return self._keep(b, chord - tip >= self.c - NEIGHBOUR_TOLERANCE, "neighbour")
 
     def _mesh(self, b: dict) -> dict:
         s = self.scheme
@@ -658,8 +677,8 @@ class _Search:
         ha, c = self.ha, self.c
         a1, a2, a12 = (z1 + zp1) / 2.0, (z3 - zp2) / 2.0, (zp1 + zp2) / 2.0
         ok = (a12 > np.abs(a1 - a2)) & (a12 < a1 + a2)
-        ok &= a2 - (z1 / 2 + ha) - (zp2 / 2 + ha) >= c - 1e-12
-        ok &= (z3 / 2 - ha) - a1 - (zp1 / 2 + ha) >= c - 1e-12
+        ok &= a2 - (z1 / 2 + ha) - (zp2 / 2 + ha) >= c - NEIGHBOUR_TOLERANCE
+        ok &= (z3 / 2 - ha) - a1 - (zp1 / 2 + ha) >= c - NEIGHBOUR_TOLERANCE
         g = self._keep(g, ok, "coaxiality")
         z1, zp1, zp2, z3, k = g["z1"], g["z2"], g["z2p"], g["z3"], g["k"]
         a1, a2, a12 = (z1 + zp1) / 2.0, (z3 - zp2) / 2.0, (zp1 + zp2) / 2.0
@@ -672,7 +691,7 @@ class _Search:
             d = np.sqrt(np.maximum(a1 * a1 + a2 * a2 - 2 * a1 * a2 * np.cos(psi + sign * th), 0))
             gap = np.minimum(gap, d - r1 - r2)
         gap = np.where(k > 1, gap, np.inf)
-        g = self._keep(g, gap >= c - 1e-12, "neighbour")
+        g = self._keep(g, gap >= c - NEIGHBOUR_TOLERANCE, "neighbour")
         z1, zp1, zp2, z3 = g["z1"], g["z2"], g["z2p"], g["z3"]
         ok = (self._mesh_ok(z1, zp1, False) & self._mesh_ok(zp1, zp2, False)
               & self._mesh_ok(zp2, z3, True))  # fmt: skip
