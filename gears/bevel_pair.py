@@ -475,12 +475,12 @@ class BevelPair:
     def animate(
         self, path, frames: int = 24, fps: float = 12.0, turn: float | None = None,
         tolerance: float = 0.05, backlash: float = 0.0, elevation: float = 30.0,
-        azimuth: float = -30.0, progress=None,
+        azimuth: float = -30.0, size: int = 400, progress=None,
     ):  # fmt: skip
         """Write a GIF (or MP4 with ffmpeg) of the pair turning: gear 1 by ``turn`` degrees
         (default one pitch, ``360 / z1``), gear 2 rolling with it, seen from ``elevation`` and
-        ``azimuth`` degrees (:func:`gears.render.write_animation_3d`; ``progress(i, n)`` after
-        each frame)."""
+        ``azimuth`` degrees, ``size`` pixels square (:func:`gears.render.write_animation_3d`;
+        ``progress(i, n)`` after each frame)."""
         from gears.render import Camera, write_animation_3d
 
         n = check_frames(frames)
@@ -500,7 +500,7 @@ class BevelPair:
             q1, q2 = self.placement(i * turn / n)
             return [(_placed(m1, q1), m1.faces, c1), (_placed(m2, q2), m2.faces, c2)]
 
-        return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps,
+        return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps, size=size,
                                   progress=progress)  # fmt: skip
 
     # --- checks ----------------------------------------------------------------------------------

@@ -240,14 +240,14 @@ class Differential:
     def animate(
         self, path, frames: int = 48, left: float = 0.9, right: float = 1.1,
         turn: float | None = None, tolerance: float = 0.05, fps: float = 16.0,
-        elevation: float = 20.0, azimuth: float = -35.0, progress=None,
+        elevation: float = 20.0, azimuth: float = -35.0, size: int = 400, progress=None,
     ):  # fmt: skip
         """Write a GIF (or MP4) of the differential turning through a corner: the wheels at the
         speeds ``left`` and ``right`` (the outer wheel faster), the faster one turning by
         ``turn`` degrees over the animation (default two pinion pitches, ``720 / z_pinion``),
         every member in proportion (:meth:`placements`), seen from ``elevation`` and ``azimuth``
-        degrees
-        (:func:`gears.render.write_animation_3d`; ``progress(i, n)`` after each frame)."""
+        degrees, ``size`` pixels square (:func:`gears.render.write_animation_3d`;
+        ``progress(i, n)`` after each frame)."""
         from gears.arguments import check_frames, check_tolerance
         from gears.bevel_pair import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
         from gears.budget import check_budget
@@ -284,7 +284,7 @@ class Differential:
 
         try:
             return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps,
-                                      progress=progress)  # fmt: skip
+                                      size=size, progress=progress)  # fmt: skip
         except GearError as exc:
             raise TrainError(str(exc)) from None
 
