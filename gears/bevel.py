@@ -200,20 +200,28 @@ def bevel_geometry(
     ([4.035, 1.965], [30.48699, 65.59398])
     """
     clearance = _check_clearance(clearance)
-    z = np.stack(np.broadcast_arrays(np.asarray(z1, float), np.asarray(z2, float)))
     m = np.asarray(module, float)
     b = np.asarray(face_width, float)
     alpha = np.radians(np.asarray(pressure_angle, float))
+    x1 = np.asarray(profile_shift, float)
+    xs1 = np.asarray(thickness_modification, float)
+    za, zb = np.asarray(z1, float), np.asarray(z2, float)
+    shape = np.broadcast_shapes(za.shape, zb.shape, m.shape, b.shape, alpha.shape, x1.shape,
+                                xs1.shape, np.shape(shaft_angle), np.shape(addendum),
+                                np.shape(dedendum))  # fmt: skip
+
+    def pair(a, c):  # (pinion, wheel) stacked on a leading axis, broadcast to every row
+        return np.stack([np.broadcast_to(a, shape), np.broadcast_to(c, shape)])
+
+    z = pair(za, zb)
     d1, d2 = pitch_angles(z[0], z[1], shaft_angle)
-    delta = np.stack(np.broadcast_arrays(np.asarray(d1), np.asarray(d2)))
+    delta = pair(d1, d2)
     dr = np.radians(delta)
     r_e = m * z[0] / (2.0 * np.sin(dr[0]))
     r_m = r_e - b / 2.0
     m_m = m * r_m / r_e
-    x1 = np.asarray(profile_shift, float)
-    xs1 = np.asarray(thickness_modification, float)
-    x = np.stack(np.broadcast_arrays(x1, -x1))
-    xs = np.stack(np.broadcast_arrays(xs1, -xs1))
+    x = pair(x1, -x1)
+    xs = pair(xs1, -xs1)
     h_am = m_m * (np.asarray(addendum, float) + x)
     h_fm = m_m * (np.asarray(dedendum, float) - x)
     with np.errstate(divide="ignore", invalid="ignore"):
