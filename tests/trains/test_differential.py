@@ -212,3 +212,39 @@ def test_property_finite_answer_or_train_error(side, pinion, n, module, left, ri
     r = d.check()
     if n >= 2:  # one pinion has no neighbour to assemble with
         assert r["pinion.assembly"].ok == ((2 * side) % n == 0)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    angle=st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-(10**6), 10**6)),
+    left=st.floats(-1e6, 1e6),
+    right=st.floats(-1e6, 1e6),
+)
+def test_property_placements_finite_or_train_error(angle, left, right):
+    import numpy as np
+
+    d = Differential(16, 10, **GLEASON)
+    try:
+        place = d.placements(angle, left, right)
+    except TrainError as exc:
+        assert "angle" in str(exc)
+        return
+    assert sorted(place) == ["left", "pinion1", "pinion2", "right"]
+    for m in place.values():
+        assert np.all(np.isfinite(m))
+        np.testing.assert_allclose(m[:3, :3] @ m[:3, :3].T, np.eye(3), atol=1e-9)  # rotations
+    p = d.pair
+    try:
+        q1, q2 = p.placement(angle)
+    except Exception as exc:  # the library's own error only
+        from gears import GearError
+
+        assert isinstance(exc, GearError) and "angle" in str(exc)
+        return
+    assert np.all(np.isfinite(q1)) and np.all(np.isfinite(q2))
+
+
+def test_the_design_documents_call():
+    # DESIGN.md's public surface: trains.Differential(side=24, pinion=16, n_pinions=2, module=3)
+    d = Differential(side=24, pinion=16, n_pinions=2, module=3)
+    assert d.solve(left=0, right=2)["case"] == 1 and d.check()["pinion.assembly"].ok
