@@ -443,7 +443,7 @@ def rotation(axis, angle: float) -> np.ndarray:
     apex of bevel gears)."""
     k = np.asarray(axis, float)
     k = k / np.linalg.norm(k)
-    t = math.radians(float(angle))
+    t = math.radians(math.fmod(float(angle), 360.0))  # cos and sin of a huge angle lose it
     c, s = math.cos(t), math.sin(t)
     kx = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
     m = np.eye(4)
@@ -465,7 +465,9 @@ def bevel_placement(z1: int, z2: int, shaft_angle: float, angle: float = 0.0):
     >>> np.round(g2[:3, 2], 12).tolist()   # gear 2's axis
     [1.0, 0.0, 0.0]
     """
+    # the pair repeats itself every 360 z2 deg of gear 1: reduce before scaling (no overflow)
+    angle = math.fmod(float(angle), 360.0 * z2)
     g1 = rotation((0.0, 0.0, 1.0), angle)
-    a2 = 180.0 + 180.0 / z2 - float(angle) * z1 / z2
+    a2 = 180.0 + 180.0 / z2 - angle * z1 / z2
     g2 = rotation((0.0, 1.0, 0.0), shaft_angle) @ rotation((0.0, 0.0, 1.0), a2)
     return g1, g2

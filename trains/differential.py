@@ -149,6 +149,8 @@ class Differential:
         for name, v in (("angle", angle), ("left", left), ("right", right)):
             if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
                 raise TrainError(f"{name} = {v!r}; valid is a finite number")
+        if not abs(angle) <= 1e12:
+            raise TrainError(f"angle = {angle!r}; valid is a finite angle of at most 1e12 deg")
         top = max(abs(float(left)), abs(float(right)))
         if top == 0.0:
             return 0.0, 0.0, 0.0
