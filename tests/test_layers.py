@@ -40,7 +40,7 @@ LAYERS = {
         ["power", "coaxial"],
         ["capacity"],
         ["planetary", "catalog", "differential"],
-        ["synthesis", "toml_format"],
+        ["synthesis", "toml_format", "sizing"],
         ["gearbox"],
         ["commands", "commands._common"],
         ["commands.*"],

@@ -1,35 +1,46 @@
-"""Layer 7, design: multi-stage planetary gearbox search (issue 13).
+"""Layer 7, design: multi-stage planetary gearbox search (issues 13 and 20).
 
 :func:`synthesize_gearbox` finds ``stages`` planetary stages in series (any of the five
-schemes each, ring fixed, sun in, carrier out by default) whose ratios multiply to a target.
+schemes each, ring fixed, sun in, carrier out) whose ratios multiply to a target, ranked; with a
+``torque`` each stage is rated for the torque and speed it carries and sized: its module is the
+smallest of a list that carries the load, its face width the smallest of a set.
 
-1. **Stage sets, once.** Every single stage a scheme allows with a reduction ratio
-   ``1 < r <= R`` comes from one :func:`trains.synthesize` call per scheme (exact Fractions,
-   the assembly, neighbour, coaxiality and mesh conditions; vectorised). The calls run on local
-   threads, or as Dask tasks with ``client=``.
-2. **Prune on the exact ratio, in integers.** Stages are grouped by their ratio ``a/b``; for
-   k = 2 the second ratio must be exactly ``R b / a`` (one dictionary look-up of a reduced
-   integer pair); for k = 3 the first two are paired and the third looked up the same way.
+1. **Stage sets, in blocks.** Every single stage a scheme allows with a reduction ratio
+   ``1 < r <= R / r_min^(k-1)`` comes from :func:`trains.synthesis.stage_block` (exact
+   Fractions, the assembly, neighbour, coaxiality and mesh conditions; vectorised), the
+   tooth-count sets of each scheme cut into many blocks: tasks for the local threads or a Dask
+   cluster.
+2. **Prune on the exact ratio, in integers.** Stages are grouped by their reduced ratio
+   ``a/b``; for k = 2 the second ratio must be exactly ``R b / a`` (an integer look-up over all
+   ratios at once); for k = 3 the first two are paired and the third looked up the same way.
    With ``tolerance > 0`` a sorted float window preselects and ``Fraction`` decides.
-3. **Combine, not recompute.** The objectives are separable (the largest ring, the sum of
-   the tooth counts, the product of the stage efficiencies), so the best gearboxes of a ratio
-   tuple combine the best stages of each ratio: only the ``top`` best per ratio are combined.
-4. **Full checks, lazily.** Walking the ranking, each stage is built and checked once with
-   :meth:`trains.planetary.Planetary.check` (cached); a gearbox with a failing stage is
-   skipped, until ``top`` are found.
+3. **Sizing (with a torque).** A stage's load depends on its place: its input torque is the
+   gearbox's times the ratios before it (lossless, as :meth:`Planetary.rating`'s power flow),
+   so the ratio tuples are taken in every order and each (ratio, place) gets its load. Every
+   stage of a ratio is sized at each load it meets (:func:`trains.sizing.size_stages`, every
+   mesh rated by ISO 6336 as :meth:`Planetary.rating` rates it), in chunks of stages: tasks.
+4. **Combine, not recompute.** The objectives are separable (a sum of the stages' volumes or
+   masses, the largest ring, the sum of the tooth counts, the product of the efficiencies), so
+   the best gearboxes of a ratio tuple combine the best stages of each (ratio, place): the
+   ``4 top`` best of each are combined, vectorised, in chunks of tuples (tasks), each chunk
+   reduced to its best before it returns.
+5. **Full checks, lazily.** Walking the ranking, each stage is checked once with
+   :meth:`trains.planetary.Planetary.check` (the checks of the next stages in batches, as
+   tasks); a gearbox with a failing stage is skipped, until ``top`` are found.
 
-Stages are listed input first, in non-decreasing ratio (any order gives the same product).
+Without a torque, stages are listed input first in non-decreasing ratio (any order gives the
+same product); with one, in the order found best.
 """
 
 from __future__ import annotations
 
 import bisect
-import heapq
 import itertools
 import math
 import numbers
 import time
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -37,17 +48,36 @@ from typing import Any
 import numpy as np
 
 from gears.errors import GearError
+from gears.meshing import default_threads
 from gears.search import dask_client, dask_results, progress_callback
+from gears.sizing import ISO54, load_case
 from trains.errors import TrainError
-from trains.planetary import canonical_scheme
-from trains.synthesis import Candidate, _as_ratio, synthesize
+from trains.planetary import SCHEMES, canonical_scheme
+from trains.sizing import size_stages
+from trains.synthesis import (
+    BLOCK,
+    STAGE_FIELDS,
+    Candidate,
+    _as_ratio,
+    _check_size,
+    _counts,
+    set_count,
+    stage_block,
+)
 
 __all__ = ["Gearbox", "Gearboxes", "synthesize_gearbox"]
 
 _OBJECTIVES = ("ring", "teeth", "efficiency")
+_RATED_OBJECTIVES = ("volume", "mass", "ring", "teeth", "efficiency")
 _MIN_RATIO = {"simple": 2.0}
-#: combinations of stage ratios examined without client= before the search is refused
+#: combinations of stage ratios examined before the search is refused
 MAX_LOCAL_PAIRS = 5 * 10**7
+#: stages sized per task, and ratio tuples combined per task
+SIZING_CHUNK = 4096
+TUPLE_CHUNK = 256
+#: tooth-count sets per stage-set task at least (smaller blocks cost more than they save)
+MIN_SETS = 4096
+_ALPHABET = {s: i for i, s in enumerate(sorted(SCHEMES))}  # ident order: scheme names sorted
 
 
 @dataclass(frozen=True)
@@ -57,7 +87,7 @@ class Gearbox:
     Attributes
     ----------
     stages : tuple of Candidate
-        The stages, input first (each with its ``stage``: a :class:`Planetary`).
+        The stages, input first (each with its ``stage``: a :class:`Planetary`, at its module).
     ratio : Fraction
         The product of the stage ratios (exact).
     ratio_error : float
@@ -68,6 +98,15 @@ class Gearbox:
     efficiency : float
         Product of the stage efficiencies (:meth:`Planetary.efficiency`, Ozols (14.25)
         meshes with friction 0.1).
+    face_widths : tuple of float
+        With a load: each stage's face width, mm (its module is ``stages[i].module``).
+    safety : tuple of (float, float)
+        With a load: each stage's smallest safety against pitting S_H and bending S_F (of any
+        gear of any of its meshes).
+    volume, mass : float or None
+        With a load: the gears' material, mm^3 and kg (:func:`trains.sizing.size_stages`).
+    torques, speeds : tuple of float
+        With a load: each stage's input torque (N m) and speed (rpm).
     """
 
     stages: tuple[Candidate, ...]
@@ -76,23 +115,38 @@ class Gearbox:
     ring: float
     teeth: int
     efficiency: float
+    face_widths: tuple[float, ...] = ()
+    safety: tuple[tuple[float, float], ...] = ()
+    volume: float | None = None
+    mass: float | None = None
+    torques: tuple[float, ...] = ()
+    speeds: tuple[float, ...] = ()
+
+    @property
+    def modules(self) -> tuple[float, ...]:
+        """Each stage's module, mm."""
+        return tuple(c.module for c in self.stages)
 
     def __str__(self) -> str:
-        parts = " | ".join(
-            f"{c.scheme} {'/'.join(str(z) for z in _distinct(c))} x{c.n_planets} ({c.ratio})"
-            for c in self.stages
-        )
-        return (f"ratio {self.ratio} (error {self.ratio_error:.2e}), ring {self.ring:g} mm, "
-                f"{self.teeth} teeth, efficiency {self.efficiency:.4f}: {parts}")  # fmt: skip
+        parts = []
+        for i, c in enumerate(self.stages):
+            text = (f"{c.scheme} {'/'.join(str(z) for z in _distinct(c))} x{c.n_planets} "
+                    f"({c.ratio})")  # fmt: skip
+            if self.face_widths:
+                sh, sf = self.safety[i]
+                text += (f" m {c.module:g} b {self.face_widths[i]:g} S_H {sh:.3f} "
+                         f"S_F {sf:.3f}")  # fmt: skip
+            parts.append(text)
+        head = (f"ratio {self.ratio} (error {self.ratio_error:.2e}), ring {self.ring:g} mm, "
+                f"{self.teeth} teeth, efficiency {self.efficiency:.4f}")  # fmt: skip
+        if self.volume is not None:
+            head += f", volume {self.volume / 1e3:.4g} cm^3, mass {self.mass:.4g} kg"
+        return f"{head}: {' | '.join(parts)}"
 
 
 def _distinct(c: Candidate) -> tuple[int, ...]:
     z1, z2, z2p, z3 = c.teeth
     return (z1, z2, z3) if c.scheme == "simple" else (z1, z2, z2p, z3)
-
-
-def _teeth_total(c: Candidate) -> int:
-    return sum(_distinct(c))
 
 
 class Gearboxes(list):
@@ -107,14 +161,21 @@ class Gearboxes(list):
     checked : int
         Distinct stages checked in full (:meth:`Planetary.check`).
     seconds : float
+    tasks : int
+        Tasks the work was cut into (stage-set blocks, sizing chunks, combination chunks,
+        check batches), run on local threads or as Dask tasks.
+    sized : int
+        With a load: stage-load rows sized.
     """
 
-    def __init__(self, items, stage_sets, ratio_tuples, checked, seconds):
+    def __init__(self, items, stage_sets, ratio_tuples, checked, seconds, tasks=0, sized=0):
         super().__init__(items)
         self.stage_sets = dict(stage_sets)
         self.ratio_tuples = int(ratio_tuples)
         self.checked = int(checked)
         self.seconds = float(seconds)
+        self.tasks = int(tasks)
+        self.sized = int(sized)
 
     def table(self) -> str:
         """One line per gearbox, ranked."""
@@ -124,24 +185,40 @@ class Gearboxes(list):
         return "\n".join(f"{i:3d}. {g}" for i, g in enumerate(self, 1))
 
     def to_array(self) -> np.ndarray:
-        """A numpy structured array: rank, ratio, error, ring, teeth, efficiency and, per stage
-        ``s``, ``s_scheme``, ``s_z1``, ``s_z2``, ``s_z2p``, ``s_z3``, ``s_planets``."""
+        """A numpy structured array: rank, ratio, error, ring, teeth, efficiency (with a load
+        also volume and mass) and, per stage ``s``, ``s_scheme``, ``s_z1``, ``s_z2``,
+        ``s_z2p``, ``s_z3``, ``s_planets`` (with a load also ``s_module``, ``s_face_width``,
+        ``s_S_H``, ``s_S_F``, ``s_torque``)."""
         k = len(self[0].stages) if self else 0
+        rated = bool(self and self[0].face_widths)
         fields = [("rank", int), ("ratio", float), ("ratio_error", float), ("ring", float),
                   ("teeth", int), ("efficiency", float)]  # fmt: skip
+        if rated:
+            fields += [("volume", float), ("mass", float)]
         for s in range(1, k + 1):
             fields += [(f"{s}_scheme", "U13"), (f"{s}_z1", int), (f"{s}_z2", int),
                        (f"{s}_z2p", int), (f"{s}_z3", int), (f"{s}_planets", int)]  # fmt: skip
+            if rated:
+                fields += [(f"{s}_module", float), (f"{s}_face_width", float),
+                           (f"{s}_S_H", float), (f"{s}_S_F", float),
+                           (f"{s}_torque", float)]  # fmt: skip
         out = np.zeros(len(self), fields)
         for i, g in enumerate(self):
             row = [i + 1, float(g.ratio), g.ratio_error, g.ring, g.teeth, g.efficiency]
-            for c in g.stages:
+            if rated:
+                row += [g.volume, g.mass]
+            for j, c in enumerate(g.stages):
                 row += [c.scheme, *c.teeth, c.n_planets]
+                if rated:
+                    row += [c.module, g.face_widths[j], *g.safety[j], g.torques[j]]
             out[i] = tuple(row)
         return out
 
 
-def _validate(ratio, stages, tolerance, objective, top, schemes) -> tuple:
+# --- input ---------------------------------------------------------------------------------------
+
+
+def _validate(ratio, stages, tolerance, top, schemes) -> tuple:
     target = _as_ratio(ratio)
     if target <= 1:
         raise TrainError(f"ratio = {target}; a gearbox of reduction stages needs ratio > 1")
@@ -150,8 +227,6 @@ def _validate(ratio, stages, tolerance, objective, top, schemes) -> tuple:
     tol = float(tolerance) if isinstance(tolerance, numbers.Real) else math.nan
     if not (math.isfinite(tol) and 0 <= tol < 1):
         raise TrainError(f"tolerance = {tolerance!r}; valid is a relative error 0 <= t < 1")
-    if objective not in _OBJECTIVES:
-        raise TrainError(f"objective = {objective!r}; valid are {list(_OBJECTIVES)}")
     if isinstance(top, bool) or not isinstance(top, numbers.Integral) or top < 1:
         raise TrainError(f"top = {top!r}; valid is an integer >= 1")
     names = (schemes,) if isinstance(schemes, str) else tuple(schemes)
@@ -160,32 +235,171 @@ def _validate(ratio, stages, tolerance, objective, top, schemes) -> tuple:
     return target, int(stages), tol, tuple(dict.fromkeys(canonical_scheme(s) for s in names))
 
 
-def _stage_set(scheme, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio,
-               max_seconds=30.0):  # fmt: skip
-    """Every stage of ``scheme`` with 1 < ratio <= hi (one synthesize call; the chunk that
-    runs on a thread or as a Dask task). Returns a list of Candidates (empty if out of reach)."""
-    mid = (1 + hi) / 2
-    cover = (hi - 1) / (hi + 1) * (1 + 1e-12)
+def _positive_list(name: str, value, what: str) -> np.ndarray:
+    items = [value] if isinstance(value, numbers.Real) else value
     try:
-        found = synthesize(mid, n_planets, scheme, tolerance=cover, z_min=z_min, z_max=z_max,
-                           module=module, mesh_checks=mesh_checks, limit=10**9,
-                           min_contact_ratio=min_contact_ratio,
-                           max_seconds=max_seconds)  # fmt: skip
-    except TrainError as exc:  # this scheme cannot reach the range with these roles
-        if "cannot be reached" in str(exc):
+        items = list(items)
+    except TypeError:
+        raise TrainError(f"{name} = {value!r}; valid is {what}") from None
+    if not items:
+        raise TrainError(f"{name} is empty; valid is {what}")
+    for v in items:
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, numbers.Real)
+            or not (math.isfinite(float(v)) and 0 < float(v) <= 1e5)
+        ):
+            raise TrainError(f"{name} = {v!r}; valid is {what}")
+    return np.unique(np.asarray(items, float))
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """What the search does: the objective, the module(s), and with a load its case."""
+
+    objective: str
+    modules: np.ndarray
+    load: Any = None
+    widths: np.ndarray | None = None
+    load_sharing: float | None = None
+
+    @property
+    def rated(self) -> bool:
+        return self.load is not None
+
+
+def _plan(objective, module, torque, speed, material, face_width, life, min_safety,
+          options) -> _Plan:  # fmt: skip
+    if torque is None:
+        extra = [k for k, v in (("speed", speed), ("face_width", face_width),
+                                ("min_safety", min_safety)) if v is not None]  # fmt: skip
+        extra += list(options)
+        if extra:
+            raise TrainError(f"{', '.join(extra)} size the stages for a load: give torque= "
+                             "(N m on the input) and speed= (rpm) too")  # fmt: skip
+        objective = "ring" if objective is None else objective
+        if objective not in _OBJECTIVES:
+            raise TrainError(f"objective = {objective!r}; valid are {list(_OBJECTIVES)} (with "
+                             f"a torque also 'volume' and 'mass')")  # fmt: skip
+        m = 1.0 if module is None else module
+        if (
+            isinstance(m, bool)
+            or not isinstance(m, numbers.Real)
+            or not (math.isfinite(float(m)) and float(m) > 0)
+        ):
+            raise TrainError(f"module = {module!r}; valid is a number > 0 (mm); a list of "
+                             "modules to choose from needs torque=")  # fmt: skip
+        return _Plan(objective, np.array([float(m)]))
+    objective = "volume" if objective is None else objective
+    if objective not in _RATED_OBJECTIVES:
+        raise TrainError(f"objective = {objective!r}; valid are {list(_RATED_OBJECTIVES)}")
+    if speed is None:
+        raise TrainError("torque= needs speed= (rpm of the input) to size the stages")
+    if face_width is None:
+        raise TrainError("torque= needs face_width=: a width in mm or a set of them; each "
+                         "stage takes the smallest that carries its load")  # fmt: skip
+    widths = _positive_list("face_width", face_width, "a width 0 < b <= 1e5 mm or a list")
+    what = "a module 0 < m <= 1e5 mm or a list (default ISO 54 series I)"
+    modules = _positive_list("module", ISO54 if module is None else module, what)
+    mats = material if isinstance(material, tuple | list) else (material,)
+    if len(mats) != 1 and len(set(map(str, mats))) != 1:
+        raise TrainError(f"material = {material!r}; a gearbox takes one material for every gear")
+    options = dict(options)
+    sharing = options.pop("load_sharing_factor", None)
+    for key in ("contacts", "idler"):
+        if key in options:
+            raise TrainError(f"{key} is set by each stage's planets; it is no option here")
+    if sharing is not None and (
+        isinstance(sharing, bool)
+        or not isinstance(sharing, numbers.Real)
+        or not (math.isfinite(float(sharing)) and 1 <= float(sharing) <= 10)
+    ):
+        raise TrainError(f"load_sharing_factor = {sharing!r}; valid is 1 <= K_gamma <= 10")
+    load = load_case(torque, speed, mats[0], life, min_safety, error=TrainError, **options)
+    return _Plan(objective, modules, load, widths, None if sharing is None else float(sharing))
+
+
+# --- the runner: local threads or Dask tasks ----------------------------------------------------
+
+
+class _Runner:
+    """Runs lists of tasks on the local threads or as Dask tasks, reporting progress (tasks
+    done of tasks planned so far) and counting the tasks."""
+
+    def __init__(self, client, threads: int, report):
+        self.client = client
+        self.threads = threads
+        self.report = report
+        self.tasks = 0
+        self.done = 0
+        self.planned = 0
+
+    @property
+    def parallel(self) -> int:
+        """Threads that run tasks at once (the workers' threads on a cluster)."""
+        if self.client is None:
+            return self.threads
+        try:
+            return max(1, sum(self.client.nthreads().values()))
+        except (OSError, TimeoutError, AttributeError):
+            return 1
+
+    def map(self, fn: Callable, args: list[tuple]) -> list:
+        self.tasks += len(args)
+        self.planned += len(args)
+        if not args:
             return []
-        raise
-    return [c for c in found if 1 < c.ratio <= hi]
+        results: list = [None] * len(args)
+        if self.client is not None:
+            futures = {self.client.submit(fn, *a, pure=False): i for i, a in enumerate(args)}
+            try:
+                for fut, value in dask_results(self.client, set(futures)):
+                    results[futures[fut]] = value
+                    fut.release()
+                    self._tick()
+            except GearError as exc:  # the cluster failed under the work
+                raise TrainError(str(exc)) from None
+            return results
+        if self.threads == 1 or len(args) == 1:
+            for i, a in enumerate(args):
+                results[i] = fn(*a)
+                self._tick()
+            return results
+        with ThreadPoolExecutor(min(self.threads, len(args)),
+                                thread_name_prefix="trains.gearbox") as pool:  # fmt: skip
+            futures = {pool.submit(fn, *a): i for i, a in enumerate(args)}
+            for fut in _completed(futures):
+                results[futures[fut]] = fut.result()
+                self._tick()
+        return results
+
+    def _tick(self) -> None:
+        self.done += 1
+        if self.report:
+            self.report(self.done, self.planned)
+
+
+def _completed(futures):
+    from concurrent.futures import as_completed
+
+    return as_completed(futures)
+
+
+# --- the search ----------------------------------------------------------------------------------
 
 
 def synthesize_gearbox(
     ratio: Any, stages: int = 2, n_planets: Any = 3, schemes: str | Sequence[str] = "simple",
-    *, tolerance: float = 0.0, z_min: int = 17, z_max: int = 150, module: float = 1.0,
-    objective: str = "ring", top: int = 10, mesh_checks: str = "geometry",
-    min_contact_ratio: float = 1.1, full_checks: bool = True, client=None,
+    *, tolerance: float = 0.0, z_min: int = 17, z_max: int = 150, module=None,
+    objective: str | None = None, top: int = 10, mesh_checks: str = "geometry",
+    min_contact_ratio: float = 1.1, full_checks: bool = True, torque=None, speed=None,
+    material="case-carburized", face_width=None, life: float = 20000.0, min_safety=None,
+    client=None, threads: int | None = None, chunk_size: int | None = None,
     progress: Callable[[int, int], object] | bool | None = None, max_seconds: float = 30.0,
+    **rating_options,
 ) -> Gearboxes:  # fmt: skip
-    """Planetary stages in series whose ratios multiply to ``ratio``, ranked.
+    """Planetary stages in series whose ratios multiply to ``ratio``, ranked; with a
+    ``torque``, each stage sized for the load it carries.
 
     Parameters
     ----------
@@ -200,28 +414,63 @@ def synthesize_gearbox(
         ``"internal"``, ``"double-planet"``); ring fixed, sun in, carrier out.
     tolerance : float
         Allowed relative error of the total ratio (0: exact).
-    z_min, z_max, module, mesh_checks, min_contact_ratio
+    z_min, z_max, mesh_checks, min_contact_ratio
         As :func:`trains.synthesize`, for every stage.
-    objective : {"ring", "teeth", "efficiency"}
-        Smallest largest ring, fewest teeth in total, or highest efficiency; ties go to the
-        next objectives in that order.
+    module : float or sequence, optional
+        Without a torque: the module of every stage (default 1). With a torque: the modules to
+        choose from (default the ISO 54 series I, 1 ... 50 mm,
+        :data:`gears.sizing.ISO54`): each stage takes the smallest that carries its load.
+    objective : str, optional
+        Without a torque ``"ring"`` (default: the smallest largest ring), ``"teeth"`` (fewest
+        teeth in total) or ``"efficiency"`` (highest); ties go to the next objectives in that
+        order. With a torque also ``"volume"`` (default: the least material in total, mm^3)
+        and ``"mass"`` (kg); ties then go to the volume.
     top : int
         Gearboxes returned.
     full_checks : bool
         Check each stage of the returned gearboxes with :meth:`Planetary.check` and skip
         gearboxes with a failing stage.
+    torque, speed : float, optional
+        Torque (N m) and speed (rpm) on the input (the first sun). Each stage carries the
+        input torque times the ratios before it (lossless, as :meth:`Planetary.rating`), at
+        the input speed over them; every mesh is rated as :meth:`Planetary.rating` rates it
+        (``root="standard"``: ISO 6336-3's root form, the ring's by the rack approximation).
+    material : name or Material
+        ISO 6336-5 material of every gear (:mod:`gears.materials`).
+    face_width : float or sequence
+        With a torque: face widths to choose from, mm; at its module each stage takes the
+        smallest that carries its load.
+    life : float
+        Required life, hours.
+    min_safety : dict, optional
+        ``{"pitting": S_Hmin, "bending": S_Fmin}`` for every gear of every mesh (default 1.0
+        and 1.4).
     client : dask.distributed.Client, str, None or False
-        Run the per-scheme stage searches as Dask tasks (None: the active client if any).
+        Run the tasks (stage-set blocks, sizing and combination chunks, check batches) on a
+        Dask cluster (None: the active client if any; False: local threads).
+    threads : int, optional
+        Local threads (default :func:`gears.meshing.default_threads`).
+    chunk_size : int, optional
+        Tooth-count sets per stage-set task (default: the sets over four tasks per thread or
+        worker thread, at least 4096 and at most 10^6).
     progress : callable, bool or None
-        ``progress(done, total)`` after each stage set and each checked gearbox; True: a tqdm
-        bar; None: a bar when stderr is a terminal; False: none.
+        ``progress(done, total)`` in tasks; True: a tqdm bar; None: a bar when stderr is a
+        terminal; False: none.
     max_seconds : float
-        The time budget of each stage-set search (:func:`trains.synthesize` refuses a larger
-        one before any work).
+        The time budget of each scheme's stage set (refused before any work, as
+        :func:`trains.synthesize`).
+    **rating_options
+        With a torque: any other option of :meth:`Planetary.rating` (``quality``,
+        ``application_factor``, ``load_sharing_factor``, factors such as ``K_v=1.0``).
 
     Returns
     -------
     Gearboxes
+
+    Raises
+    ------
+    TrainError
+        Bad input (naming the value), before any work; a Dask cluster that fails.
 
     Examples
     --------
@@ -231,54 +480,405 @@ def synthesize_gearbox(
     >>> best = synthesize_gearbox(12, stages=2, z_max=100, progress=False)[0]
     >>> best.ratio, [c.ratio for c in best.stages], [c.teeth for c in best.stages]
     (Fraction(12, 1), [Fraction(54, 17), Fraction(34, 9)], [(34, 20, 20, 74), (27, 24, 24, 75)])
+
+    The lightest 1:12 gearbox for 50 N m at 1500 rpm, modules of ISO 54, face widths 10 ... 30:
+
+    >>> best = synthesize_gearbox(12, 2, z_max=100, torque=50, speed=1500,
+    ...                           face_width=[10, 15, 20, 25, 30], progress=False)[0]
+    >>> best.modules, best.face_widths
+    ((1.25, 1.5), (15.0, 20.0))
     """
     t0 = time.perf_counter()
-    target, k, tol, names = _validate(ratio, stages, tolerance, objective, top, schemes)
+    target, k, tol, names = _validate(ratio, stages, tolerance, top, schemes)
     for name, v in (("z_min", z_min), ("z_max", z_max)):
         if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 1:
             raise TrainError(f"{name} = {v!r}; valid is an integer >= 1")
-    report = _as_train_error(progress_callback, progress, "gearbox search", "stage set")
-    # the largest stage ratio: the target over the smallest ratio the other stages can have
-    # (a simple stage, ring fixed, gives 1 + z3/z1 > 2; the other schemes more than 1)
+    if z_min > z_max:
+        raise TrainError(f"z_min = {z_min} > z_max = {z_max}; give z_min <= z_max")
+    _counts(n_planets)
+    if mesh_checks not in ("textbook", "geometry", "full"):
+        raise TrainError(f"mesh_checks = {mesh_checks!r}; valid are 'textbook', 'geometry' "
+                         "and 'full'")  # fmt: skip
+    cr = float(min_contact_ratio) if isinstance(min_contact_ratio, numbers.Real) else math.nan
+    if not (math.isfinite(cr) and cr >= 0):
+        raise TrainError(f"min_contact_ratio = {min_contact_ratio!r}; valid is a number >= 0")
+    budget = float(max_seconds) if isinstance(max_seconds, numbers.Real) else math.nan
+    if not (budget > 0 and math.isfinite(budget)):
+        raise TrainError(f"max_seconds = {max_seconds!r}; valid is a number > 0")
+    for s in names:
+        _check_size(s, z_min, z_max, 1, budget)
+    plan = _plan(objective, module, torque, speed, material, face_width, life, min_safety,
+                 rating_options)  # fmt: skip
+    if threads is None:
+        threads = default_threads()
+    elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise TrainError(f"threads = {threads!r}; valid is an integer >= 1")
+    if chunk_size is not None and (
+        isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1
+    ):
+        raise TrainError(f"chunk_size = {chunk_size!r}; valid is an integer >= 1")
+    report = _as_train_error(progress_callback, progress, "gearbox search", "task")
+    client = _as_train_error(dask_client, client)
+    runner = _Runner(client, threads, report)
+
+    # 1. stage sets, in blocks of tooth-count sets
     lowest = min(_MIN_RATIO.get(s, 1.0) for s in names)
     hi = float(target) * (1 + tol) / lowest ** (k - 1)
-    args = [(s, hi, n_planets, z_min, z_max, module, mesh_checks, min_contact_ratio,
-             max_seconds) for s in names]  # fmt: skip
-    sets = _run(args, client, report, len(names) + top)
-    pool = [c for found in sets for c in found]
-    by_ratio: dict[Fraction, list[Candidate]] = {}
-    for c in pool:
-        by_ratio.setdefault(c.ratio, []).append(c)
-    tuples = _ratio_tuples(sorted(by_ratio), target, k, tol)
-    key = _stage_key(objective)
-    for r in {r for rs in tuples for r in rs}:  # only ratios that take part
-        by_ratio[r].sort(key=key)
-        del by_ratio[r][top * 4 :]  # the best per ratio suffice (separable objectives)
-    heap: list = []
-    counter = itertools.count()
-    for rs in tuples:
-        for combo in itertools.product(*(by_ratio[r] for r in rs)):
-            score = _score(combo, target, objective)
-            heapq.heappush(heap, (score, next(counter), combo))
-    out, checked, verdicts = [], 0, {}
-    while heap and len(out) < top:
-        score, _, combo = heapq.heappop(heap)
-        if full_checks:
-            ok = True
-            for c in combo:
-                if id(c) not in verdicts:
-                    verdicts[id(c)] = _stage_ok(c, min_contact_ratio)
-                    checked += 1
-                ok &= verdicts[id(c)]
-            if not ok:
-                continue
-        out.append(_gearbox(combo, target))
-        if report:
-            report(len(names) + len(out), len(names) + top)
+    args = []
+    for code, s in enumerate(names):
+        total = set_count(s, z_min, z_max)
+        size = chunk_size or min(BLOCK, max(MIN_SETS, -(-total // (4 * runner.parallel))))
+        args += [(code, s, hi, n_planets, z_min, z_max, a, min(a + size, total), mesh_checks,
+                  cr) for a in range(0, total, size)]  # fmt: skip
+    pool = _merge_blocks(runner.map(_stage_block, args), names)
+    counts = {s: int(np.count_nonzero(pool["scheme"] == i)) for i, s in enumerate(names)}
+
+    # 2. ratios and the tuples whose product meets the target
+    ratios, rid = _ratio_ids(pool)
+    tuples = _ratio_tuples(ratios, target, k, tol)
+    if plan.rated:  # a stage's load depends on its place: every order of a tuple
+        tuples = sorted({p for t in tuples for p in itertools.permutations(t)})
+        keys = sorted({key for t in tuples for key in _places(t, ratios)})
+        index = {key: i for i, key in enumerate(keys)}
+        key_tuples = [tuple(index[key] for key in _places(t, ratios)) for t in tuples]
+        design = _size(runner, pool, rid, keys, plan, names)
+        rows, row_key = design["stage"], design["key"]
+        feasible = design["ok"]
+    else:
+        keys = list(range(len(ratios)))
+        key_tuples = list(tuples)
+        design = None
+        rows, row_key = np.arange(len(rid)), rid
+        feasible = np.ones(len(rid), bool)
+    wanted = {i for kt in key_tuples for i in kt}
+    if plan.objective == "efficiency":  # every stage that may take part (module-free: at m0)
+        m0 = float(plan.modules[0]) if not plan.rated else 1.0
+        use = np.unique(rows[feasible & np.isin(row_key, sorted(wanted))])
+        pool["eta"] = np.zeros(len(pool["z1"]))
+        pool["eta"][use] = _efficiencies(runner, pool, use, names, m0)
+    table = _stage_table(pool, rows, design, plan, names)
+    lists = _best_per_key(table, row_key, feasible, len(keys), plan, top)
+    errors = {kt: float(abs(math.prod((ratios[r] for r in t), start=Fraction(1)) - target)
+                        / target) for kt, t in zip(key_tuples, tuples, strict=True)}  # fmt: skip
+    key_tuples = [kt for kt in key_tuples if all(len(lists[i]) for i in kt)]
+
+    # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
+    out, checked = _walk(runner, table, lists, key_tuples, errors, plan, top, full_checks, cr,
+                         names, target)  # fmt: skip
     if report:
-        report(len(names) + top, len(names) + top)
-    counts = {s: len(f) for s, f in zip(names, sets, strict=True)}
-    return Gearboxes(out, counts, len(tuples), checked, time.perf_counter() - t0)
+        report(runner.planned, runner.planned)
+    sized = 0 if design is None else len(design["stage"])
+    return Gearboxes(out, counts, len(tuples), checked, time.perf_counter() - t0, runner.tasks,
+                     sized)  # fmt: skip
+
+
+def _stage_block(code, scheme, hi, n_planets, z_min, z_max, first, last, mesh_checks, cr):
+    """One block of one scheme's stage set (a task), tagged with the scheme's code."""
+    out = stage_block(scheme, hi, n_planets, z_min, z_max, first, last, mesh_checks, cr)
+    out["scheme"] = np.full(len(out["z1"]), code, np.int64)
+    return out
+
+
+def _merge_blocks(parts: list[dict], names: Sequence[str]) -> dict[str, np.ndarray]:
+    """The stage pool: every block's stages in a fixed order (scheme, the tooth counts, more
+    planets first), so the answer does not depend on how the blocks ran; ``total`` is a
+    stage's tooth count (z1 + z2 + z3, and z2' of a two-gear planet)."""
+    fields = (*STAGE_FIELDS, "scheme")
+    parts = [p for p in parts if len(p["z1"])]
+    if not parts:
+        pool = {f: np.empty(0, np.int64) for f in fields}
+    else:
+        pool = {f: np.concatenate([p[f] for p in parts]).astype(np.int64) for f in fields}
+    order = np.lexsort((-pool["k"], pool["z3"], pool["z2p"], pool["z2"], pool["z1"],
+                        pool["scheme"]))  # fmt: skip
+    pool = {f: v[order] for f, v in pool.items()}
+    two = np.array([s != "simple" for s in names], bool)[pool["scheme"]] if len(order) else \
+        np.empty(0, bool)  # fmt: skip
+    pool["total"] = pool["z1"] + pool["z2"] + pool["z3"] + np.where(two, pool["z2p"], 0)
+    return pool
+
+
+def _ratio_ids(pool) -> tuple[list[Fraction], np.ndarray]:
+    """The distinct stage ratios (ascending, exact) and each stage's index into them.
+
+    Distinct reduced fractions with denominators below 2^26 differ by more than a float64 can
+    confuse, so the float order is the exact order."""
+    if not len(pool["num"]):
+        return [], np.empty(0, np.int64)
+    pairs = np.stack([pool["num"], pool["den"]], axis=1)
+    uniq, inverse = np.unique(pairs, axis=0, return_inverse=True)
+    order = np.argsort(uniq[:, 0] / uniq[:, 1], kind="stable")
+    rank = np.empty(len(order), np.int64)
+    rank[order] = np.arange(len(order))
+    ratios = [Fraction(int(n), int(d)) for n, d in uniq[order]]
+    return ratios, rank[np.ravel(inverse)]
+
+
+def _ratio_tuples(ratios: list[Fraction], target: Fraction, k: int, tol: float) -> list[tuple]:
+    """Non-decreasing tuples of indices into ``ratios`` (ascending) whose product meets the
+    target: exactly (a look-up of the reduced fraction) or within a tolerance (a float window,
+    then Fractions decide)."""
+    n = len(ratios)
+    find = _Finder(ratios, tol)
+    if k == 1:
+        return [(i,) for i in find(target, 0)]
+    if k * n ** (k - 1) > MAX_LOCAL_PAIRS:
+        raise TrainError(
+            f"{n} stage ratios give about {n ** (k - 1):,} combinations for {k} stages, over "
+            f"the limit of {MAX_LOCAL_PAIRS:,}; lower z_max or use fewer schemes"
+        )
+    out = []
+    limit = target * (1 + Fraction(tol))
+    for i, r1 in enumerate(ratios):
+        if r1**k > limit:
+            break
+        if k == 2:
+            out += [(i, j) for j in find(target / r1, i)]
+            continue
+        for j in range(i, n):
+            r2 = ratios[j]
+            if r1 * r2 * r2 > limit:
+                break
+            out += [(i, j, m) for m in find(target / (r1 * r2), j)]
+    return out
+
+
+class _Finder:
+    """Indices of ``ratios`` (ascending) equal to a needed ratio (tol = 0: a dictionary
+    look-up) or within the relative tolerance, from index ``low`` on."""
+
+    def __init__(self, ratios: list[Fraction], tol: float):
+        self.ratios, self.tol = ratios, tol
+        self.index = {r: i for i, r in enumerate(ratios)}
+        self.floats = [float(r) for r in ratios]
+
+    def __call__(self, need: Fraction, low: int) -> list[int]:
+        if self.tol == 0:
+            j = self.index.get(need)
+            return [j] if j is not None and j >= low else []
+        f, tol = float(need), self.tol
+        a = bisect.bisect_left(self.floats, f * (1 - tol) * (1 - 1e-12))
+        b = bisect.bisect_right(self.floats, f * (1 + tol) * (1 + 1e-12))
+        return [j for j in range(max(a, low), b) if abs(self.ratios[j] / need - 1) <= tol]
+
+
+def _places(t: tuple, ratios: list[Fraction]):
+    """``(ratio index, product of the ratios before it)`` for each place of tuple ``t``: the
+    stage there carries the input torque times that product."""
+    p = Fraction(1)
+    for r in t:
+        yield r, p
+        p *= ratios[r]
+
+
+def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
+    """Every stage of a key's ratio at the key's load (the input torque times the ratios
+    before it), sized in chunks of stages of one scheme (tasks): per (key, stage) row the
+    module, face width, safeties, volume, mass and ring diameter (``ok`` where one fits)."""
+    load = plan.load
+    order = np.argsort(rid, kind="stable")
+    cuts = np.searchsorted(rid[order], np.arange(len(keys) and (int(rid.max()) + 2)))
+    key_ids, stage_ids, mult = [], [], []
+    for i, (r, p) in enumerate(keys):
+        s = order[cuts[r] : cuts[r + 1]]
+        key_ids.append(np.full(s.size, i, np.int64))
+        stage_ids.append(s)
+        mult.append(np.full(s.size, float(p)))
+    cat = lambda parts, dtype: np.concatenate(parts) if parts else np.empty(0, dtype)  # noqa: E731
+    key_ids, stage_ids, mult = cat(key_ids, np.int64), cat(stage_ids, np.int64), cat(mult, float)
+    fields = ("module", "face_width", "S_H", "S_F", "volume", "mass", "ring")
+    design = {f: np.zeros(stage_ids.size) for f in fields}
+    design["ok"] = np.zeros(stage_ids.size, bool)
+    scheme = pool["scheme"][stage_ids]
+    args, where = [], []
+    for code in np.unique(scheme):
+        rows = np.flatnonzero(scheme == code)
+        size = max(64, min(SIZING_CHUNK, -(-rows.size // (4 * runner.parallel))))
+        for a in range(0, rows.size, size):
+            part = rows[a : a + size]
+            st = stage_ids[part]
+            cols = [pool[f][st] for f in ("z1", "z2", "z2p", "z3", "k", "num", "den")]
+            args.append((load, names[int(code)], *cols, load.torque * mult[part],
+                         load.speed / mult[part], plan.modules, plan.widths,
+                         plan.load_sharing))  # fmt: skip
+            where.append(part)
+    for part, res in zip(where, runner.map(size_stages, args), strict=True):
+        for f in fields:
+            design[f][part] = res[f]
+        design["ok"][part] = res["module_index"] >= 0
+    design.update(key=key_ids, stage=stage_ids, torque=load.torque * mult,
+                  speed=load.speed / mult)  # fmt: skip
+    return design
+
+
+def _efficiencies(runner: _Runner, pool, use: np.ndarray, names, module: float) -> np.ndarray:
+    """:meth:`Planetary.efficiency` of the pool's stages ``use`` at ``module``, in chunks
+    (tasks); 0 where a stage cannot be built."""
+    chunk = max(8, -(-use.size // (4 * runner.parallel)))
+    parts = [use[a : a + chunk] for a in range(0, use.size, chunk)]
+    args = [([names[int(c)] for c in pool["scheme"][part]],
+             *(pool[f][part] for f in ("z1", "z2", "z2p", "z3", "k")), module)
+            for part in parts]  # fmt: skip
+    res = runner.map(_efficiency_task, args)
+    return np.concatenate(res) if res else np.empty(0)
+
+
+def _efficiency_task(schemes, z1, z2, z2p, z3, k, module) -> np.ndarray:
+    out = np.zeros(len(schemes))
+    for i, s in enumerate(schemes):
+        c = _candidate(s, z1[i], z2[i], z2p[i], z3[i], k[i], Fraction(1), module)
+        out[i] = _stage_efficiency(c)
+    return out
+
+
+def _stage_efficiency(c: Candidate) -> float:
+    key = (c.scheme, c.teeth, c.n_planets, c.module)
+    if key not in _EFFICIENCY:
+        try:
+            _EFFICIENCY[key] = float(c.stage.efficiency())
+        except ValueError:
+            _EFFICIENCY[key] = 0.0
+    return _EFFICIENCY[key]
+
+
+_EFFICIENCY: dict[tuple, float] = {}
+
+
+def _candidate(scheme, z1, z2, z2p, z3, k, ratio, module) -> Candidate:
+    return Candidate((int(z1), int(z2), int(z2p), int(z3)), int(k), ratio, 0.0, 0, False,
+                     scheme, float(module))  # fmt: skip
+
+
+def _stage_table(pool, rows: np.ndarray, design, plan: _Plan, names) -> dict:
+    """The rows the combination picks from (a stage, or with a load a stage at a load), with
+    the columns the scores read."""
+    if design is None:
+        m = np.full(rows.size, float(plan.modules[0]))
+        t = {"module": m, "ring": pool["z3"][rows] * m, "volume": np.zeros(rows.size),
+             "mass": np.zeros(rows.size)}  # fmt: skip
+    else:
+        t = {f: design[f] for f in ("module", "ring", "volume", "mass", "face_width", "S_H",
+                                    "S_F", "torque", "speed")}  # fmt: skip
+    for f in ("z1", "z2", "z2p", "z3", "k", "scheme", "num", "den", "total"):
+        t[f] = pool[f][rows]
+    t["eta"] = pool["eta"][rows] if "eta" in pool else np.zeros(rows.size)
+    t["alpha"] = np.array([_ALPHABET[s] for s in names], np.int64)[t["scheme"]] if rows.size \
+        else np.empty(0, np.int64)  # fmt: skip
+    return t
+
+
+def _head(objective: str, rated: bool, ring, teeth, vol, mass, eta) -> list:
+    """The leading score keys of an objective (most significant first)."""
+    if objective == "volume":
+        return [vol, ring, teeth]
+    if objective == "mass":
+        return [mass, vol, ring, teeth]
+    if objective == "ring":
+        return [ring, vol, teeth] if rated else [ring, teeth]
+    if objective == "teeth":
+        return [teeth, vol, ring] if rated else [teeth, ring]
+    return [-eta, vol, ring, teeth] if rated else [-eta, ring, teeth]
+
+
+def _best_per_key(t: dict, row_key, feasible, n_keys: int, plan: _Plan, top: int) -> list:
+    """For each key, its feasible rows of the table in objective order, the best ``4 top``
+    (the objectives are separable, so the best gearboxes combine only those)."""
+    rows = np.flatnonzero(feasible)
+    head = _head(plan.objective, plan.rated, t["ring"][rows], t["total"][rows],
+                 t["volume"][rows], t["mass"][rows], t["eta"][rows])  # fmt: skip
+    ident = [t[f][rows] for f in ("z1", "z2", "z2p", "z3", "scheme")] + [-t["k"][rows]]
+    order = rows[np.lexsort([*reversed([*head, *ident]), row_key[rows]])]
+    bounds = np.searchsorted(row_key[order], np.arange(n_keys + 1))
+    return [order[bounds[i] : bounds[i + 1]][: 4 * top] for i in range(n_keys)]
+
+
+def _score_order(t: dict, c: np.ndarray, err: np.ndarray, objective: str, rated: bool):
+    """The order of combinations ``c`` (table rows, one column per place) by score: the
+    objective, its tie-breakers, the ratio error, then each stage's identity (scheme name,
+    teeth, planets), as the unrated search always ranked."""
+    head = _head(objective, rated, t["ring"][c].max(axis=1), t["total"][c].sum(axis=1),
+                 t["volume"][c].sum(axis=1), t["mass"][c].sum(axis=1),
+                 np.prod(t["eta"][c], axis=1))  # fmt: skip
+    ident = []
+    for j in range(c.shape[1]):
+        cj = c[:, j]
+        ident += [t[f][cj] for f in ("alpha", "z1", "z2", "z2p", "z3", "k", "module")]
+    return np.lexsort(list(reversed([*head, err, *ident])))
+
+
+def _combine_task(t: dict, lists: dict, key_tuples: list, errors: list, objective: str,
+                  rated: bool, keep: int) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
+    """The best ``keep`` combinations of a chunk of key tuples (a task): each tuple's lists
+    crossed, scored, reduced. ``t`` holds only the chunk's rows; returns their ``row`` ids
+    (an (n, k) array) and the combinations' ratio errors, in score order."""
+    combos, errs = [], []
+    for kt, err in zip(key_tuples, errors, strict=True):
+        grids = np.meshgrid(*(lists[i] for i in kt), indexing="ij")
+        combos.append(np.stack([g.ravel() for g in grids], axis=1))
+        errs.append(np.full(combos[-1].shape[0], err))
+    c, err = np.concatenate(combos), np.concatenate(errs)
+    order = _score_order(t, c, err, objective, rated)[:keep]
+    return t["row"][c[order]], err[order]
+
+
+def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, names,
+          target) -> tuple[list[Gearbox], int]:  # fmt: skip
+    """Combine the tuples in chunks (tasks), rank, and walk the ranking checking stages in
+    batches (tasks) until ``top`` gearboxes pass."""
+    if not key_tuples:
+        return [], 0
+    keep = 16 * top
+    verdicts: dict[tuple, bool] = {}
+    checked = 0
+    t["row"] = np.arange(len(t["z1"]))
+    while True:
+        chunk = max(1, min(TUPLE_CHUNK, -(-len(key_tuples) // (4 * runner.parallel))))
+        args = []
+        for a in range(0, len(key_tuples), chunk):
+            kts = key_tuples[a : a + chunk]
+            used = np.unique(np.concatenate([lists[i] for kt in kts for i in kt]))
+            sub = {f: v[used] for f, v in t.items()}  # only the chunk's rows travel
+            local = {i: np.searchsorted(used, lists[i]) for kt in kts for i in kt}
+            args.append((sub, local, kts, [errors[kt] for kt in kts], plan.objective,
+                         plan.rated, keep))  # fmt: skip
+        parts = runner.map(_combine_task, args)
+        c = np.concatenate([p[0] for p in parts])
+        err = np.concatenate([p[1] for p in parts])
+        c = c[_score_order(t, c, err, plan.objective, plan.rated)]
+        complete = all(len(p[0]) < keep for p in parts)
+        out = []
+        for start in range(0, len(c), 4 * top):
+            batch = c[start : start + 4 * top]
+            if full_checks:
+                todo = sorted({_ident(t, s, names) for s in batch.ravel()} - set(verdicts))
+                if todo:
+                    size = max(1, -(-len(todo) // (2 * runner.parallel)))
+                    groups = [todo[i : i + size] for i in range(0, len(todo), size)]
+                    results = runner.map(_check_task, [(g, cr) for g in groups])
+                    for group, res in zip(groups, results, strict=True):
+                        verdicts.update(zip(group, res, strict=True))
+                        checked += len(group)
+            for combo in batch:
+                if full_checks and not all(verdicts[_ident(t, s, names)] for s in combo):
+                    continue
+                out.append(_gearbox(combo, t, plan, target, names))
+                if len(out) == top:
+                    return out, checked
+        if complete:
+            return out, checked
+        keep *= 4  # failing checks used up the best: combine deeper
+
+
+def _ident(t: dict, row, names) -> tuple:
+    """A stage as checked: scheme, teeth, planets, module."""
+    row = int(row)
+    return (names[int(t["scheme"][row])], *(int(t[f][row]) for f in ("z1", "z2", "z2p", "z3",
+            "k")), float(t["module"][row]))  # fmt: skip
+
+
+def _check_task(group, cr) -> list[bool]:
+    """Full checks (:meth:`Planetary.check`) of a batch of stages (a task)."""
+    return [_stage_ok(_candidate(*g[:6], Fraction(1), g[6]), cr) for g in group]
 
 
 def _stage_ok(c: Candidate, min_contact_ratio: float) -> bool:
@@ -288,110 +888,31 @@ def _stage_ok(c: Candidate, min_contact_ratio: float) -> bool:
         return False
 
 
-def _efficiency(c: Candidate) -> float:
-    cache = _efficiency.cache  # type: ignore[attr-defined]
-    key = (c.scheme, c.teeth, c.n_planets, c.module)
-    if key not in cache:
-        try:
-            cache[key] = float(c.stage.efficiency())
-        except ValueError:
-            cache[key] = 0.0
-    return cache[key]
-
-
-_efficiency.cache = {}  # type: ignore[attr-defined]
-
-
-def _stage_key(objective: str) -> Callable[[Candidate], tuple]:
-    if objective == "ring":
-        return lambda c: (c.teeth[3], _teeth_total(c), c.teeth)
-    if objective == "teeth":
-        return lambda c: (_teeth_total(c), c.teeth[3], c.teeth)
-    return lambda c: (-_efficiency(c), c.teeth[3], _teeth_total(c), c.teeth)
-
-
-def _score(combo: Sequence[Candidate], target: Fraction, objective: str) -> tuple:
-    ring = max(c.teeth[3] * c.module for c in combo)
-    teeth = sum(_teeth_total(c) for c in combo)
-    ratio = math.prod((c.ratio for c in combo), start=Fraction(1))
-    error = float(abs(ratio - target) / target)
-    ident = tuple((c.scheme, c.teeth, c.n_planets) for c in combo)
-    if objective == "ring":
-        return (ring, teeth, error, ident)
-    if objective == "teeth":
-        return (teeth, ring, error, ident)
-    eta = math.prod(_efficiency(c) for c in combo)
-    return (-eta, ring, teeth, error, ident)
-
-
-def _gearbox(combo: Sequence[Candidate], target: Fraction) -> Gearbox:
-    ratio = math.prod((c.ratio for c in combo), start=Fraction(1))
-    return Gearbox(
-        tuple(combo), ratio, float(abs(ratio - target) / target),
-        max(c.teeth[3] * c.module for c in combo), sum(_teeth_total(c) for c in combo),
-        math.prod(_efficiency(c) for c in combo),
+def _gearbox(combo, t, plan: _Plan, target, names) -> Gearbox:
+    rows = [int(r) for r in combo]
+    stages = tuple(
+        Candidate(tuple(int(t[f][r]) for f in ("z1", "z2", "z2p", "z3")), int(t["k"][r]),
+                  Fraction(int(t["num"][r]), int(t["den"][r])), 0.0, 0, False,
+                  names[int(t["scheme"][r])], float(t["module"][r]))
+        for r in rows
     )  # fmt: skip
-
-
-def _ratio_tuples(ratios: list[Fraction], target: Fraction, k: int, tol: float) -> list[tuple]:
-    """Non-decreasing tuples of stage ratios whose product meets the target (exactly: integer
-    look-ups of the reduced fraction; with a tolerance: a float window, then Fractions)."""
-    have = set(ratios)
-    floats = [float(r) for r in ratios]
-
-    def last(need: Fraction, low: Fraction) -> list[Fraction]:
-        if tol == 0:
-            return [need] if need in have and need >= low else []
-        f = float(need)
-        i = bisect.bisect_left(floats, f * (1 - tol) * (1 - 1e-12))
-        j = bisect.bisect_right(floats, f * (1 + tol) * (1 + 1e-12))
-        return [r for r in ratios[i:j] if r >= low and abs(r / need - 1) <= tol]
-
-    if k == 1:
-        return [(r,) for r in last(target, Fraction(0))]
-    if k * len(ratios) ** (k - 1) > MAX_LOCAL_PAIRS:
-        raise TrainError(
-            f"{len(ratios)} stage ratios give about {len(ratios) ** (k - 1):,} combinations for "
-            f"{k} stages, over the limit of {MAX_LOCAL_PAIRS:,}; lower z_max or use fewer schemes"
-        )
-    out = []
-    for i, r1 in enumerate(ratios):
-        if r1**k > target * (1 + tol):
-            break
-        if k == 2:
-            out += [(r1, r2) for r2 in last(target / r1, r1)]
-            continue
-        for r2 in ratios[i:]:
-            if r1 * r2 * r2 > target * (1 + tol):
-                break
-            out += [(r1, r2, r3) for r3 in last(target / (r1 * r2), r2)]
-    return out
-
-
-def _run(args: list[tuple], client, report, total: int) -> list[list[Candidate]]:
-    """The stage sets: one chunk per scheme, on threads or as Dask tasks."""
-    client = _as_train_error(dask_client, client)
-    if client is not None:
-        futures = {client.submit(_stage_set, *a, pure=False): i for i, a in enumerate(args)}
-        results: list = [None] * len(args)
-        try:
-            for n, (fut, found) in enumerate(dask_results(client, set(futures)), 1):
-                results[futures[fut]] = found
-                if report:
-                    report(n, total)
-        except GearError as exc:  # the cluster failed under the work
-            raise TrainError(str(exc)) from None
-        return results
-    from concurrent.futures import ThreadPoolExecutor
-
-    with ThreadPoolExecutor(max(1, min(len(args), 4))) as pool:
-        futures = [pool.submit(_stage_set, *a) for a in args]
-        results = []
-        for n, fut in enumerate(futures, 1):
-            results.append(fut.result())
-            if report:
-                report(n, total)
-    return results
+    ratio = math.prod((c.ratio for c in stages), start=Fraction(1))
+    common = dict(
+        stages=stages, ratio=ratio, ratio_error=float(abs(ratio - target) / target),
+        ring=max(c.teeth[3] * c.module for c in stages),
+        teeth=int(sum(int(t["total"][r]) for r in rows)),
+        efficiency=math.prod(_stage_efficiency(c) for c in stages),
+    )  # fmt: skip
+    if not plan.rated:
+        return Gearbox(**common)
+    return Gearbox(
+        **common, face_widths=tuple(float(t["face_width"][r]) for r in rows),
+        safety=tuple((float(t["S_H"][r]), float(t["S_F"][r])) for r in rows),
+        volume=float(sum(t["volume"][r] for r in rows)),
+        mass=float(sum(t["mass"][r] for r in rows)),
+        torques=tuple(float(t["torque"][r]) for r in rows),
+        speeds=tuple(float(t["speed"][r]) for r in rows),
+    )  # fmt: skip
 
 
 def _as_train_error(fn, *args):

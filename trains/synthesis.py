@@ -57,7 +57,7 @@ from trains.planetary import (
     stage_ratio,
 )
 
-__all__ = ["Candidate", "Candidates", "synthesize"]
+__all__ = ["STAGE_FIELDS", "Candidate", "Candidates", "set_count", "stage_block", "synthesize"]
 
 #: Tooth-count sets examined per vectorised block (bounds the memory of every search).
 BLOCK = 1_000_000
@@ -457,6 +457,58 @@ def synthesize(
     return Candidates(out, search.examined, removed, tuple(search.reach), request)
 
 
+def set_count(scheme: str, z_min: int, z_max: int) -> int:
+    """Tooth-count sets :func:`synthesize` enumerates for ``scheme`` (the flat index that
+    :func:`stage_block` cuts): n^2 for the simple and double-planet schemes, n^3 otherwise."""
+    n = z_max - z_min + 1
+    return n ** (2 if canonical_scheme(scheme) in ("simple", "double-planet") else 3)
+
+
+#: the arrays of one stage block (:func:`stage_block`)
+STAGE_FIELDS = ("z1", "z2", "z2p", "z3", "k", "num", "den", "hunting")
+
+
+def stage_block(scheme: str, high, n_planets, z_min: int, z_max: int, first: int, last: int,
+                mesh_checks: str = "geometry", min_contact_ratio: float = 1.1,
+                clearance: float = 0.5) -> dict[str, np.ndarray]:  # fmt: skip
+    """Every zero-shift stage of ``scheme`` (ring fixed, sun in, carrier out) with a ratio
+    ``1 < r <= high`` among the tooth-count sets ``first .. last - 1`` of the flat index of
+    :func:`synthesize` (:func:`set_count`), as arrays :data:`STAGE_FIELDS` (the ratio
+    ``num/den`` exact, reduced). The same conditions as :func:`synthesize`; blocks of one
+    scheme are independent, so a search runs them on any thread or worker.
+
+    >>> b = stage_block("simple", 7, 3, 17, 60, 0, 44 * 44)
+    >>> len(b["z1"]) > 0 and bool((b["num"] <= 7 * b["den"]).all())
+    True
+    """
+    scheme = canonical_scheme(scheme)
+    high = float(high)
+    mid = _as_ratio((1 + high) / 2)
+    cover = (high - 1) / (high + 1) * (1 + 1e-12)
+    rack = BasicRack.iso53()
+    search = _Search(scheme, mid, cover, _counts(n_planets), z_min, z_max, clearance, 8,
+                     min_contact_ratio, rack.addendum, rack.pressure_angle, "ring", "sun",
+                     "carrier", False, mesh_checks != "textbook")  # fmt: skip
+    arrays = search.run(None, first, last)
+    num, den = arrays["num"], arrays["den"]
+    keep = (num > den) & (num <= high * den)
+    out = {f: arrays[f][keep] for f in STAGE_FIELDS}
+    if mesh_checks == "full" and len(out["z1"]):
+        rows = zip(*(out[f].tolist() for f in ("z1", "z2", "z2p", "z3", "k")), strict=True)
+        good = np.array([_full_check(scheme, *row, clearance) for row in rows])
+        out = {f: v[good] for f, v in out.items()}
+    return out
+
+
+def _full_check(scheme, z1, z2, z2p, z3, k, clearance) -> bool:
+    planet = z2 if scheme == "simple" else (z2, z2p)
+    try:
+        return bool(Planetary(z1, planet, z3, k, 1.0, scheme=scheme, clearance=clearance)
+                    .check().ok)  # fmt: skip
+    except ValueError:
+        return False
+
+
 def _check_size(scheme: str, z_min: int, z_max: int, shifts: int, budget: float) -> None:
     """Refuse a search whose estimated time exceeds ``budget`` seconds (issue 11): n^2 sets for
     a simple stage, n^3 for the three-index schemes (a double-planet search expands the planet
@@ -520,15 +572,16 @@ class _Search:
         self.removed[name] = self.removed.get(name, 0) + int(before - after)
 
     # --- enumeration
-    def _blocks(self):
+    def _blocks(self, first: int = 0, last: int | None = None):
         """Tooth-count sets in blocks of at most BLOCK (memory does not grow with z_max): the
-        flat index over (z1, z2) or (z1, z2, z2'), in the order of a meshgrid."""
+        flat index over (z1, z2) or (z1, z2, z2'), in the order of a meshgrid, from ``first``
+        to ``last`` (default: all, :func:`set_count`)."""
         z = np.arange(self.z_min, self.z_max + 1, dtype=np.int64)
         s = self.scheme
         dims = 2 if s in ("simple", "double-planet") else 3
-        total = len(z) ** dims
-        self.n_blocks = max(1, -(-total // BLOCK))  # for progress reports
-        for start in range(0, total, BLOCK):
+        total = len(z) ** dims if last is None else min(last, len(z) ** dims)
+        self.n_blocks = max(1, -(-(total - first) // BLOCK))  # for progress reports
+        for start in range(first, total, BLOCK):
             idx = np.arange(start, min(start + BLOCK, total), dtype=np.int64)
             zs = [z[i] for i in np.unravel_index(idx, (len(z),) * dims)]
             if s == "simple":
@@ -538,9 +591,9 @@ class _Search:
             else:
                 yield {"z1": zs[0], "z2": zs[1], "z2p": zs[2]}
 
-    def run(self, progress=None) -> dict[str, np.ndarray]:
+    def run(self, progress=None, first: int = 0, last: int | None = None) -> dict[str, np.ndarray]:
         parts = []
-        for i, block in enumerate(self._blocks(), 1):
+        for i, block in enumerate(self._blocks(first, last), 1):
             if self.scheme == "double-planet":
                 parts.append(self._double(block))
             else:

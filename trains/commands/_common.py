@@ -490,3 +490,127 @@ def rating_minimums(args: argparse.Namespace) -> tuple[float, float]:
         RATING_DEFAULTS[k] if getattr(args, k) is None else getattr(args, k)
         for k in ("min_pitting", "min_bending")
     )
+
+
+# --- sizing for a load and running on a Dask cluster (search, synthesize --stages) -------------
+
+#: seconds --connect-timeout waits by default (Dask's own default is 30 s)
+CONNECT_TIMEOUT = 5.0
+
+
+def dask_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--scheduler ADDRESS`` and ``--connect-timeout SECONDS`` (see :func:`dask_session`)."""
+    parser.add_argument(
+        "--scheduler", default=None, metavar="ADDRESS",
+        help="a Dask scheduler address (tcp://host:8786): run the chunks there",
+    )  # fmt: skip
+    parser.add_argument(
+        "--connect-timeout", type=positive("--connect-timeout", "s"), default=None,
+        metavar="SECONDS",
+        help=f"with --scheduler: how long to wait for the scheduler to answer, and for a worker "
+        f"when the cluster has none left (default {CONNECT_TIMEOUT:g} s); then exit 2",
+    )  # fmt: skip
+
+
+@contextlib.contextmanager
+def dask_session(args: argparse.Namespace, announce: bool = True) -> Iterator[object]:
+    """The Dask client of ``--scheduler`` (None without), with ``--connect-timeout`` as Dask's
+    ``distributed.comm.timeouts.connect`` for the whole run; closed afterwards. The dashboard's
+    address is printed on stderr when a progress bar shows (``announce``)."""
+    from trains.errors import TrainError
+
+    if args.connect_timeout is not None and not args.scheduler:
+        raise TrainError("--connect-timeout applies with --scheduler only")
+    if not args.scheduler:
+        yield None
+        return
+    import dask
+
+    from gears.search import dask_client
+
+    seconds = args.connect_timeout or CONNECT_TIMEOUT
+    with dask.config.set({"distributed.comm.timeouts.connect": seconds}):
+        client = dask_client(args.scheduler)
+        try:
+            link = getattr(client, "dashboard_link", None)
+            if announce and link and show_progress():
+                print(f"Dask dashboard: {link}", file=sys.stderr)  # beside the bar
+            yield client
+        finally:
+            client.close()
+
+
+def face_widths(text: str) -> list[float]:
+    """An option type: a face width in mm, or ``LOW:HIGH:STEP`` (every width from LOW to HIGH)."""
+    parts = text.split(":")
+    value = finite("--face-width")
+    if len(parts) == 1:
+        return [value(text)]
+    if len(parts) != 3:
+        raise argparse.ArgumentTypeError(
+            f"--face-width {text!r}; give widths in mm (10 15 20) or LOW:HIGH:STEP (10:40:5)"
+        )
+    lo, hi, step = (value(p) for p in parts)
+    if step <= 0 or hi < lo:
+        raise argparse.ArgumentTypeError(
+            f"--face-width {text!r}; LOW:HIGH:STEP needs HIGH >= LOW and STEP > 0"
+        )
+    n = int((hi - lo) / step + 1e-9) + 1
+    return [round(lo + i * step, 12) for i in range(n)]
+
+
+def load_arguments(parser: argparse.ArgumentParser, what: str) -> None:
+    """The options of a design searched for a load: :func:`rating_arguments` (none required)
+    and ``--face-width``."""
+    rating_arguments(parser, required=False)
+    parser.add_argument(
+        "--face-width", "-b", type=face_widths, nargs="+", default=None, metavar="B",
+        help=f"face widths to choose from, mm (10 15 20, or LOW:HIGH:STEP like 10:40:5); with "
+        f"--torque {what} takes the smallest that carries the load",
+    )  # fmt: skip
+
+
+def load_options(args: argparse.Namespace, widths_alone: bool = False) -> dict:
+    """The keyword arguments of a search for a load (``torque``, ``speed``, ``face_width``,
+    ``min_safety`` and the rating options given), or {} without ``--torque`` (with
+    ``widths_alone`` just the face widths, when given); a rating option without ``--torque``
+    and ``--torque`` without ``--speed`` or ``--face-width`` are refused."""
+    from trains.errors import TrainError
+
+    widths = None
+    if args.face_width is not None:
+        widths = sorted({w for ws in args.face_width for w in ws})
+    given = rating_given(args) + (["--speed"] if args.speed is not None else [])
+    if widths is not None and not widths_alone:
+        given.append("--face-width")
+    if args.torque is None:
+        if widths_alone and widths is not None and not given:
+            return {"face_width": widths}
+        if given:
+            raise TrainError(f"{', '.join(given)} size the design for a load: they apply with "
+                             "--torque only")  # fmt: skip
+        return {}
+    if args.speed is None or widths is None:
+        raise TrainError("--torque rates each design at its face widths and speed: give "
+                         "--speed (rpm of the input) and --face-width (mm)")  # fmt: skip
+    out = {"torque": args.torque, "speed": args.speed, "face_width": widths}
+    minimums = {k: getattr(args, f"min_{k}") for k in ("pitting", "bending")
+                if getattr(args, f"min_{k}") is not None}  # fmt: skip
+    if minimums:
+        out["min_safety"] = minimums
+    for key in ("material", "life", "quality", "roughness", "oil_viscosity", "tip_relief",
+                "application_factor"):  # fmt: skip
+        if getattr(args, key) is not None:
+            out[key] = getattr(args, key)
+    return out
+
+
+#: the library's names in the errors of a search for a load -> the options
+LOAD_NAMES = {
+    **{rf"\b{k}(?=\s*=)": v for k, v in RATING_NAMES.items()},
+    r"face_width": "--face-width",
+    r"min_safety\['pitting'\]": "--min-pitting",
+    r"min_safety\['bending'\]": "--min-bending",
+    r"client=": "--scheduler",
+    r"distributed\.comm\.timeouts\.connect": "--connect-timeout",
+}

@@ -9,6 +9,7 @@ Examples:
         --face-width 10:40:5 --min-pitting 1.1 --min-bending 1.5 --objective volume
     geartrain search pairs --ratio 3.2 --module 1 2 3 4 --teeth 12 200 --estimate
     geartrain search gearbox --ratio 37 --stages 2 --schemes simple stepped --z-max 120
+    geartrain search gearbox --ratio 20 --stages 2 --torque 50 --speed 1500 --face-width 10:30:5
 """
 
 from __future__ import annotations
@@ -17,18 +18,20 @@ import argparse
 
 from trains.commands._common import (
     CHECK_FAILED,
+    LOAD_NAMES,
     OK,
-    RATING_NAMES,
     bounded,
+    dask_arguments,
+    dask_session,
     exact,
     finite,
     integer,
+    load_arguments,
+    load_options,
     non_negative,
     output_file,
     positive,
     progress_bar,
-    rating_arguments,
-    show_progress,
 )
 
 HELP = "search gear pairs or multi-stage planetary gearboxes and print them ranked"
@@ -47,12 +50,7 @@ NAMES = {
     "z_min": "--z-min",
     r"stages(?=\s*=)": "--stages",
     r"tolerance(?=\s*=)": "--tolerance",
-    r"client=": "--scheduler",
-    r"distributed\.comm\.timeouts\.connect": "--connect-timeout",
-    **{rf"\b{k}(?=\s*=)": v for k, v in RATING_NAMES.items()},
-    r"face_width": "--face-width",
-    r"min_safety\['pitting'\]": "--min-pitting",
-    r"min_safety\['bending'\]": "--min-bending",
+    **LOAD_NAMES,
     r"dataset(?=\s*=)": "--output",
     r"top=None": "--all",
 }
@@ -60,34 +58,12 @@ NAMES = {
 
 _SUFFIXES = (".parquet", ".csv")
 
-#: seconds --connect-timeout waits by default (Dask's own default is 30 s)
-CONNECT_TIMEOUT = 5.0
-
 
 def _ratio(text: str):
     try:
         return exact("--ratio", text)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
-
-
-def _widths(text: str) -> list[float]:
-    """A face width in mm, or ``LOW:HIGH:STEP`` (every width from LOW to HIGH)."""
-    parts = text.split(":")
-    value = finite("--face-width")
-    if len(parts) == 1:
-        return [value(text)]
-    if len(parts) != 3:
-        raise argparse.ArgumentTypeError(
-            f"--face-width {text!r}; give widths in mm (10 15 20) or LOW:HIGH:STEP (10:40:5)"
-        )
-    lo, hi, step = (value(p) for p in parts)
-    if step <= 0 or hi < lo:
-        raise argparse.ArgumentTypeError(
-            f"--face-width {text!r}; LOW:HIGH:STEP needs HIGH >= LOW and STEP > 0"
-        )
-    n = int((hi - lo) / step + 1e-9) + 1
-    return [round(lo + i * step, 12) for i in range(n)]
 
 
 def _table_or_folder(text: str):
@@ -152,13 +128,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                    "--face-width)")  # fmt: skip
     p.add_argument("--max-seconds", type=positive("--max-seconds", "s"), default=600.0,
                    help="refuse a local search estimated to take longer")  # fmt: skip
-    rating_arguments(p, required=False)
-    p.add_argument(
-        "--face-width", "-b", type=_widths, nargs="+", default=None, metavar="B",
-        help="face widths to try, mm (10 15 20, or LOW:HIGH:STEP like 10:40:5): adds the "
-        "volume and mass; with --torque each pair is rated at each width and sized to the "
-        "smallest that meets --min-pitting and --min-bending",
-    )  # fmt: skip
+    load_arguments(p, "each pair")
     p.add_argument(
         "--every-width", action="store_true",
         help="with --torque: keep every face width that carries the load as a candidate of its "
@@ -186,25 +156,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--tolerance", type=non_negative("--tolerance"), default=0.0)
     g.add_argument("--z-min", type=integer("--z-min"), default=17)
     g.add_argument("--z-max", type=integer("--z-max"), default=150)
-    g.add_argument("--module", "-m", type=positive("--module", "mm"), default=1.0)
-    g.add_argument("--objective", choices=("ring", "teeth", "efficiency"), default="ring")
+    g.add_argument("--module", "-m", type=positive("--module", "mm"), nargs="+", default=None,
+                   help="module of every stage (default 1); with --torque the modules to choose "
+                   "from (default the ISO 54 series I)")  # fmt: skip
+    g.add_argument("--objective", choices=("ring", "teeth", "efficiency", "volume", "mass"),
+                   default=None,
+                   help="what to minimise (default ring; with --torque volume)")  # fmt: skip
+    load_arguments(g, "each stage")
     _common(g)
 
 
 def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--top", type=integer("--top"), default=20, help="rows to print")
-    p.add_argument(
-        "--scheduler",
-        default=None,
-        metavar="ADDRESS",
-        help="a Dask scheduler address (tcp://host:8786): run the chunks there",
-    )
-    p.add_argument(
-        "--connect-timeout", type=positive("--connect-timeout", "s"), default=None,
-        metavar="SECONDS",
-        help=f"with --scheduler: how long to wait for the scheduler to answer, and for a worker "
-        f"when the cluster has none left (default {CONNECT_TIMEOUT:g} s); then exit 2",
-    )  # fmt: skip
+    dask_arguments(p)
     p.add_argument(
         "-o",
         "--output",
@@ -216,9 +180,6 @@ def _common(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import contextlib
-    import sys
-
     from trains.errors import TrainError
 
     if args.connect_timeout is not None and not args.scheduler:
@@ -234,28 +195,16 @@ def run(args: argparse.Namespace) -> int:
         from gears.search import check_table_output
 
         check_table_output(args.output)
-    with contextlib.ExitStack() as stack:
-        client = None
-        if args.scheduler:
-            import dask
-
-            from gears.search import dask_client
-
-            seconds = args.connect_timeout or CONNECT_TIMEOUT
-            stack.enter_context(dask.config.set({"distributed.comm.timeouts.connect": seconds}))
-            client = dask_client(args.scheduler)
-            stack.callback(client.close)
-            link = getattr(client, "dashboard_link", None)
-            if link and show_progress() and not getattr(args, "estimate", False):
-                print(f"Dask dashboard: {link}", file=sys.stderr)  # beside the bar
-        return _search(args, client)
+    load = load_options(args, widths_alone=args.what == "pairs")
+    with dask_session(args, announce=not getattr(args, "estimate", False)) as client:
+        return _search(args, client, load)
 
 
-def _search(args: argparse.Namespace, client) -> int:
+def _search(args: argparse.Namespace, client, load: dict) -> int:
     if args.what == "pairs":
         from gears.search import estimate, pairs
 
-        kwargs = _pair_arguments(args, client)
+        kwargs = _pair_arguments(args, client, load)
         if args.estimate:
             print(estimate(**kwargs))
             return OK
@@ -268,11 +217,15 @@ def _search(args: argparse.Namespace, client) -> int:
     else:
         from trains.gearbox import synthesize_gearbox
 
-        with progress_bar("gearbox search") as progress:
+        module = args.module
+        if module is not None and (len(module) == 1 and not load):
+            module = module[0]
+        with progress_bar("gearbox search", unit="task") as progress:
             found = synthesize_gearbox(
                 args.ratio, args.stages, args.planets, tuple(args.schemes),
-                tolerance=args.tolerance, z_min=args.z_min, z_max=args.z_max, module=args.module,
+                tolerance=args.tolerance, z_min=args.z_min, z_max=args.z_max, module=module,
                 objective=args.objective, top=args.top, client=client, progress=progress,
+                **load,
             )  # fmt: skip
         table = found.to_array()
         print(found.table())
@@ -283,37 +236,17 @@ def _search(args: argparse.Namespace, client) -> int:
     return OK if len(found) else CHECK_FAILED
 
 
-def _pair_arguments(args: argparse.Namespace, client) -> dict:
+def _pair_arguments(args: argparse.Namespace, client, load: dict) -> dict:
     """The keyword arguments of ``gears.search.pairs`` the options give."""
-    names = [o.strip() for o in args.objective.split(",") if o.strip()] if args.objective else []
-    obj = None if not names else names[0] if len(names) == 1 else tuple(names)
-    widths = None
-    if args.face_width is not None:
-        widths = sorted({w for ws in args.face_width for w in ws})
-    from trains.commands._common import rating_given
     from trains.errors import TrainError
 
-    given = rating_given(args) + (["--speed"] if args.speed is not None else [])
-    if args.torque is None and given:
-        raise TrainError(f"{', '.join(given)} rate the pairs under a load: they apply with "
-                         "--torque only")  # fmt: skip
-    if args.torque is not None and (args.speed is None or widths is None):
-        raise TrainError("--torque rates each pair at its face widths and speed: give --speed "
-                         "(rpm of gear 1) and --face-width (mm)")  # fmt: skip
-    load = {}
-    if args.torque is not None:
-        load = {"torque": args.torque, "speed": args.speed,
-                "smallest_width": not args.every_width}  # fmt: skip
-    elif args.every_width:
+    names = [o.strip() for o in args.objective.split(",") if o.strip()] if args.objective else []
+    obj = None if not names else names[0] if len(names) == 1 else tuple(names)
+    if args.every_width and not load:
         raise TrainError("--every-width keeps the widths that carry a load: give --torque")
-    minimums = {k: getattr(args, f"min_{k}") for k in ("pitting", "bending")
-                if getattr(args, f"min_{k}") is not None}  # fmt: skip
-    if minimums:
-        load["min_safety"] = minimums
-    for key in ("material", "life", "quality", "roughness", "oil_viscosity", "tip_relief",
-                "application_factor"):  # fmt: skip
-        if getattr(args, key) is not None:
-            load[key] = getattr(args, key)
+    widths = load.pop("face_width", None)
+    if load:
+        load["smallest_width"] = not args.every_width
     dataset = args.output if isinstance(args.output, str) else None
     return dict(
         ratio=args.ratio, center_distance=args.center_distance, module=args.module,

@@ -8,6 +8,7 @@ Examples:
     geartrain synthesize --ratio 16 --planets 3 --scheme stepped --z-max 120
     geartrain synthesize --ratio 7.2 --planets 3-5 --tolerance 0.01 --allow-shift
     geartrain synthesize --ratio 37 --stages 2 --limit 3
+    geartrain synthesize --ratio 20 --stages 2 --torque 50 --speed 1500 --face-width 10:30:5
 """
 
 from __future__ import annotations
@@ -16,10 +17,16 @@ import argparse
 
 from trains.commands._common import (
     CHECK_FAILED,
+    LOAD_NAMES,
     OK,
+    dask_arguments,
+    dask_session,
     exact,
     integer,
+    load_arguments,
+    load_options,
     non_negative,
+    output_file,
     positive,
     progress_bar,
 )
@@ -50,6 +57,8 @@ NAMES = {
     r"fixed(?=\s*=)": "--fixed",
     r"input(?=\s*=)": "--input",
     r"output(?=\s*=)": "--output",
+    **LOAD_NAMES,
+    r"objective(?=\s*=)": "--objective",
 }
 """The library's names in error messages -> this command's options (see trains.cli)."""
 
@@ -102,8 +111,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="most teeth of any gear, the ring included (the search grows with it)",
     )  # fmt: skip
     parser.add_argument(
-        "--module", "-m", type=positive("--module", "mm"), default=None,
-        help="module of the stages in mm, for their dimensions (default: 1, lengths in modules)",
+        "--module", "-m", type=positive("--module", "mm"), nargs="+", default=None,
+        help="module of the stages in mm, for their dimensions (default: 1, lengths in "
+        "modules); with --stages and --torque the modules to choose from (default ISO 54)",
     )  # fmt: skip
     parser.add_argument(
         "--allow-shift", action="store_true",
@@ -131,12 +141,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="stages in series (2 or 3: the ranked gearboxes of trains.synthesize_gearbox, "
         "every stage of --scheme, ring fixed, sun in, carrier out; as 'search gearbox')",
     )  # fmt: skip
+    parser.add_argument(
+        "--objective", choices=("ring", "teeth", "efficiency", "volume", "mass"), default=None,
+        help="with --stages: what to minimise (default ring; with --torque volume)",
+    )  # fmt: skip
+    load_arguments(parser, "each stage (with --stages)")
+    dask_arguments(parser)
+    parser.add_argument(
+        "-o", "--table", type=output_file((".parquet", ".csv"), "-o"), default=None,
+        metavar="FILE",
+        help="with --stages: also write the ranked gearboxes (.parquet, the parquet extra's "
+        "pyarrow; .csv); checked before the search starts",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.stages > 1:
-        from trains.errors import TrainError
+    from trains.errors import TrainError
 
+    if args.stages > 1:
         options = {"--allow-shift": args.allow_shift, "--fixed": args.fixed,
                    "--input": args.input, "--output": args.output}  # fmt: skip
         given = [o for o, v in options.items() if v]
@@ -145,6 +167,16 @@ def run(args: argparse.Namespace) -> int:
                              "searches gearboxes of stages with the ring fixed, the sun in and "
                              "the carrier out, and no shifted sets")  # fmt: skip
         return _gearboxes(args)
+    one_stage = {"--objective": args.objective, "--torque": args.torque,
+                 "--scheduler": args.scheduler, "--connect-timeout": args.connect_timeout,
+                 "-o": args.table, "--face-width": args.face_width}  # fmt: skip
+    given = [o for o, v in one_stage.items() if v is not None]
+    if given:
+        raise TrainError(f"{', '.join(given)} apply to gearboxes: give --stages 2 or 3")
+    if args.module is not None and len(args.module) > 1:
+        raise TrainError("--module takes one module for one stage (a list with --stages and "
+                         "--torque)")  # fmt: skip
+    args.module = None if args.module is None else args.module[0]
     from trains.synthesis import synthesize
 
     with progress_bar("synthesize") as progress:
@@ -166,15 +198,29 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _gearboxes(args: argparse.Namespace) -> int:
-    """``--stages k`` (k > 1): k stages in series for the total ratio, ranked by ring size."""
+    """``--stages k`` (k > 1): k stages in series for the total ratio, ranked by ring size (or
+    with ``--torque`` each stage sized for its load, ranked by volume); on a Dask cluster with
+    ``--scheduler``; the table also written with ``-o``."""
     from trains.gearbox import synthesize_gearbox
 
-    with progress_bar("gearbox search") as progress:
+    if args.table is not None:  # before the search: Parquet needs pyarrow
+        from gears.search import check_table_output
+
+        check_table_output(args.table)
+    load = load_options(args)
+    module = args.module
+    if module is not None and len(module) == 1 and not load:
+        module = module[0]
+    with dask_session(args) as client, progress_bar("gearbox search", unit="task") as progress:
         found = synthesize_gearbox(
             args.ratio, args.stages, args.planets, args.scheme, tolerance=args.tolerance,
-            z_min=args.z_min, z_max=args.z_max,
-            module=args.module or 1.0, top=args.limit, mesh_checks=args.mesh_checks,
-            progress=progress, max_seconds=args.max_seconds,
+            z_min=args.z_min, z_max=args.z_max, module=module, objective=args.objective,
+            top=args.limit, mesh_checks=args.mesh_checks, client=client, progress=progress,
+            max_seconds=args.max_seconds, **load,
         )  # fmt: skip
     print(found.table())
+    if args.table is not None and len(found):
+        from gears.search import write_table
+
+        write_table(found.to_array(), args.table)
     return OK if len(found) else CHECK_FAILED
