@@ -4,8 +4,10 @@ Reference values and their sources:
 - KHK Technical Reference (Kohara Gear Industry, "Gear Technical Reference", §4.3 bevel gears):
   Table 4.10, standard straight bevel gears (tapered clearance), and Table 4.11, Gleason straight
   bevel gears (constant clearance), both z = 20/40, m = 3, alpha = 20 deg, Sigma = 90 deg,
-  b = 22 mm; printed digits (the same digits are reproduced in the unit tests of the Bolsover
-  bevel calculator, an independent implementation);
+  b = 22 mm; printed digits, checked (2026-11-23) against their transcription in the unit tests
+  of an independent implementation, bolsover/UtilitiesForAlibre
+  UnitTests/BevelGearCalculatorTests.cs (pitch and cone angles, addenda, dedenda, cone distance
+  67.08204, crown to apex 58.1955);
 - seed-004 digest §2.13 vector B1 (Sigma 90, z 20/40: delta and z_v to 6 decimals) and the Ozols
   digest §2.17 / example list (Sigma 90 and 60 deg, i = 3);
 - independent derivations: the sine rule of the pitch cones (z1 / sin delta1 = z2 / sin delta2,
