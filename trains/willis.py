@@ -413,6 +413,17 @@ class Structure:
 # --------------------------------------------------------------------------------- the train
 
 
+def _check_overflow(res: np.ndarray, names, values) -> None:
+    """Refuse float speeds whose solved speeds leave float64's range (|w| > 1.8e308)."""
+    if not np.all(np.isfinite(res)):
+        given = ", ".join(f"|{n}| up to {np.max(np.abs(np.asarray(v, dtype=float))):.3g}"
+                          for n, v in zip(names, values, strict=True))  # fmt: skip
+        raise TrainError(
+            f"speeds {given} overflow float64 through this train (a solved speed passes"
+            " 1.8e308); scale them down, or give integers or Fractions for exact results"
+        )
+
+
 class Train:
     """A gear train: named members and the linear relations between their speeds.
 
@@ -1181,10 +1192,12 @@ class Train:
                 raise TrainError(
                     f"speeds must be finite, got {dict(zip(mp.known, values, strict=True))}"
                 )
-            self._check_constraints(mp, vals[:, None], exact=False)
-            mat = mp.matrix()
-            res = mat @ vals if vals.size else np.zeros(len(mp.determined))
-            self._check_amplification(mat, vals[:, None], res[:, None])
+            with np.errstate(over="ignore", invalid="ignore"):  # overflow: refused below
+                self._check_constraints(mp, vals[:, None], exact=False)
+                mat = mp.matrix()
+                res = mat @ vals if vals.size else np.zeros(len(mp.determined))
+                _check_overflow(res, mp.known, values)
+                self._check_amplification(mat, vals[:, None], res[:, None])
             out = {n: float(x) for n, x in zip(mp.determined, res, strict=True)}
             return self._assemble(mp, dict(zip(mp.known, map(float, vals), strict=True)), out)
         arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
@@ -1192,10 +1205,12 @@ class Train:
         w = np.stack([a.reshape(-1) for a in arrays]) if arrays else np.zeros((0, 1))
         if not np.all(np.isfinite(w)):
             raise TrainError("speeds must be finite; the given arrays contain NaN or infinity")
-        self._check_constraints(mp, w, exact=False)
-        mat = mp.matrix()
-        res = mat @ w
-        self._check_amplification(mat, w, res)
+        with np.errstate(over="ignore", invalid="ignore"):  # overflow: refused below
+            self._check_constraints(mp, w, exact=False)
+            mat = mp.matrix()
+            res = mat @ w
+            _check_overflow(res, mp.known, values)
+            self._check_amplification(mat, w, res)
         out = {n: res[i].reshape(shape) for i, n in enumerate(mp.determined)}
         known = {n: a for n, a in zip(mp.known, arrays, strict=True)}
         return self._assemble(mp, known, out, zero=np.zeros(shape))

@@ -166,6 +166,24 @@ def test_one_in_ten_thousand_stays_exact():
 # ------------------------------------------------------------------------------- stability
 
 
+def test_float_speeds_that_overflow_are_refused():
+    # a planetary 20/30/80 turns the carrier at (w_sun + 4 w_ring) / 5: two speeds near the
+    # float64 limit (1.8e308) of opposite sign solve to a planet speed past it; that is a
+    # TrainError naming the speeds, not an overflow warning and inf (issue 17: no impossible
+    # number leaves the library). Exact integers are not bounded.
+    t = simple_planetary(20, 30, 80)
+    scalars = {"sun": 1.7e308, "ring": -1.7e308}
+    arrays = {"sun": np.array([1.0, 1.7e308]), "ring": np.array([0.0, -1.7e308])}
+    for speeds in (scalars, arrays):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with pytest.raises(TrainError, match=r"\|sun\| up to 1.7e\+308.*overflow float64"):
+                t.solve(speeds)
+    big = 17 * 10**307
+    assert t.solve({"sun": big, "ring": -big})["carrier"] == F(big - 4 * big, 5)
+    assert t.solve(sun=1e307, ring=0.0)["carrier"] == pytest.approx(2e306, rel=1e-15)
+
+
 def test_basic_ratio_near_one_exact_keeps_it():
     # standards.md §6 item 8: i0 -> 1; Fractions keep the exact ratio.
     for n in (10**3, 10**6, 10**12):
