@@ -249,6 +249,15 @@ def gear_solid(
         z = np.linspace(-b / 2.0, b / 2.0, n + 1)
         theta = rate * z
     levels = len(z)
+    hole = np.repeat(np.arange(len(rings)) > 0, [len(rr) for rr in rings])
+    if levels > 2 or rate:
+        # one-sided: the chord between two slices of a vertex at radius r runs at
+        # r cos(dtheta / 2), towards the axis: inside an outer ring's material, but in the space
+        # of a hole (a ring gear's teeth). The holes grow by 1 / cos(dtheta / 2), so every
+        # chord of theirs touches its helix at mid-step and lies in the material elsewhere
+        grow = 1.0 / math.cos(abs(float(theta[1] - theta[0])) / 2.0)
+        pts = np.where(hole[:, None], pts * grow, pts)
+        rings = np.split(pts, np.cumsum([len(rr) for rr in rings])[:-1])
     c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
     verts = np.empty((levels, n_pts, 3))
     verts[:, :, 0] = c * pts[:, 0] - s * pts[:, 1]
@@ -262,11 +271,12 @@ def gear_solid(
     a, bb, cc, d = i + k, j + k, j + k + n_pts, i + k + n_pts
     v = verts.reshape(-1, 3)
     if levels > 2 or rate:
-        # split each twisted quad along the diagonal that bulges outwards (the chords of the
-        # helices lie inside the true surface, so this halves the volume deficit)
+        # split each twisted quad along the diagonal that bulges outwards on an outer ring (the
+        # chords of the helices lie inside the true surface, so this halves the volume
+        # deficit) and inwards, into the material, on a hole (its chords touch the surface)
         normal = np.cross(v[bb] - v[a], v[d] - v[a])
         bulge = np.einsum("...i,...i->...", v[a] + v[cc] - v[bb] - v[d], normal)
-        flip = bulge < 0.0
+        flip = (bulge < 0.0) != hole
     else:
         flip = np.zeros(a.shape, dtype=bool)
     t1 = np.where(flip[..., None], np.stack([a, bb, d], -1), np.stack([a, bb, cc], -1))
@@ -376,9 +386,13 @@ def to_manifold(mesh, matrix=None):
     if matrix is not None:
         m = np.asarray(matrix, dtype=float)
         v = v @ m[:3, :3].T + m[:3, 3]
+    # double precision where the build has it: a float32 copy moves vertices by 6e-8 of their
+    # size, enough to make gears that touch at zero backlash overlap by rounding alone
+    build = getattr(manifold3d, "Mesh64", None)
+    dtype = np.float64 if build is not None else np.float32
     out = manifold3d.Manifold(
-        manifold3d.Mesh(
-            vert_properties=np.ascontiguousarray(v, dtype=np.float32),
+        (build or manifold3d.Mesh)(
+            vert_properties=np.ascontiguousarray(v, dtype=dtype),
             tri_verts=np.ascontiguousarray(mesh.faces, dtype=np.uint32),
         )
     )

@@ -74,6 +74,7 @@ __all__ = [
     "check_backlash",
     "check_size",
     "check_tolerance",
+    "one_sided",
     "outline",
     "outline_vertices",
     "profile_of",
@@ -433,7 +434,8 @@ class ToothProfile:
         return np.stack([rho * np.sin(eta), rho * np.cos(eta)], axis=-1)
 
     def half_space(self, tolerance: float = 0.001) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Sampled boundary from the space centre (root) to the tooth centre (tip).
+        """Sampled boundary from the space centre (root) to the tooth centre (tip), one-sided:
+        no chord adds material (:func:`one_sided`).
 
         Returns
         -------
@@ -443,7 +445,19 @@ class ToothProfile:
             Curve each point starts: 0 root arc, 1 fillet, 2 involute, 3 tip arc.
         """
         tol = check_tolerance(tolerance, module=self.gear.module)
-        rhos, etas, kinds = [], [], []
+        pieces = []  # (kind, curve(params) -> (rho, eta), params from the start to the end)
+
+        def arc(radius):
+            return lambda e: (np.full(np.shape(e), radius), np.asarray(e, float))
+
+        def fillet(taus):
+            rho, eta, _ = self.fillet(taus)
+            return rho, eta
+
+        def involute(t):
+            rho = self.rb * np.sqrt(1.0 + np.asarray(t) ** 2)
+            return rho, self.eta_involute(rho)
+
         # root arc, from the space centre to the end of the tip land's image
         eta_land = self._land_angle()
         fold = self.ring_fold
@@ -451,38 +465,52 @@ class ToothProfile:
             eta_land = float(self.fillet(fold[0])[1])
         if eta_land > 0:
             n = arc_segments(self.rf, eta_land, tol)
-            rhos.append(np.full(n, self.rf))
-            etas.append(np.linspace(0.0, eta_land, n + 1)[:-1])
-            kinds.append(np.zeros(n, int))
+            pieces.append((0, arc(self.rf), np.linspace(0.0, eta_land, n + 1)))
         if fold is not None:
-            taus = self._fillet_samples(fold[1], fold[0], tol)[::-1][:-1]
-            rho, eta, _ = self.fillet(taus)
-            rhos.append(rho)
-            etas.append(eta)
-            kinds.append(np.ones(len(taus), int))
+            pieces.append((1, fillet, self._fillet_samples(fold[1], fold[0], tol)[::-1]))
         elif self.has_round or self.undercut:
-            taus = self._fillet_samples(0.0, self.tau_form, tol)[:-1]
-            rho, eta, _ = self.fillet(taus)
-            rhos.append(rho)
-            etas.append(eta)
-            kinds.append(np.ones(len(taus), int))
+            pieces.append((1, fillet, self._fillet_samples(0.0, self.tau_form, tol)))
         r_top = self.tip_radius
-        rho = self._involute_samples(self.form_radius, r_top, tol)
+        t = self._involute_rolls(self.form_radius, r_top, tol)
+        pieces.append((2, involute, t))
         half = math.pi / self.z
-        if r_top < self.ra:  # pointed: the flank ends on the tooth centre line
-            rhos.append(rho)
-            etas.append(self.eta_involute(rho))
-            kinds.append(np.full(len(rho), 2))
-        else:
-            rhos.append(rho[:-1])
-            etas.append(self.eta_involute(rho[:-1]))
-            kinds.append(np.full(len(rho) - 1, 2))
+        if r_top >= self.ra:
             e0 = float(self.eta_involute(self.ra))
             n = arc_segments(self.ra, half - e0, tol)
-            rhos.append(np.full(n + 1, self.ra))
-            etas.append(np.linspace(e0, half, n + 1))
-            kinds.append(np.full(n + 1, 3))
-        return np.concatenate(rhos), np.concatenate(etas), np.concatenate(kinds)
+            pieces.append((3, arc(self.ra), np.linspace(e0, half, n + 1)))
+        rhos, etas, kinds, mids = [], [], [], []
+        for i, (kind, curve, params) in enumerate(pieces):
+            last = i == len(pieces) - 1
+            rho, eta = curve(params if last else params[:-1])
+            rhos.append(np.asarray(rho, float))
+            etas.append(np.asarray(eta, float))
+            kinds.append(np.full(len(rhos[-1]), kind))
+            # the true curve between the samples: the middle of an arc (its largest sag), three
+            # points of an involute chord, and many of the fillet's (its shape varies most)
+            between = _BETWEEN[kind]
+            inner = params[:-1, None] + between * (params[1:] - params[:-1])[:, None]
+            r_in, e_in = curve(inner.ravel())
+            mid = np.stack([np.reshape(r_in, inner.shape), np.reshape(e_in, inner.shape)], -1)
+            if not last:  # a sharp tool corner leaves a step to the next curve: a straight one
+                end = self._xy(*curve(params[-1:]))[0]
+                start = self._xy(*pieces[i + 1][1](pieces[i + 1][2][:1]))[0]
+                if np.hypot(*(end - start)) > 1e-3 * self.gear.module:
+                    a = self._xy(*curve(params[-2:-1]))[0]
+                    c = a + between[:, None] * (start - a)
+                    mid[-1] = np.stack([np.hypot(c[:, 0], c[:, 1]), np.arctan2(c[:, 0], c[:, 1])],
+                                       -1)  # fmt: skip
+            mids.append(mid)
+        width = max(m.shape[1] for m in mids)  # rows of one width: the last point repeated
+        mids = [np.concatenate([m, np.repeat(m[:, -1:], width - m.shape[1], 1)], 1) for m in mids]
+        rho, eta, mid = np.concatenate(rhos), np.concatenate(etas), np.concatenate(mids)
+        rho, eta = one_sided(rho, eta, mid[..., 0], mid[..., 1], self.tool.s < 0)
+        return rho, eta, np.concatenate(kinds)
+
+    def _involute_rolls(self, r0: float, r1: float, tol: float) -> np.ndarray:
+        """Roll parameters t = tan(alpha_y) of :meth:`_involute_samples`."""
+        t0 = math.sqrt(max(r0 * r0 - self.rb**2, 0.0)) / self.rb
+        t1 = math.sqrt(max(r1 * r1 - self.rb**2, 0.0)) / self.rb
+        return involute_rolls(self.rb, t0, t1, _SAFETY * tol)
 
     def tooth_points(self, tolerance: float = 0.001) -> np.ndarray:
         """One tooth, centred on the +x axis, from the space centre at -pi/z to the space centre
@@ -516,6 +544,65 @@ class ToothProfile:
         x = c * tooth[None, :, 0] - s * tooth[None, :, 1]
         y = s * tooth[None, :, 0] + c * tooth[None, :, 1]
         return np.stack([x.ravel(), y.ravel()], axis=-1)
+
+
+#: A vertex next to a chord that would add material moves into the material by this many times
+#: the largest sag of the true curve beyond the chord, found at :data:`_BETWEEN` points of it,
+#: by curve kind (the margin covers the curve between them). Chords sag at most half the
+#: tolerance, so a moved vertex stays within 0.6 tolerances of the curve.
+_ONE_SIDED = 1.2
+_BETWEEN = {0: np.array([0.5]), 1: np.linspace(0.0, 1.0, 26)[1:-1], 2: np.array([0.25, 0.5, 0.75]),
+            3: np.array([0.5])}  # fmt: skip
+
+
+def one_sided(rho, eta, rho_mid, eta_mid, material_outside: bool = False):
+    """A sampled boundary (polar points ``rho, eta``; ``eta`` clockwise from +y, as
+    :class:`ToothProfile` measures it) made one-sided: no chord adds material.
+
+    ``rho_mid, eta_mid`` are points of the true curve between the ends of each chord (an array
+    of one row per chord, one fewer than the points; a column per point). Where the curve
+    bulges into the material beyond a chord (a concave piece: an
+    external gear's fillet, every piece of a ring's toothed hole), the chord would put material
+    where the true gear has none, and two gears in mesh at zero backlash would overlap by the
+    chords: the vertices at its ends move into the material by :data:`_ONE_SIDED` times the
+    sag, so the chord lies on or inside the true material. Convex pieces keep their vertices
+    on the curve (their chords lie inside already). The first and last points (on the space
+    and tooth centre lines) move radially, so the mirrored tooth stays symmetric.
+    ``material_outside``: the material lies outside the boundary (a ring), not inside.
+    """
+    xy = np.stack([rho * np.sin(eta), rho * np.cos(eta)], axis=-1)
+    rho_mid, eta_mid = np.asarray(rho_mid, float), np.asarray(eta_mid, float)
+    if rho_mid.ndim == 1:
+        rho_mid, eta_mid = rho_mid[:, None], eta_mid[:, None]
+    mid = np.stack([rho_mid * np.sin(eta_mid), rho_mid * np.cos(eta_mid)], axis=-1)
+    if len(xy) < 2:
+        return rho, eta
+    d = np.diff(xy, axis=0)
+    length = np.hypot(d[:, 0], d[:, 1])
+    left = np.stack([-d[:, 1], d[:, 0]], axis=-1) / np.where(length > 0, length, 1.0)[:, None]
+    # the region between the boundary and the axis: its orientation says which side of the
+    # boundary (walked root -> tip) it lies on; the material is that region, or (ring) not
+    closed = np.vstack([[0.0, 0.0], xy])
+    area = np.sum(closed[:, 0] * np.roll(closed[:, 1], -1) - np.roll(closed[:, 0], -1)
+                  * closed[:, 1])  # fmt: skip
+    into = left * (1.0 if (area > 0) != material_outside else -1.0)  # normals into the material
+    # how far the curve reaches beyond each chord into the material: > 0, the chord adds some
+    sag = np.max(np.einsum("ikj,ij->ik", mid - xy[:-1, None, :], into), axis=1)
+    sag = np.where(length > 0, np.maximum(sag, 0.0), 0.0)  # > 0: the chord adds material
+    if not np.any(sag > 0):
+        return rho, eta
+    move = np.zeros(len(xy))
+    move[:-1] = np.maximum(move[:-1], sag)
+    move[1:] = np.maximum(move[1:], sag)
+    way = np.zeros_like(xy)
+    way[:-1] += into
+    way[1:] += into
+    radial = xy / np.maximum(np.hypot(xy[:, 0], xy[:, 1]), 1e-300)[:, None]
+    for k in (0, -1):  # on the symmetry lines: radially, towards the material
+        way[k] = radial[k] * np.sign(np.dot(radial[k], way[k]) or 1.0)
+    way /= np.maximum(np.hypot(way[:, 0], way[:, 1]), 1e-300)[:, None]
+    xy = xy + (_ONE_SIDED * move)[:, None] * way
+    return np.hypot(xy[:, 0], xy[:, 1]), np.arctan2(xy[:, 0], xy[:, 1])
 
 
 def _point_segment_distance(q, a, b):
@@ -556,11 +643,15 @@ def circle_segments(radius: float, tolerance: float) -> int:
 
 
 def circle_points(radius: float, tolerance: float, ccw: bool = True) -> np.ndarray:
-    """A full circle sampled so that its sagitta stays below ``tolerance``."""
+    """A full circle sampled so that its sagitta stays below ``tolerance``: inscribed when
+    counter-clockwise (an outer boundary: the chords lie inside the material), circumscribed
+    when clockwise (a hole, such as a bore: its vertices at r / cos(pi / n), so its edges touch
+    the circle and lie in the material; one-sided, as :func:`one_sided`)."""
     n = circle_segments(radius, tolerance)
     a = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
     if not ccw:
         a = -a
+        radius = radius / math.cos(math.pi / n)
     return radius * np.stack([np.cos(a), np.sin(a)], axis=-1)
 
 

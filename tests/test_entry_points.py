@@ -331,3 +331,67 @@ def test_an_unreachable_ratio_says_what_one_stage_reaches():
     assert "reach" in found.reason and "at most about 1:" in found.reason
     most = float(found.reason.split("at most about 1:")[1].split()[0].rstrip(";,:"))
     assert 9 < most <= 1 + 200 / 17
+
+
+# --- 8. one-sided tessellation: zero-backlash scenes never interpenetrate --------------------------
+@pytest.mark.parametrize(
+    "gear",
+    [
+        Gear(20, 1),  # convex flanks, concave fillets
+        Gear(8, 1),  # undercut
+        Gear(12, 3, profile_shift=0.6, helix_angle=20),
+        Gear(77, 1, internal=True),  # every piece of a ring's toothed hole is concave
+        Gear(60, 2, internal=True, rack=BasicRack.iso53("C"), profile_shift=-0.3),
+    ],
+)
+@pytest.mark.parametrize("tol", [0.1, 0.01])
+def test_outlines_never_add_material(gear, tol):
+    # independent reference: the same exact curves sampled 200 times finer; what the coarse
+    # outline has beyond it is at most the fine outline's own (one-sided) deviation, a strip of
+    # tol / 200 along the boundary, never a chord's sag (up to tol / 2)
+    bore = 0.3 * gear.root_diameter if not gear.internal else None
+    coarse, fine = gear.outline(tol, bore=bore), gear.outline(tol / 200, bore=bore)
+    extra = coarse.difference(fine).area
+    assert extra <= 0.625 * tol / 200 * fine.length
+    # and the achieved deviation stays within the tolerance
+    assert shapely.hausdorff_distance(coarse.exterior, fine.exterior) <= tol
+    inner = [shapely.hausdorff_distance(a, b) for a, b in zip(coarse.interiors, fine.interiors,
+                                                              strict=True)]  # fmt: skip
+    assert max(inner, default=0.0) <= tol
+
+
+@pytest.mark.parametrize("helix", [0.0, 15.0])
+@pytest.mark.parametrize("tol", [0.2, 0.05, 0.01, 0.002])
+def test_a_zero_backlash_stage_never_interpenetrates(helix, tol):
+    # issue: at tolerance 0.01 the 19/29/77 stage's planets overlapped the ring by 6.6e-3 mm^3
+    # (the ring's chords cut into the tooth spaces). Exact booleans (manifold3d, float64): no
+    # volume in common, yet every mesh engaged (the gap within the tolerance), and a 0.5-degree
+    # turn of the sun or ring makes them collide (so the test can fail)
+    from gears.mesh import to_manifold, transform
+
+    p = Planetary(19, 29, 77, n_planets=3, module=1, helix_angle=helix)
+    assert p.check().ok
+    b = 4.0
+    sc = bounded(lambda: p.scene(face_width=b, tolerance=tol))
+
+    def node(name, turn=0.0):
+        matrix, geom = sc.graph[name]
+        return to_manifold(sc.geometry[geom], transform(turn) @ matrix)
+
+    sun, ring = node("sun"), node("ring")
+    for k in (1, 2, 3):
+        planet = node(f"planet{k}")
+        for mate in (sun, ring):
+            assert (mate ^ planet).volume() <= 1e-9
+            assert mate.min_gap(planet, 1.0) <= tol
+    planet = node("planet1")
+    assert (node("sun", 0.5) ^ planet).volume() > 1e-3
+    assert (node("ring", 0.5) ^ planet).volume() > 1e-3
+
+
+def test_zero_backlash_outlines_of_a_stage_never_overlap():
+    for tol in (0.3, 0.05, 0.01, 0.001):
+        o = Planetary(19, 29, 77, n_planets=3, module=1).outlines(tolerance=tol)
+        for k in (1, 2, 3):
+            assert o["ring"].intersection(o[f"planet{k}"]).area == 0.0
+            assert o["sun"].intersection(o[f"planet{k}"]).area == 0.0

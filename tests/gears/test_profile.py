@@ -56,10 +56,15 @@ def test_undercut_form_diameter_hook_in_gear():
 
 
 def test_root_minimum_is_exact():
-    # source: standards.md §3.1: min |E| = r - (h_fP - x) m = 8.75 for m = 1, z = 20
-    p = outline(Gear(20, 1), 1e-4)
+    # source: standards.md §3.1: min |E| = r - (h_fP - x) m = 8.75 for m = 1, z = 20. The
+    # space centre lies on the root circle exactly; the one-sided sampling moves the vertex where
+    # the (concave) fillet leaves the root circle inwards by at most 0.625 tolerances
+    tol = 1e-4
+    rho, eta, _ = ToothProfile(Gear(20, 1)).half_space(tol)
+    assert eta[0] == 0.0 and rho[0] == pytest.approx(8.75, abs=1e-12)
+    p = outline(Gear(20, 1), tol)
     r = np.hypot(*np.asarray(p.exterior.coords).T)
-    assert r.min() == pytest.approx(8.75, abs=1e-12)
+    assert 8.75 - 0.625 * tol <= r.min() <= 8.75 + 1e-12
 
 
 def _deviations(g, tol):
@@ -88,6 +93,13 @@ def _deviations(g, tol):
     return dev, v_dev, len(rho)
 
 
+# the one-sided sampling (gears.profile.one_sided) moves a vertex next to a concave chord into
+# the material by 1.25 times that chord's sag, and chords sag about half the tolerance at most;
+# v_dev measures the involute vertices by angle x radius, which overstates the normal distance
+# by 1/cos(alpha_y): within 0.75 tolerances (stated), inside the tolerance itself
+VERTEX = 0.75
+
+
 @pytest.mark.parametrize("name", ["z20", "z17_x-0.3", "z12_x0.6_m3", "helical_z20_b30"])
 def test_requested_tolerance_is_achieved(name):
     # source: the definition of the tolerance (chordal deviation), measured against the exact
@@ -98,7 +110,7 @@ def test_requested_tolerance_is_achieved(name):
         dev, v_dev, n = _deviations(g, tol)
         assert dev.max() < tol
         assert dev.max() > 0.2 * tol or tol == 1e-1  # not wastefully fine
-        assert v_dev.max() < 1e-9
+        assert v_dev.max() <= VERTEX * tol
         counts.append(n)
     ratios = np.array(counts[2:]) / np.array(counts[1:-1])
     assert np.all((ratios > 0.6 * math.sqrt(10)) & (ratios < 1.6 * math.sqrt(10))), counts
@@ -109,7 +121,7 @@ def test_ring_tolerance_down_to_the_fold():
     # involute (gears/profile.py ToothProfile._tau_tangent), so 1e-3 mm is the floor at m = 2
     for tol in [1e-1, 1e-2, 1e-3]:
         dev, v_dev, _ = _deviations(GEARS["ring_z80"], tol)
-        assert dev.max() < tol and v_dev.max() < 1e-9
+        assert dev.max() < tol and v_dev.max() <= VERTEX * tol
 
 
 def _mesh_check(pair, method, tol=1e-4):
