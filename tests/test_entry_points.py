@@ -333,7 +333,7 @@ def test_an_unreachable_ratio_says_what_one_stage_reaches():
     assert 9 < most <= 1 + 200 / 17
 
 
-# --- 8. one-sided tessellation: zero-backlash scenes never interpenetrate --------------------------
+# --- 8. one-sided tessellation: zero-backlash scenes never interpenetrate ------------------------
 @pytest.mark.parametrize(
     "gear",
     [
