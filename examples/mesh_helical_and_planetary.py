@@ -1,4 +1,7 @@
-"""A printable helical pinion and a phased 18/45/108 planetary stage as 3D files.
+"""3D files: a helical pinion and a planetary stage
+================================================
+
+A printable helical pinion and a phased 18/45/108 planetary stage as 3D files.
 
 1. A right-hand helical pinion z = 20, m = 2, beta = 20 deg, b = 20 mm with a 10 mm bore, to a
    0.01 mm tolerance, as a binary STL for a slicer. The section turns by 2 b tan(beta) / d =

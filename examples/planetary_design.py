@@ -1,4 +1,7 @@
-"""Design a planetary stage from a target ratio to a validated, coaxial, assemblable design.
+"""Planetary stage design from a target ratio
+==========================================
+
+Design a planetary stage from a target ratio to a validated, coaxial, assemblable design.
 
 Task: a sun-input, carrier-output reducer with the ring fixed, ratio 6.2 within 1 %, three
 planets, module 2 mm. Steps: search the tooth numbers (trains.synthesize), take the best set,

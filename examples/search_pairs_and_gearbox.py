@@ -1,4 +1,7 @@
-"""Search a gear pair for a housing and a two-stage planetary gearbox, locally and on a Dask
+"""Design search: a gear pair and a two-stage gearbox
+==================================================
+
+Search a gear pair for a housing and a two-stage planetary gearbox, locally and on a Dask
 cluster (issue 13).
 
 Task 1: a pair for a = 100 mm, ratio 3.2 +- 1 %, modules 2 / 2.5 / 3, no undercut, a tip land of

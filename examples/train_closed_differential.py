@@ -1,16 +1,20 @@
-"""Closed differential (Ozols example 7-7, the electric hoist), read from its TOML file.
+"""Closed differential
+===================
+
+Closed differential (Ozols example 7-7, the electric hoist), read from its TOML file.
 
 Design task: the drum speed (book: i_14 = 44, n4 = 20 rpm at n1 = 880 rpm; exact 2767/63),
 every speed and the efficiency with 98 % meshes. Then the K3 train of the lectures, where the
 closing gear pair carries twice the input power (power circulation).
 """
 
+import sys
 from fractions import Fraction
 from pathlib import Path
 
 from trains import power_flow, read_train, simple_planetary
 
-t = read_train(Path(__file__).with_name("train_closed_differential.toml"))
+t = read_train(Path(sys.argv[0]).with_name("train_closed_differential.toml"))
 i = t.ratio("1", "4")
 m = t.solve({"1": 880})
 print(f"i_14 = {i} = {float(i):.4f}; drum n4 = {float(m['4']):.3f} rpm")

@@ -1,4 +1,7 @@
-"""Double-planet (sun - planet - planet - ring) train: a "plus" train.
+"""Double-planet train
+===================
+
+Double-planet (sun - planet - planet - ring) train: a "plus" train.
 
 Design task: with the ring fixed, the carrier turns against the sun; with the sun fixed it
 follows the ring slowly. Efficiency of a plus train stays high only far from i0 = 1.

@@ -1,4 +1,7 @@
-"""Ferguson's paradox (Ozols example 7-3): three gears on one idler, one turning each way.
+"""Ferguson's paradox
+==================
+
+Ferguson's paradox (Ozols example 7-3): three gears on one idler, one turning each way.
 
 Design task: show that with a fixed sun of 100 teeth, the satellite of 100 teeth translates, the
 one of 101 teeth turns with the carrier and the one of 99 teeth against it.

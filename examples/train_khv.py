@@ -1,4 +1,7 @@
-"""K-H-V train and strain-wave drive: one planet inside a ring, a small tooth difference.
+"""K-H-V train and strain-wave drive
+=================================
+
+K-H-V train and strain-wave drive: one planet inside a ring, a small tooth difference.
 
 Design task: reduction of an internal pair 49/50 with a W-coupling output (Ozols Fig 7-9b:
 -49), and of a two-wave strain-wave drive 200/202 (Joldasbekov E8: -z1/(z2 - z1) = -100).

@@ -1,4 +1,7 @@
-"""Reverted (coaxial) two-stage reducer on real gears: input and output shafts on one axis.
+"""Reverted two-stage reducer
+==========================
+
+Reverted (coaxial) two-stage reducer on real gears: input and output shafts on one axis.
 
 Design task: a reducer of about 4.5 with stages 17/40 and 20/38 at module 2 whose output shaft
 lines up with its input. The zero-shift centre distances are 57 and 58 mm, so the stage with the

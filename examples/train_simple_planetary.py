@@ -1,4 +1,7 @@
-"""Simple (James) planetary reducer: sun 20, planet 30, ring 80, three planets.
+"""Simple planetary reducer
+========================
+
+Simple (James) planetary reducer: sun 20, planet 30, ring 80, three planets.
 
 Design task: the speeds of a motor-driven reducer (sun at 1500 rpm, ring held), the planet
 bearing speed, the torques and the efficiency with 98 % meshes (Kreines' rule).

@@ -1,4 +1,7 @@
-"""Stepped-planet 2K-H trains: external+internal, two external (David), two internal meshes.
+"""Stepped-planet trains
+=====================
+
+Stepped-planet 2K-H trains: external+internal, two external (David), two internal meshes.
 
 Design task: compare the three schemes of lectures §4.2 for the same tooth counts, then the
 David mechanism of Ozols example 7-4 (1/10000, exact) and its efficiency both ways (ex. 14-3).

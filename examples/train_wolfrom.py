@@ -1,4 +1,7 @@
-"""Wolfrom (3K) train: high ratio from a stepped planet between two rings (Ozols Fig 7-9a).
+"""Wolfrom train
+=============
+
+Wolfrom (3K) train: high ratio from a stepped planet between two rings (Ozols Fig 7-9a).
 
 Design task: ratio and efficiency of sun 20 / planet 30-29 / rings 80 (fixed) and 77 (output);
 the carrier idles. Power circulates inside, so the efficiency is far below one mesh's.

@@ -383,7 +383,7 @@ def shaper_positions(prof, tolerance: float) -> np.ndarray:
     rho_w dphi^2 / 8); on the fillet d^2 / (8 rho_a0) with d the generated fillet point's travel
     (it bounds the round's scallop d_C^2 (1/rho_a0 + 1/R_c) / 8, R_c the curvature radius of the
     round centre's trochoid; near a cusp of the envelope, where the fillet point stops, the
-    centre's own travel |C - I| omega_rel dphi is used); on the root the tip land must overlap
+    centre's own travel ``|C - I| omega_rel dphi`` is used); on the root the tip land must overlap
     (cutter turn <= its land) and the tip circle's scallop a0^2 dphi^2 (1/r_a0 + s/r_f) / 8
     stays small. The steps are chosen greedily so no requirement inside a step is broken. Each
     is held at ``0.35 tolerance``. Past the last contact the cutter keeps turning until its

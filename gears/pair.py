@@ -465,7 +465,7 @@ class GearPair:
 
     @property
     def ratio(self) -> float:
-        """Gear ratio u = z2 / z1 (speed ratio |w1 / w2|); ``inf`` for a rack."""
+        """Gear ratio u = z2 / z1 (speed ratio ``|w1 / w2|``); ``inf`` for a rack."""
         return math.inf if self.is_rack else self.g2.teeth / self.g1.teeth
 
     # --- contact ---------------------------------------------------------------------------------
@@ -547,7 +547,7 @@ class GearPair:
 
     @property
     def max_specific_sliding(self) -> tuple[float, float]:
-        """Largest |specific sliding| of each flank: gear 1 at the contact start (its root),
+        """Largest ``|specific sliding|`` of each flank: gear 1 at the contact start (its root),
         gear 2 at the contact end (its root)."""
         p = self.path_of_contact
         _, a1, _ = self.specific_sliding([p.start])

@@ -16,8 +16,8 @@ normal passes through the pitch point I = (-r phi, -x m_n) (the meshing equation
 (standards.md §3.1, rack kinematics). Applied to the straight flank it gives the involute; to the
 flat tip land, the root circle; to a circular tip round it gives the offset of the primary trochoid
 traced by the round's centre C(phi): the contact point lies on the line IC, so
-E = C + rho (C - I)/|C - I| with C' perpendicular to C - I, i.e. the offset curve
-E = C +- rho J C'/|C'| of standards.md §3.1. No sampling or iteration is involved.
+``E = C + rho (C - I)/|C - I|`` with C' perpendicular to C - I, i.e. the offset curve
+``E = C +- rho J C'/|C'|`` of standards.md §3.1. No sampling or iteration is involved.
 
 **Undercut.** When the tool's straight flank reaches below the line-of-action limit point N1
 (x < x_min), the fillet curve cuts the involute; the generated boundary is the outermost of the

@@ -1,0 +1,88 @@
+"""Sphinx configuration of the geartrain site: the Markdown guides (myst-parser), the API
+reference (autodoc, autosummary, numpydoc) and the gallery of ``examples/`` (sphinx-gallery).
+
+Build: ``python -m sphinx -W -b html docs docs/_build/html`` (the ``docs`` extra), then open
+``docs/_build/html/index.html``. ``tests/test_site.py`` runs the same build.
+"""
+
+import os
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))  # the checkout's gears and trains, installed or not
+
+project = "geartrain"
+author = "geartrain developers"
+copyright = "geartrain developers"
+
+extensions = [
+    "myst_parser",
+    "numpydoc",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+    "sphinx_gallery.gen_gallery",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+exclude_patterns = ["_build", "auto_examples/*.ipynb", "auto_examples/*.py"]
+templates_path = ["_templates"]
+nitpicky = False
+
+# Markdown guides: "#section" links resolve to headings up to level 3
+myst_heading_anchors = 3
+myst_enable_extensions = ["dollarmath"]
+
+# API reference
+autosummary_generate = True
+autodoc_default_options = {"members": True, "member-order": "bysource"}
+autodoc_typehints = "none"  # the numpydoc Parameters sections say the types
+numpydoc_show_class_members = False  # autodoc's :members: documents them
+numpydoc_class_members_toctree = False
+numpydoc_validation_checks: set[str] = set()
+
+# The gallery: every example runs once; an unchanged example is not run again (md5 cache)
+sphinx_gallery_conf = {
+    "examples_dirs": str(HERE.parent / "examples"),
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r".*",  # execute every example, not only plot_*.py
+    "ignore_pattern": r"__init__\.py",
+    "download_all_examples": False,
+    "image_scrapers": ("matplotlib",),
+    "capture_repr": ("_repr_html_", "__repr__"),
+    "abort_on_example_error": True,
+    "show_memory": False,
+    "remove_config_comments": True,
+}
+
+html_theme = "pydata_sphinx_theme"
+html_title = "geartrain"
+html_theme_options = {"navigation_with_keys": False, "show_toc_level": 2}
+html_static_path: list[str] = []
+html_show_sourcelink = False
+os.environ.setdefault("GEARTRAIN_THREADS", "1")
+
+
+def _facade() -> dict[str, list[str]]:
+    """For each module, the names of its ``__all__`` that its package exports (documented on
+    the package's page, so the module page leaves them out)."""
+    import importlib
+
+    out: dict[str, list[str]] = {}
+    for package in ("gears", "trains"):
+        pkg = importlib.import_module(package)
+        for name in pkg.__all__:
+            module = getattr(getattr(pkg, name), "__module__", None)
+            if module and module.startswith(package + "."):
+                if name in getattr(importlib.import_module(module), "__all__", ()):
+                    out.setdefault(module, []).append(name)
+    return out
+
+
+autosummary_context = {"facade": _facade()}
