@@ -16,6 +16,7 @@ import zipfile
 import numpy as np
 import shapely
 
+from gears.display import svg
 from gears.errors import GearError
 from gears.files import check_output, writing
 from gears.plot import outlines_figure
@@ -47,7 +48,8 @@ def points(outline) -> list[np.ndarray]:
 def to_svg(path, *outlines, margin: float = 1.0, stroke: float = 0.05) -> pathlib.Path:
     """Write ``outlines`` as a plain SVG whose user unit is 1 mm (y up, as in the drawings).
 
-    Each polygon is one ``<path>`` with ``fill-rule="evenodd"`` (holes stay open).
+    Each polygon is one ``<path>`` with ``fill-rule="evenodd"`` (holes stay open); the text
+    is :func:`gears.display.svg`'s, which the notebook displays draw too.
 
     Examples
     --------
@@ -59,25 +61,8 @@ def to_svg(path, *outlines, margin: float = 1.0, stroke: float = 0.05) -> pathli
     """
     path = check_output(path, (".svg",))
     polys = _polygons(outlines)
-    x0, y0, x1, y1 = shapely.total_bounds(polys)
-    x0, y0, x1, y1 = x0 - margin, y0 - margin, x1 + margin, y1 + margin
-    w, h = x1 - x0, y1 - y0
-    body = []
-    for p in polys:
-        d = []
-        for ring in points(p):
-            xs, ys = ring[:, 0], y0 + y1 - ring[:, 1]  # flip y: SVG's y runs down
-            coords = " L".join(f"{x:.6f},{y:.6f}" for x, y in zip(xs, ys, strict=True))
-            d.append(f"M{coords} Z")
-        body.append(
-            f'<path d="{" ".join(d)}" fill="none" stroke="black" '
-            f'stroke-width="{stroke}" fill-rule="evenodd"/>'
-        )
-    text = (
-        '<?xml version="1.0" encoding="UTF-8"?>\n'
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.6f}mm" height="{h:.6f}mm" '
-        f'viewBox="{x0:.6f} {y0:.6f} {w:.6f} {h:.6f}">\n' + "\n".join(body) + "\n</svg>\n"
-    )
+    style = {"fill": "none", "stroke": "black", "stroke-width": stroke}
+    text = svg([(p, style) for p in polys], margin=margin, declaration=True)
     with writing(path):
         path.write_text(text)
     return path

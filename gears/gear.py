@@ -24,6 +24,7 @@ from gears.arguments import (
 from gears.budget import check_budget
 from gears.checks import gear_margins, undercut_form_diameter
 from gears.cutter import ShaperCutter, ShaperTool
+from gears.drawing import gear_svg
 from gears.errors import GearError
 from gears.geometry import (
     base_diameter,
@@ -44,7 +45,7 @@ from gears.geometry import (
     transverse_pressure_angle,
 )
 from gears.involute import inv, inv_inverse, pressure_angle_at
-from gears.mesh import gear_solid, helix_twist, solid_levels
+from gears.mesh import COLOURS, gear_solid, helix_twist, solid_levels
 from gears.outline import METHODS, gear_outline, outline_vertices
 from gears.profile import ShaperProfile, default_rim
 from gears.rack import BasicRack
@@ -594,3 +595,8 @@ class Gear:
     def with_(self, **changes) -> Gear:
         """A copy with some fields changed (validated again)."""
         return replace(self, **changes)
+
+    def _repr_svg_(self) -> str:
+        """The gear's outline as an SVG picture, what a notebook shows
+        (:func:`gears.drawing.gear_svg`; a text instead when it cannot be drawn)."""
+        return gear_svg(self, COLOURS["gear1"])

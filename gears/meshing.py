@@ -37,6 +37,7 @@ __all__ = [
     "contact_ratio",
     "default_threads",
     "internal_interference",
+    "line_of_action_points",
     "line_positions",
     "mesh_efficiency",
     "pair_geometry",
@@ -246,7 +247,26 @@ def line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
     return u_a, u_e, u_n2
 
 
+def line_of_action_points(rb1, working_pressure_angle, u, internal=False):
+    """``(x, y)`` of the points at ``u`` mm from N1 on the line of action, in the frame of
+    :func:`gears.outline.pair_placement` (gear 1 at the origin, gear 2 on +x, a ring's centre on
+    -x): N1 = r_b1 (cos alpha_wt, sigma sin alpha_wt), the line running along
+    (sin alpha_wt, -sigma cos alpha_wt) through the pitch point C = (r_w1, 0) at u_C = r_b1 tan
+    alpha_wt (sigma = +1 external, -1 internal). ``working_pressure_angle`` in degrees.
+
+    >>> x, y = line_of_action_points(10.0, 20.0, 10.0 * np.tan(np.radians(20.0)))
+    >>> round(float(x), 6), abs(round(float(y), 6))   # the pitch point r_w1 = r_b1 / cos alpha_wt
+    (10.641778, 0.0)
+    """
+    aw = np.radians(working_pressure_angle)
+    s = _sigma(internal)
+    u = np.asarray(u, float)
+    return rb1 * np.cos(aw) + u * np.sin(aw), s * (rb1 * np.sin(aw) - u * np.cos(aw))
+
+
 def contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
+    """Transverse contact ratio ``(u_E - u_A) / p_bt`` (see the module docstring), 0 where the
+    tips do not reach each other's flanks or a tip lies inside its base circle (arrays)."""
     u_a, u_e, _ = line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma)
     valid = (ra1 >= rb1) & (ra2 >= rb2)
     # tips that do not reach each other's flanks give no contact: 0, never a negative ratio

@@ -36,6 +36,7 @@ from gears.checks import (
     tip_diameter_limits,
     tip_interference,
 )
+from gears.drawing import pair_svg
 from gears.errors import GearError
 from gears.files import check_output
 from gears.gear import Gear
@@ -916,3 +917,8 @@ class GearPair:
             Finding("radial_interference", float(m.radial), msg + " (margin in rad)", unit="rad")
         )
         return out
+
+    def _repr_svg_(self) -> str:
+        """Both gears in mesh with the line of action as an SVG picture, what a notebook shows
+        (:func:`gears.drawing.pair_svg`; a text instead when it cannot be drawn)."""
+        return pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))

@@ -12,6 +12,7 @@ from shapely.plotting import patch_from_polygon
 
 from gears.errors import GearError
 from gears.generate import rack_positions, rack_tool_polygon, shaper_positions, shaper_tool_polygon
+from gears.meshing import line_of_action_points
 from gears.profile import ShaperProfile, ToothProfile
 
 __all__ = ["generation_figure", "outlines_figure", "pair_figure", "tooth_figure"]
@@ -99,18 +100,15 @@ def pair_figure(pair, angle: float = 0.0, tolerance: float = 1e-3, ax=None):
     p1, p2 = pair.outlines(angle, tolerance)
     fig = outlines_figure(p1, p2, ax=ax)
     ax = fig.axes[0]
-    g1 = pair.mounted[0]
-    rb1 = g1.base_diameter / 2
-    aw = math.radians(pair.working_pressure_angle)
-    s = -1.0 if pair.internal else 1.0
-    # N1: tangent point on gear 1's base circle; the line of action through the pitch point
-    n1 = np.array([rb1 * math.cos(aw), s * rb1 * math.sin(aw)])
-    direction = np.array([math.sin(aw), -s * math.cos(aw)])
+    rb1 = pair.mounted[0].base_diameter / 2
     path = pair.path_of_contact
-    a, e = n1 + path.start * direction, n1 + path.end * direction
-    far = n1 + (path.end + 0.3 * path.length) * direction
-    ax.plot(*zip(n1, far, strict=True), color="k", lw=0.6, label="line of action")
-    ax.plot(*zip(a, e, strict=True), color="C3", lw=2.5, label="path of contact")
+
+    def on_line(u):  # from N1, gear 1's base-circle tangent point, through the pitch point
+        return line_of_action_points(rb1, pair.working_pressure_angle, u, pair.internal)
+
+    ax.plot(*on_line([0.0, path.end + 0.3 * path.length]), color="k", lw=0.6,
+            label="line of action")  # fmt: skip
+    ax.plot(*on_line([path.start, path.end]), color="C3", lw=2.5, label="path of contact")
     _circle(ax, pair.working_diameters[0] / 2, color="0.5", lw=0.5, ls="--")
     ax.legend(loc="upper right", fontsize=8)
     ax.set_title(f"contact ratio {pair.contact_ratio:.3f}")

@@ -20,6 +20,8 @@ import math
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
+from gears.display import html_table
+
 
 @dataclass(frozen=True)
 class Finding:
@@ -112,6 +114,17 @@ class Report(Mapping[str, Finding]):
 
     def __repr__(self) -> str:
         return f"Report(ok={self.ok}, findings={list(self._findings)})"
+
+    def _repr_html_(self) -> str:
+        """The findings as an HTML table, failing ones marked: what a notebook shows."""
+        head = "all conditions hold" if self.ok else f"FAILED: {', '.join(self.failed())}"
+        rows = [
+            ("ok" if f.ok else "FAIL", f.name, f"{f.margin:+.4g} {f.unit}".rstrip(), f.message)
+            for f in self._findings.values()
+        ]
+        failing = [not f.ok for f in self._findings.values()]
+        return html_table(["", "finding", "margin", "message"], rows, failing=failing,
+                          caption=head)  # fmt: skip
 
 
 def format_duration(seconds: float) -> str:

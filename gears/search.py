@@ -36,6 +36,7 @@ from gears.checks import (
     pair_margins,
     proportional_split,
 )
+from gears.display import html_table
 from gears.errors import GearError
 from gears.files import check_output, writing
 from gears.geometry import check_real, min_profile_shift, transverse_pressure_angle
@@ -74,6 +75,8 @@ _BLOCK = 8192
 _LOCAL_BLOCK = 1 << 15
 
 _KEYS = ("module", "helix_angle", "z1", "z2", "x1", "x2")
+#: rows a notebook shows of a search result (its text form has them all)
+_HTML_ROWS = 50
 _GEOMETRY = (
     "ratio", "center_distance", "working_pressure_angle", "contact_ratio", "tip_diameter_1",
     "tip_diameter_2", "sliding_1", "sliding_2", "sliding", "efficiency",
@@ -520,32 +523,47 @@ class SearchResult:
     def format(self, columns: Sequence[str] | None = None) -> str:
         """A ranked text table (default: the parameters, a, eps, sliding, efficiency; with a
         face width b and the volume, with a load the smaller safeties S_H and S_F)."""
+        head, body = self._cells(columns)
+        widths = [max(len(x) for x in col) for col in zip(head, *body, strict=False)]
+        lines = ["  ".join(h.rjust(w) for h, w in zip(row, widths, strict=True))
+                 for row in [head, *body]]  # fmt: skip
+        return "\n".join(lines)
+
+    def _cells(self, columns: Sequence[str] | None = None, rows: int | None = None):
+        """Header and body cells (text) of the first ``rows`` ranked rows."""
         if not columns:
             columns = (*_KEYS, "center_distance", "contact_ratio", "sliding", "efficiency")
             if "face_width" in self.columns:
                 columns = (*_KEYS, "face_width", "center_distance", "contact_ratio", "volume")
             if "S_H" in self.columns:
                 columns = (*columns, "S_H", "S_F")
-        head = ["#", *columns]
         body = []
-        for i, r in enumerate(self.table, 1):
+        for i, r in enumerate(self.table[:rows], 1):
             cells = [str(i)]
             for c in columns:
                 v = r[c]
                 cells.append(str(int(v)) if c in ("z1", "z2") else f"{float(v):.6g}")
             body.append(cells)
-        widths = [max(len(x) for x in col) for col in zip(head, *body, strict=False)]
-        lines = ["  ".join(h.rjust(w) for h, w in zip(row, widths, strict=True))
-                 for row in [head, *body]]  # fmt: skip
-        return "\n".join(lines)
+        return ["#", *columns], body
 
-    def __str__(self) -> str:
+    def _repr_html_(self) -> str:
+        """The ranked table in HTML (the first 50 rows), what a notebook shows."""
+        head, body = self._cells(rows=_HTML_ROWS)
+        more = len(self) - len(body)
+        caption = self._summary() + (f"; the first {len(body)} shown" if more > 0 else "")
+        return html_table(head, body, caption=caption)
+
+    def _summary(self) -> str:
         if self.dataset is not None:
             return (f"{self.feasible} feasible pairs among {self.examined} candidates "
                     f"({self.seconds:.3g} s), every one written to {self.dataset}")  # fmt: skip
-        head = (f"{len(self)} pairs of {self.feasible} feasible among {self.examined} candidates "
+        return (f"{len(self)} pairs of {self.feasible} feasible among {self.examined} candidates "
                 f"({self.seconds:.3g} s)")  # fmt: skip
-        return f"{head}\n" + self.format()
+
+    def __str__(self) -> str:
+        if self.dataset is not None:
+            return self._summary()
+        return f"{self._summary()}\n" + self.format()
 
     def __repr__(self) -> str:
         return (f"SearchResult({len(self)} rows, examined={self.examined}, "

@@ -20,14 +20,14 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # bottom to top; a module may import only modules of a lower layer of its own package
 LAYERS = {
     "gears": [
-        ["errors"],
+        ["errors", "display"],
         ["involute", "report", "files", "materials", "arguments", "budget"],
         ["geometry", "meshing"],
         ["rack", "cutter", "bevel"],
         ["profile", "measure", "checks", "rating", "spherical"],
         ["generate", "crown", "sizing"],
         ["outline", "root"],
-        ["mesh", "animate", "bevel_mesh"],
+        ["mesh", "animate", "drawing", "bevel_mesh"],
         ["gear", "capacity", "render"],
         ["pair"],
         ["shift", "plot", "bevel_pair"],

@@ -61,6 +61,7 @@ from gears.arguments import (
     check_tolerance,
 )
 from gears.budget import check_budget
+from gears.drawing import display_tolerance, outlines_svg
 from gears.errors import GearError
 from gears.files import check_output
 from gears.mesh import COLOURS, gear_solid, helix_twist, scene, transform
@@ -85,6 +86,7 @@ __all__ = [
     "stage_ratio",
 ]
 
+#: The stage schemes a :class:`Planetary` takes (``scheme=``).
 SCHEMES = ("simple", "stepped", "external", "internal", "double-planet")
 _ALIASES = {
     "a": "simple", "james": "simple", "sun-planet-ring": "simple",
@@ -1382,6 +1384,17 @@ class Planetary:
             f"Planetary(sun={z1}, planet={planet}, ring={z3}, n_planets={self.n_planets}, "
             f"module={self.module:g}, scheme={self.scheme!r})"
         )
+
+    def _repr_svg_(self) -> str:
+        """The stage in mesh, planets phased (:meth:`outlines`), as an SVG picture: what a
+        notebook shows (:func:`gears.drawing.outlines_svg`; a text when it cannot be drawn)."""
+
+        def parts() -> list:
+            tolerance = display_tolerance(max(self.ring.root_diameter, self.ring.tip_diameter))
+            placed = self._placed(0.0, tolerance, "ring", {})
+            return [(p, COLOURS[key.rstrip("'")]) for _, key, p in placed]
+
+        return outlines_svg(parts, "this stage", title=repr(self))
 
     def describe(self) -> str:
         """A readable summary: teeth, ratio, planet speed, placement, phasing and the report."""

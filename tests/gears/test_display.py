@@ -1,0 +1,266 @@
+"""Notebook displays (gears/display.py, gears/drawing.py): the SVG of a gear and a pair, the HTML
+tables of a Report and a SearchResult (issue 21).
+
+The SVGs are parsed with xml.etree and read back as geometry: the drawn points are checked
+against the gears' own circles (an independent route: the definitions of the tip circles and of
+the path of contact), so a picture that looks right but is placed wrong fails. The HTML is parsed
+with html.parser. Hypothesis sweeps gears and pairs: a display never raises, and what cannot be
+drawn shows the library's own message (never "a bug").
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import xml.etree.ElementTree as ET
+from html.parser import HTMLParser
+
+import numpy as np
+import pytest
+import shapely
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from gears import Gear, GearError, GearPair, Rack, search
+from gears.display import html_table, message_svg, svg
+from gears.drawing import WIDTH, display_tolerance, gear_svg, shown
+from gears.report import Finding, Report
+
+NS = "{http://www.w3.org/2000/svg}"
+
+
+def parse(text: str) -> ET.Element:
+    root = ET.fromstring(text)
+    assert root.tag == f"{NS}svg"
+    return root
+
+
+def view_box(root: ET.Element) -> tuple[float, float, float, float]:
+    x0, y0, w, h = map(float, root.get("viewBox").split())
+    assert w > 0 and h > 0
+    return x0, y0, w, h
+
+
+def paths(root: ET.Element) -> list[list[np.ndarray]]:
+    """Each <path> as its rings in drawing coordinates (the y flip of gears.display undone)."""
+    _, y0, _, h = view_box(root)
+    out = []
+    for el in root.iter(f"{NS}path"):
+        rings = []
+        for part in el.get("d").split("M")[1:]:
+            xy = np.array([p.split(",") for p in part.rstrip(" Z").split(" L")], float)
+            rings.append(np.column_stack([xy[:, 0], 2 * y0 + h - xy[:, 1]]))
+        out.append(rings)
+    return out
+
+
+def is_message(root: ET.Element) -> str:
+    return " ".join(t.text or "" for t in root.iter(f"{NS}tspan"))
+
+
+def test_gear_svg_is_its_outline():
+    # source: the outline itself (gears.outline at the display tolerance): the drawn polygon has
+    # its area to the written digits (2 decimals at this size), the view box holds the tip
+    # circle with a 2 % margin, the dashed circle is the reference circle d = z m
+    g = Gear(12, 3, profile_shift=0.6)
+    root = parse(g._repr_svg_())
+    assert root.get("width") == str(WIDTH)
+    (rings,) = paths(root)
+    assert len(rings) == 1
+    drawn = shapely.Polygon(rings[0])
+    exact = g.outline(display_tolerance(g.tip_diameter))
+    assert drawn.area == pytest.approx(exact.area, rel=1e-3)
+    x0, _, w, _ = view_box(root)
+    assert w == pytest.approx(1.04 * g.tip_diameter, rel=1e-3)
+    assert x0 == pytest.approx(-0.52 * g.tip_diameter, rel=1e-3)
+    (circle,) = root.iter(f"{NS}circle")
+    assert float(circle.get("r")) == pytest.approx(g.reference_diameter / 2, abs=0.01)
+    assert "teeth=12" in root.find(f"{NS}title").text
+
+
+def test_ring_gear_svg_keeps_its_hole():
+    # an internal gear is a rim with a toothed hole: one path of two rings (evenodd)
+    root = parse(Gear(60, 2, internal=True)._repr_svg_())
+    (rings,) = paths(root)
+    assert len(rings) == 2
+    assert next(root.iter(f"{NS}path")).get("fill-rule") == "evenodd"
+
+
+@pytest.mark.parametrize(
+    "pair",
+    [
+        GearPair(Gear(12, 3, profile_shift=0.6), Gear(24, 3, profile_shift=0.36)),
+        GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)),
+    ],
+    ids=["external", "internal"],
+)
+def test_pair_svg_draws_the_path_of_contact_between_the_tip_circles(pair):
+    # source: the definition of the path of contact (ISO 21771 §5.4): it starts at A on gear
+    # 2's tip circle and ends at E on gear 1's tip circle (gear 1 at the origin, gear 2 at
+    # (+-a_w, 0)); the line of action touches both base circles
+    root = parse(pair._repr_svg_())
+    drawn = paths(root)
+    assert len(drawn) == 4  # gear 1, gear 2, line of action, path of contact
+    assert len(list(root.iter(f"{NS}circle"))) == 2  # the working circles
+    (contact,) = drawn[3]
+    g1, g2 = pair.mounted
+    centre2 = np.array([-pair.center_distance if pair.internal else pair.center_distance, 0.0])
+    a, e = contact
+    resolution = 0.02  # mm: two decimals written at this size
+    assert np.hypot(*e) == pytest.approx(g1.tip_diameter / 2, abs=resolution)
+    assert np.hypot(*(a - centre2)) == pytest.approx(g2.tip_diameter / 2, abs=resolution)
+    (line,) = drawn[2]
+    along = (line[1] - line[0]) / np.hypot(*(line[1] - line[0]))
+
+    def distance(point):  # from the drawn line of action
+        dx, dy = point - line[0]
+        return abs(along[0] * dy - along[1] * dx)
+
+    assert distance(np.zeros(2)) == pytest.approx(g1.base_diameter / 2, abs=resolution)
+    assert distance(centre2) == pytest.approx(g2.base_diameter / 2, abs=resolution)
+    # the two outlines do not overlap (placed in mesh at zero backlash)
+    p1, p2 = (shapely.Polygon(r[0], r[1:]) for r in drawn[:2])
+    assert p1.intersection(p2).area < 0.01 * p1.area
+
+
+def test_what_cannot_be_drawn_says_why():
+    # z = 4, x = -0.5: the fillets cut the teeth away; the outline is refused by gears.profile
+    root = parse(Gear(4, 1, profile_shift=-0.5)._repr_svg_())
+    text = is_message(root)
+    assert text.startswith("this gear is not drawn") and "undercut" in text
+    root = parse(GearPair(Gear(20, 2), Rack(2))._repr_svg_())
+    assert "pinion-and-rack" in is_message(root)
+
+
+def test_a_failure_that_is_not_the_librarys_own_says_it_is_a_bug():
+    def broken() -> str:
+        return str(1 / 0)
+
+    text = is_message(parse(shown("this gear", broken)))
+    assert "ZeroDivisionError" in text and "bug" in text
+
+
+def test_svg_writes_lines_circles_and_escapes():
+    text = svg(
+        [(shapely.LineString([(0, 0), (4, 2)]), {"stroke": "a<b"})],
+        margin=0, digits=1, title="x & y",
+    )  # fmt: skip
+    root = parse(text)
+    assert view_box(root) == pytest.approx((0, 0, 4, 2))
+    assert root.find(f"{NS}title").text == "x & y"
+    (line,) = paths(root)
+    np.testing.assert_allclose(line[0], [[0, 0], [4, 2]])  # open: no Z, flip undone
+    assert "Z" not in next(root.iter(f"{NS}path")).get("d")
+    assert parse(message_svg("a < b")).find(f".//{NS}tspan").text == "a < b"
+
+
+class _Table(HTMLParser):
+    """Rows of an HTML table as lists of cell texts, with each row's class."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.rows: list[tuple[str | None, list[str]]] = []
+        self.caption = ""
+        self._in: str | None = None
+        self.feed(text)
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "tr":
+            self.rows.append((dict(attrs).get("class"), []))
+        elif tag in ("td", "th", "caption"):
+            self._in = tag
+            if tag != "caption":
+                self.rows[-1][1].append("")
+
+    def handle_endtag(self, tag):
+        self._in = None
+
+    def handle_data(self, data):
+        if self._in == "caption":
+            self.caption += data
+        elif self._in:
+            self.rows[-1][1][-1] += data
+
+
+def test_report_html_marks_the_failing_findings():
+    # the internal pair of the README: the ring's tip reaches the pinion's fillet
+    ring = Gear(80, 2, internal=True, profile_shift=0.3)
+    report = GearPair(Gear(20, 2, profile_shift=0.3), ring).check()
+    table = _Table(report._repr_html_())
+    head, *body = table.rows
+    assert head[1] == ["", "finding", "margin", "message"]
+    assert [cells[1] for _, cells in body] == list(report)
+    assert [cells[1] for cls, cells in body if cls == "fail"] == report.failed()
+    assert all(cells[0] == ("FAIL" if cls == "fail" else "ok") for cls, cells in body)
+    assert table.caption == f"FAILED: {', '.join(report.failed())}"
+    margin = report["tip_interference"].margin
+    (row,) = [cells for _, cells in body if cells[1] == "tip_interference"]
+    assert float(row[2].split()[0]) == pytest.approx(margin, rel=1e-3)  # 4 significant digits
+
+
+def test_html_table_escapes_its_cells():
+    table = _Table(html_table(["a"], [["<b>&"]], failing=[True], caption="c<"))
+    assert table.rows == [(None, ["a"]), ("fail", ["<b>&"])]
+    assert table.caption == "c<"
+    report = Report([Finding("x<y", -1.0, "a & b", unit="")])
+    assert _Table(report._repr_html_()).rows[1] == ("fail", ["FAIL", "x<y", "-1", "a & b"])
+
+
+def test_search_result_html_is_the_ranked_table():
+    # the same cells as the text table (SearchResult.format), at most 50 rows in HTML
+    res = search.pairs(ratio=2.0, module=2, teeth=(14, 40), top=None, progress=False)
+    table = _Table(res._repr_html_())
+    head, *body = table.rows
+    text = res.format().splitlines()
+    assert head[1] == text[0].split()
+    assert len(body) == min(len(res), 50)
+    assert body[0][1] == text[1].split()
+    assert table.caption.startswith(f"{len(res)} pairs of {res.feasible} feasible")
+
+
+_settings = settings(max_examples=25, deadline=None,
+                     suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
+
+
+def _drawn_or_explained(text: str) -> None:
+    root = parse(text)  # always a valid SVG
+    message = is_message(root)
+    if message:
+        assert "bug" not in message, message
+        assert re.match(r"this (gear|pair) is not drawn: \S", message)
+    else:
+        assert paths(root) and all(math.isfinite(v) for v in view_box(root))
+
+
+@_settings
+@given(
+    z=st.integers(1, 400), m=st.floats(0.05, 50), x=st.floats(-1.5, 2.5),
+    beta=st.sampled_from([0.0, 15.0, -30.0]), internal=st.booleans(),
+)  # fmt: skip
+def test_gear_display_never_raises(z, m, x, beta, internal):
+    try:
+        g = Gear(z, m, profile_shift=x, helix_angle=beta, internal=internal)
+    except GearError:
+        return  # refused at construction: nothing to display
+    _drawn_or_explained(g._repr_svg_())
+    _drawn_or_explained(gear_svg(g))
+    _Table(g.check()._repr_html_())
+
+
+@_settings
+@given(
+    z1=st.integers(3, 60), z2=st.integers(3, 200), m=st.floats(0.2, 20),
+    x1=st.floats(-1.0, 1.5), x2=st.floats(-1.0, 1.5), internal=st.booleans(),
+)  # fmt: skip
+def test_pair_display_never_raises(z1, z2, m, x1, x2, internal):
+    try:
+        pair = GearPair(Gear(z1, m, profile_shift=x1), Gear(z2, m, profile_shift=x2,
+                                                             internal=internal))  # fmt: skip
+    except GearError:
+        return
+    _drawn_or_explained(pair._repr_svg_())
+    try:
+        report = pair.check()
+    except GearError:  # a check that raises is issue 17's; the display is tested here
+        return
+    _Table(report._repr_html_())

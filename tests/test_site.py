@@ -1,0 +1,109 @@
+"""The documentation site (docs/conf.py, issue 21) builds with warnings as errors and documents
+every public name; every example has its gallery page, with its figures.
+
+The build is the README's command (``sphinx-build -W -b html docs docs/_build/html``) with
+``-E`` (every page read again, so a docstring changed since the last build is checked) into
+``docs/_build/html``. sphinx-gallery runs each example once and keeps its output: an unchanged
+example is not run again (its md5 is cached in ``docs/auto_examples``), which keeps this test
+within the suite's time budget; ``tests/test_examples.py`` runs every example on every run.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib
+import pathlib
+import re
+import subprocess
+import sys
+import time
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
+API = DOCS / "api"
+EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
+OUT = DOCS / "_build" / "html"
+
+
+def _listed(page: str) -> set[str]:
+    """Names in the autosummary directives of ``docs/api/<page>.rst``."""
+    text = (API / f"{page}.rst").read_text()
+    names = set()
+    for block in re.findall(r"^\.\. autosummary::\n((?:[ \t]+.*\n|\n)+)", text, flags=re.M):
+        for line in block.splitlines():
+            line = line.strip()
+            if line and not line.startswith(":"):
+                names.add(line)
+    return names
+
+
+def _modules_with_all(package: str) -> list[str]:
+    """Every module of ``package`` whose source defines ``__all__`` (the CLI excluded: its
+    sub-commands are documented by ``geartrain --help``)."""
+    out = []
+    for path in sorted((ROOT / package).rglob("*.py")):
+        rel = path.relative_to(ROOT).with_suffix("")
+        name = ".".join(rel.parts[:-1] if rel.name == "__init__" else rel.parts)
+        if name == package or name.startswith(("trains.commands", "trains.cli")):
+            continue
+        tree = ast.parse(path.read_text())
+        if any(
+            isinstance(n, ast.Assign) and any(getattr(t, "id", "") == "__all__" for t in n.targets)
+            for n in tree.body
+        ):
+            out.append(name)
+    return out
+
+
+PUBLIC = {p: sorted(importlib.import_module(p).__all__) for p in ("gears", "trains")}
+MODULES = _modules_with_all("gears") + _modules_with_all("trains")
+
+
+@pytest.mark.parametrize("package", sorted(PUBLIC))
+def test_reference_lists_every_exported_name(package):
+    missing = sorted(set(PUBLIC[package]) - _listed(package))
+    assert not missing, f"add to docs/api/{package}.rst: {missing}"
+
+
+def test_reference_lists_every_module_with_public_names():
+    missing = sorted(set(MODULES) - _listed("modules"))
+    assert not missing, f"add to docs/api/modules.rst: {missing}"
+
+
+def test_site_builds_with_warnings_as_errors():
+    before = sorted(p.name for p in (ROOT / "examples").iterdir())
+    start = time.perf_counter()
+    run = subprocess.run(
+        [sys.executable, "-m", "sphinx", "-E", "-W", "--keep-going", "-q", "-b", "html",
+         str(DOCS), str(OUT)],
+        capture_output=True, text=True, cwd=ROOT, timeout=900,
+    )  # fmt: skip
+    seconds = time.perf_counter() - start
+    assert run.returncode == 0, f"sphinx-build -W failed:\n{run.stderr[-6000:]}"
+    # examples write their files to temporary folders, never beside themselves
+    assert sorted(p.name for p in (ROOT / "examples").iterdir()) == before
+
+    # every public name and every module's __all__ is in the inventory of documented objects
+    from sphinx.util.inventory import InventoryFile
+
+    with (OUT / "objects.inv").open("rb") as f:
+        inventory = InventoryFile.load(f, "", lambda base, uri: uri)
+    entries = getattr(inventory, "data", inventory)  # Sphinx < 9: an _Inventory; 9: a dict
+    documented = {name for kind in entries.values() for name in kind}
+    names = [f"{p}.{n}" for p, ns in PUBLIC.items() for n in ns]
+    for module in MODULES:
+        package = module.split(".")[0]
+        for n in importlib.import_module(module).__all__:
+            if n not in PUBLIC[package]:  # re-exported names are documented on the package
+                names.append(f"{module}.{n}")
+    missing = [n for n in names if n not in documented]
+    assert not missing, f"not in the API reference: {missing}"
+
+    # every example has its page; one that draws with matplotlib shows its figure there
+    for script in EXAMPLES:
+        page = (OUT / "auto_examples" / f"{script.stem}.html").read_text()
+        if "savefig(" in script.read_text():
+            assert "sphx-glr-single-img" in page or "sphx-glr-multi-img" in page, script.name
+    print(f"site built in {seconds:.0f} s")

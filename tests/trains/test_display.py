@@ -1,0 +1,74 @@
+"""A planetary stage in a notebook (Planetary._repr_svg_, issue 21): the stage drawn in mesh with
+its planets phased, parsed back with xml.etree; a stage that cannot be drawn says why."""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+import shapely
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from gears import GearError
+from trains import Planetary, TrainError
+
+NS = "{http://www.w3.org/2000/svg}"
+
+
+def _polygons(text: str) -> list[shapely.Polygon]:
+    root = ET.fromstring(text)
+    _, y0, _, h = map(float, root.get("viewBox").split())
+    out = []
+    for el in root.iter(f"{NS}path"):
+        rings = []
+        for part in el.get("d").split("M")[1:]:
+            xy = np.array([p.split(",") for p in part.rstrip(" Z").split(" L")], float)
+            rings.append(np.column_stack([xy[:, 0], 2 * y0 + h - xy[:, 1]]))
+        out.append(shapely.Polygon(rings[0], rings[1:]))
+    return out
+
+
+def test_stage_svg_places_the_planets_at_their_phases():
+    # source: Planetary.placement (planet angles 0/120/240 deg, radius a_w = 63 mm for
+    # 18/45/108, m = 2: (18 + 45) m / 2); a gear's outline is symmetric about its axis, so its
+    # centroid is its centre (to the drawing's two written decimals)
+    stage = Planetary(18, 45, 108, n_planets=3, module=2)
+    ring, sun, *planets = _polygons(stage._repr_svg_())
+    assert len(planets) == 3
+    place = stage.placement()
+    for planet, angle in zip(planets, place.planet_angles, strict=True):
+        c = planet.centroid
+        assert math.hypot(c.x, c.y) == pytest.approx(place.planet_radius, abs=0.02)
+        off = (math.degrees(math.atan2(c.y, c.x)) - angle + 180) % 360 - 180
+        assert off == pytest.approx(0, abs=0.05)
+    assert abs(sun.centroid.x) < 0.02 and abs(ring.centroid.y) < 0.02
+    assert len(ring.interiors) == 1  # the ring: a rim around its toothed hole
+    # in mesh: no gear overlaps another (beyond the display tolerance's chords)
+    for p in planets:
+        assert p.intersection(ring).area < 0.01 * p.area
+        assert p.intersection(sun).area < 0.01 * sun.area
+
+
+_settings = settings(max_examples=15, deadline=None,
+                     suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
+
+
+@_settings
+@given(
+    sun=st.integers(6, 60), planet=st.integers(6, 60), ring=st.integers(20, 200),
+    n=st.integers(1, 6), m=st.floats(0.3, 8),
+)  # fmt: skip
+def test_stage_display_never_raises(sun, planet, ring, n, m):
+    try:
+        stage = Planetary(sun, planet, ring, n_planets=n, module=m)
+    except (GearError, TrainError):
+        return
+    root = ET.fromstring(stage._repr_svg_())
+    text = " ".join(t.text or "" for t in root.iter(f"{NS}tspan"))
+    if text:
+        assert text.startswith("this stage is not drawn: ") and "bug" not in text
+    else:
+        assert len(list(root.iter(f"{NS}path"))) == 2 + n
