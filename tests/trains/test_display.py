@@ -4,6 +4,7 @@ its planets phased, parsed back with xml.etree; a stage that cannot be drawn say
 from __future__ import annotations
 
 import math
+import pathlib
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -72,3 +73,18 @@ def test_stage_display_never_raises(sun, planet, ring, n, m):
         assert text.startswith("this stage is not drawn: ") and "bug" not in text
     else:
         assert len(list(root.iter(f"{NS}path"))) == 2 + n
+
+
+def test_notebook_figures_script_writes_the_reprs(tmp_path):
+    # docs/make_notebook_figures.py writes the pictures of docs/notebooks.md: each is the
+    # object's own _repr_svg_, a drawing (no message in place of one)
+    import runpy
+
+    script = pathlib.Path(__file__).resolve().parents[2] / "docs" / "make_notebook_figures.py"
+    written = runpy.run_path(str(script))["main"](tmp_path)
+    assert sorted(p.name for p in written) == [
+        "notebook_gear.svg", "notebook_pair.svg", "notebook_ring_pair.svg", "notebook_stage.svg",
+    ]  # fmt: skip
+    for path in written:
+        root = ET.fromstring(path.read_text())
+        assert not list(root.iter(f"{NS}tspan")) and list(root.iter(f"{NS}path"))
