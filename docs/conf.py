@@ -69,20 +69,43 @@ html_show_sourcelink = False
 os.environ.setdefault("GEARTRAIN_THREADS", "1")
 
 
-def _facade() -> dict[str, list[str]]:
-    """For each module, the names of its ``__all__`` that its package exports (documented on
-    the package's page, so the module page leaves them out)."""
+def _elsewhere() -> dict[str, dict[str, str]]:
+    """For each module, the names of its ``__all__`` that are documented elsewhere, and where:
+    those its package exports (on the package's page, ``gears.Gear``) and those it imports from
+    another module (on that module's page, ``gears.arguments.MAX_FRAMES``). The module pages
+    leave them out and link to them."""
+    import ast
     import importlib
 
-    out: dict[str, list[str]] = {}
+    root = HERE.parent
+    out: dict[str, dict[str, str]] = {}
     for package in ("gears", "trains"):
         pkg = importlib.import_module(package)
-        for name in pkg.__all__:
-            module = getattr(getattr(pkg, name), "__module__", None)
-            if module and module.startswith(package + "."):
-                if name in getattr(importlib.import_module(module), "__all__", ()):
-                    out.setdefault(module, []).append(name)
+        for path in sorted((root / package).rglob("*.py")):
+            rel = path.relative_to(root).with_suffix("")
+            name = ".".join(rel.parts[:-1] if rel.name == "__init__" else rel.parts)
+            if name == package or "commands" in rel.parts or name.endswith(".cli"):
+                continue
+            imported = {}
+            for node in ast.parse(path.read_text()).body:
+                if isinstance(node, ast.ImportFrom) and (node.module or "").startswith(package):
+                    for a in node.names:
+                        imported[a.asname or a.name] = f"{node.module}.{a.name}"
+            module = importlib.import_module(name)
+            for n in getattr(module, "__all__", ()):
+                obj = getattr(module, n)
+                if n in pkg.__all__ and getattr(pkg, n) is obj:
+                    out.setdefault(name, {})[n] = f"{package}.{n}"
+                elif n in imported:
+                    out.setdefault(name, {})[n] = imported[n]
+    for names in out.values():  # a module re-exporting a re-export: link to where it is shown
+        for n, where in names.items():
+            home, _, attr = where.rpartition(".")
+            while attr in out.get(home, {}) and out[home][attr] != where:
+                where = out[home][attr]
+                home, _, attr = where.rpartition(".")
+            names[n] = where
     return out
 
 
-autosummary_context = {"facade": _facade()}
+autosummary_context = {"elsewhere": _elsewhere()}

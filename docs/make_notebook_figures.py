@@ -3,7 +3,8 @@
 Each file is the object's own ``_repr_svg_()`` text, the very SVG Jupyter displays.
 
 Run: ``python docs/make_notebook_figures.py [out_dir]`` (default ``docs/images``; writes
-``notebook_gear.svg``, ``notebook_pair.svg``, ``notebook_ring_pair.svg``, ``notebook_stage.svg``).
+``notebook_gear.svg``, ``notebook_pair.svg``, ``notebook_ring_pair.svg``,
+``notebook_stage.svg``, ``notebook_bevel.svg``).
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import pathlib
 import sys
 
-from gears import Gear, GearPair
+from gears import BevelPair, Gear, GearPair
 from trains import Planetary
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -26,6 +27,7 @@ def main(out: pathlib.Path) -> list[pathlib.Path]:
             Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)
         ),
         "stage": Planetary(18, 45, 108, n_planets=3, module=2),
+        "bevel": BevelPair(20, 40, module=3, face_width=20),
     }
     written = []
     for name, obj in shown.items():

@@ -1,4 +1,7 @@
-"""Rate the electric hoist of Ozols example 7-7 (the closed differential, Fig. 7-13) by ISO 6336.
+"""Load capacity of the electric hoist
+===================================
+
+Rate the electric hoist of Ozols example 7-7 (the closed differential, Fig. 7-13) by ISO 6336.
 
 Design task: the hoist's motor gives 5.5 kW at n1 = 880 rpm (T1 = 59.7 N m); the drum 4 turns
 at 20 rpm (i_14 = 2767/63, examples/train_closed_differential.py). Is every mesh safe against

@@ -59,6 +59,7 @@ from gears.errors import GearError
 __all__ = [
     "CLEARANCES",
     "BevelGeometry",
+    "axial_section",
     "bevel_geometry",
     "check_shaft_angle",
     "cone_distance",
@@ -313,3 +314,44 @@ def max_face_width(z1, z2, module, shaft_angle=90.0) -> float:
     pair needs ``b < R_e`` (and ``b <= R_e / 3`` by the rule of thumb)."""
     d1, _ = pitch_angles(z1, z2, shaft_angle)
     return float(cone_distance(z1, module, d1))
+
+
+def axial_section(pitch_angle, face_angle, root_angle, cone_distance, face_width, addendum,
+                  dedendum):  # fmt: skip
+    """The tooth zone of a bevel gear in its axial section (arrays broadcast): the corners
+    ``(rho, z)`` (mm, z along the axis from the pitch apex, rho from the axis) of the
+    quadrilateral between the face cone, the back cone, the root cone and the front cone, in the
+    order outer tip, outer root, inner root, inner tip: shape ``(..., 4, 2)``.
+
+    The outer pitch point lies at ``R_e (sin delta, cos delta)``; the outer tip and root lie
+    ``h_ae`` and ``h_fe`` from it along the back-cone generator ``(cos delta, -sin delta)``
+    (so the tip is at ``(d_ae / 2, X)``, KHK Table 4.10); the face and root lines run from them
+    at ``delta_a`` and ``delta_f`` to the axis, and the front cone is the back cone's parallel
+    through ``R_i = R_e - b``. Angles in degrees.
+
+    >>> g = bevel_geometry(20, 40, 3.0, 22.0, clearance="tapered")
+    >>> s = axial_section(g.pitch_angle[0], g.face_angle[0], g.root_angle[0], g.cone_distance,
+    ...                   22.0, g.addendum[0], g.dedendum[0])
+    >>> [round(float(v), 4) for v in s[0]]   # the outer tip: (d_ae / 2, X) of bevel_geometry
+    [32.6833, 58.6584]
+    >>> round(float(g.tip_diameter[0]) / 2, 4), round(float(g.crown_to_apex[0]), 4)
+    (32.6833, 58.6584)
+    """
+    d, da, df = (np.radians(np.asarray(a, float)) for a in (pitch_angle, face_angle, root_angle))
+    r_e = np.asarray(cone_distance, float)
+    g = np.stack([np.sin(d), np.cos(d)], axis=-1)  # along the pitch generator
+    n = np.stack([np.cos(d), -np.sin(d)], axis=-1)  # along the back cone, away from the axis
+    pitch_e = r_e[..., None] * g
+    pitch_i = (r_e - np.asarray(face_width, float))[..., None] * g
+    tip = pitch_e + np.asarray(addendum, float)[..., None] * n
+    root = pitch_e - np.asarray(dedendum, float)[..., None] * n
+
+    def front(point, angle):  # where the line from point at angle to the axis meets the front
+        u = np.stack([np.sin(angle), np.cos(angle)], axis=-1)
+        w = pitch_i - point
+        s = (w[..., 0] * n[..., 1] - w[..., 1] * n[..., 0]) / (
+            u[..., 0] * n[..., 1] - u[..., 1] * n[..., 0]
+        )
+        return point + s[..., None] * u
+
+    return np.stack([tip, root, front(root, df), front(tip, da)], axis=-2)

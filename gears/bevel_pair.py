@@ -38,6 +38,7 @@ from gears.bevel import (
 from gears.bevel_mesh import BevelBlank, bevel_placement, bevel_solid, solid_estimate
 from gears.budget import check_budget
 from gears.checks import pointed_tip_margin
+from gears.drawing import bevel_pair_svg
 from gears.errors import GearError
 from gears.gear import Gear
 from gears.geometry import check_real, check_teeth
@@ -582,6 +583,11 @@ class BevelPair:
             f"BevelPair({self.z1}, {self.z2}, module={self.module:g}, face_width="
             f"{self.face_width:g}, shaft_angle={self.shaft_angle:g})"
         )
+
+    def _repr_svg_(self) -> str:
+        """The pair in axial section as an SVG picture, what a notebook shows
+        (:func:`gears.drawing.bevel_pair_svg`; a text instead when it cannot be drawn)."""
+        return bevel_pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,7 @@ import functools
 import math
 from dataclasses import dataclass, field
 
+from gears.display import html_table
 from gears.errors import GearError
 from gears.materials import material
 from gears.rating import FACTORS, QUANTITIES, PairRatings, load_point, rate_pairs
@@ -136,17 +137,23 @@ class Rating:
                 )  # fmt: skip
         return Report(out)
 
-    def __str__(self) -> str:
+    def _summary(self) -> list[str]:
+        """The pair, the operating conditions and the root-form routes, one line each."""
         st = self.settings
         g1, g2 = self.pair.g1, self.pair.g2
         kind = "internal" if getattr(g2, "internal", False) else "external"
-        lines = [
+        return [
             f"ISO 6336 method B rating: {g1.teeth}/{g2.teeth} ({kind}), m_n = {g1.module:g} mm, "
             f"b = {st.get('face_width', float('nan')):g} mm",
             f"torque {st.get('torque', float('nan')):g} N m on gear 1 at "
             f"{st.get('speed', float('nan')):g} rpm, life {st.get('life', float('nan')):g} h, "
             f"materials {st.get('materials', '?')}",
             f"root form: gear 1 {self.roots[0]}, gear 2 {self.roots[1]}",
+        ]
+
+    def __str__(self) -> str:
+        lines = [
+            *self._summary(),
             "",
             f"{'':26s} {'gear 1':>10s} {'gear 2':>10s}",
             f"{'safety pitting S_H':26s} {self.safety_pitting[0]:10.4f} "
@@ -172,6 +179,31 @@ class Rating:
     def __repr__(self) -> str:
         sh, sf = self.safety_pitting, self.safety_bending
         return f"Rating(S_H = {sh[0]:.3f} / {sh[1]:.3f}, S_F = {sf[0]:.3f} / {sf[1]:.3f})"
+
+    def _repr_html_(self) -> str:
+        """What a notebook shows: the safeties (a row marked when a safety is below the default
+        minimum of :meth:`check`) and stresses per gear, then every factor with its ISO clause
+        and the quantities, as HTML tables under the pair and its operating conditions."""
+        failed = self.check().failed()
+        rows = [
+            ("safety pitting S_H", *(f"{s:.4f}" for s in self.safety_pitting)),
+            ("safety bending S_F", *(f"{s:.4f}" for s in self.safety_bending)),
+        ]
+        marks = [any(n.startswith("pitting") for n in failed),
+                 any(n.startswith("bending") for n in failed)]  # fmt: skip
+        for name, value in self.stresses.items():
+            both = value if isinstance(value, tuple) else (value, value)
+            rows.append((f"{name} [MPa]", *(f"{v:.2f}" for v in both)))
+            marks.append(False)
+        factors = [(s, _fmt(self.factors[s]), clause, what) for s, _, what, clause in FACTORS]
+        quantities = [(s, _fmt(self.quantities[s]), f"{what} [{unit}]" if unit else what)
+                      for s, _, what, unit in QUANTITIES]  # fmt: skip
+        return "\n".join([
+            html_table(["", "gear 1", "gear 2"], rows, failing=marks,
+                       caption="; ".join(self._summary())),
+            html_table(["factor", "value (gear 1 / gear 2)", "clause", "what"], factors),
+            html_table(["quantity", "value (gear 1 / gear 2)", "what"], quantities),
+        ])  # fmt: skip
 
 
 def _fmt(value) -> str:

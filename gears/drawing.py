@@ -1,11 +1,12 @@
-"""Layer 7, drawings: what a gear, a pair in mesh and a stage show in a notebook (SVG text).
+"""Layer 7, drawings: what a gear, a pair in mesh, a bevel pair and a stage show in a notebook.
 
-``Gear._repr_svg_``, ``GearPair._repr_svg_`` and ``trains.Planetary._repr_svg_`` call these
-functions; the SVG itself is written by :func:`gears.display.svg` (the same text
-:func:`gears.export.to_svg` writes to a file). The outlines are the analytic ones of
-:func:`gears.outline.gear_outline` / :func:`gears.outline.pair_outlines`, sampled at a display
-tolerance (:func:`display_tolerance`: 1/1500 of the picture's size, a fraction of a pixel at
-:data:`WIDTH` pixels), so a drawing stays small and quick.
+``Gear._repr_svg_``, ``GearPair._repr_svg_``, ``BevelPair._repr_svg_`` and
+``trains.Planetary._repr_svg_`` call these functions; the SVG itself is written by
+:func:`gears.display.svg` (the same text :func:`gears.export.to_svg` writes to a file). The
+outlines are the analytic ones of :func:`gears.outline.gear_outline` and
+:func:`gears.outline.pair_outlines`, sampled at a display tolerance (:func:`display_tolerance`:
+1/1500 of the picture's size, a fraction of a pixel at :data:`WIDTH` pixels), so a drawing stays
+small and quick.
 
 A drawing never raises: what cannot be drawn (a rack pair, a tip below the base circle, a
 request past the outline's vertex budget) shows as a short text that says why
@@ -18,14 +19,24 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
+import numpy as np
 import shapely
 
+from gears.arguments import MIN_TOLERANCE
+from gears.bevel import axial_section
 from gears.display import Circle, message_svg, svg
 from gears.meshing import line_of_action_points
 from gears.outline import gear_outline, pair_outlines
-from gears.profile import MIN_TOLERANCE
 
-__all__ = ["WIDTH", "display_tolerance", "gear_svg", "outlines_svg", "pair_svg", "shown"]
+__all__ = [
+    "WIDTH",
+    "bevel_pair_svg",
+    "display_tolerance",
+    "gear_svg",
+    "outlines_svg",
+    "pair_svg",
+    "shown",
+]
 
 #: Width of a notebook drawing in pixels.
 WIDTH = 360
@@ -152,3 +163,48 @@ def outlines_svg(parts: Callable[[], list[tuple[shapely.Geometry, Colour]]], wha
         return _picture(shapes, max(x1 - x0, y1 - y0), title)
 
     return shown(what, draw)
+
+
+def bevel_pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))) -> str:
+    """A bevel pair in axial section, the drawing of a bevel pair's blanks: both gears' tooth
+    zones (:func:`gears.bevel.axial_section`, either side of each axis, over a lighter body down
+    to the axis) on their common pitch apex at the origin, gear 1's axis along +x and gear 2's
+    at the shaft angle, the pitch cones dashed and the axes dash-dotted.
+
+    >>> from gears import BevelPair
+    >>> bevel_pair_svg(BevelPair(20, 40, module=3, face_width=20)).count("<path")
+    12
+    """
+
+    def draw() -> str:
+        sigma = np.radians(pair.shaft_angle)
+        # gear 1's axis along +x, gear 2's at the shaft angle: the pitch cones share the
+        # generator at delta_1 from gear 1's axis
+        frames = [(np.array([1.0, 0.0]), np.array([0.0, 1.0])),
+                  (np.array([np.cos(sigma), np.sin(sigma)]),
+                   np.array([np.sin(sigma), -np.cos(sigma)]))]  # fmt: skip
+        size = 0.0
+        shapes: list = []
+        dashed = {**_LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
+        axis = {**_LINE, "stroke": "black", "stroke-width": 0.6, "stroke-dasharray": "8 3 2 3"}
+        for gear, colour, (a, p) in zip(pair.gears, colours, frames, strict=True):
+            corners = axial_section(gear.pitch_angle, gear.face_angle, gear.root_angle,
+                                    gear.cone_distance, gear.face_width, gear.addendum,
+                                    gear.dedendum)  # fmt: skip
+            delta = np.radians(gear.pitch_angle)
+            pitch = gear.cone_distance * np.array([np.sin(delta), np.cos(delta)])
+            (r_o, z_o), (r_i, z_i) = corners[1], corners[2]  # the root line, back to front
+            body = [z_o * a + r_o * p, z_i * a + r_i * p, z_i * a - r_i * p, z_o * a - r_o * p]
+            shapes.append((shapely.Polygon(body), {**_filled(colour), "fill-opacity": 0.15}))
+            for side in (1.0, -1.0):  # the tooth zone on both sides of the axis
+                xy = [z * a + side * rho * p for rho, z in corners]
+                shapes.append((shapely.Polygon(xy), _filled(colour)))
+                end = pitch[1] * a + side * pitch[0] * p
+                shapes.append((shapely.LineString([(0.0, 0.0), end]), dashed))
+            reach = float(np.max(corners[:, 1])) * 1.1
+            shapes.append((shapely.LineString([(0.0, 0.0), reach * a]), axis))
+            size = max(size, float(np.max(np.abs(corners))))
+        title = f"{pair!r}: axial section, pitch cones dashed"
+        return _picture(shapes, 2 * size, title)
+
+    return shown("this bevel pair", draw)

@@ -264,3 +264,88 @@ def test_pair_display_never_raises(z1, z2, m, x1, x2, internal):
     except GearError:  # a check that raises is issue 17's; the display is tested here
         return
     _Table(report._repr_html_())
+
+
+def test_rating_html_shows_safeties_factors_and_quantities():
+    # the rating's own numbers (gears.capacity.Rating), printed to 4 decimals; the safety rows
+    # are marked exactly when check() (S_Hmin = 1, S_Fmin = 1.4) fails them: at 200 N m this
+    # pair holds, at 2000 N m every safety fails (the rating's own check)
+    from gears.rating import FACTORS, QUANTITIES
+
+    pair = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+    for torque, failing in ((200, []), (2000, ["safety pitting S_H", "safety bending S_F"])):
+        rating = pair.rating(torque, 1500)
+        text = rating._repr_html_()
+        assert text.count("<table>") == 3
+        safeties, factors, quantities = (_Table(t) for t in text.split("</table>")[:3])
+        assert safeties.caption.startswith("ISO 6336 method B rating: 20/50 (external)")
+        body = {cells[0]: (cls, cells[1:]) for cls, cells in safeties.rows[1:]}
+        for name, values in (("safety pitting S_H", rating.safety_pitting),
+                             ("safety bending S_F", rating.safety_bending)):  # fmt: skip
+            np.testing.assert_allclose([float(v) for v in body[name][1]], values, atol=6e-5)
+        assert [n for n, (cls, _) in body.items() if cls == "fail"] == failing
+        assert bool(failing) == (not rating.check().ok)
+        assert [cells[0] for _, cells in factors.rows[1:]] == [f[0] for f in FACTORS]
+        assert [cells[0] for _, cells in quantities.rows[1:]] == [q[0] for q in QUANTITIES]
+
+
+@pytest.mark.parametrize("clearance", ["tapered", "constant"])
+def test_bevel_axial_section_meets_the_blank_dimensions(clearance):
+    # source: KHK Table 4.10 blank dimensions as gears.bevel.bevel_geometry computes them
+    # (outside diameter d_ae, pitch apex to crown X, inner outside diameter
+    # d_ai = d_ae - 2 b sin(delta_a) / cos(theta_a)): the section's outer tip is (d_ae/2, X) and
+    # its inner tip lies at d_ai/2 from the axis; with tapered clearance every cone meets the
+    # pitch apex, so the inner corners are the outer ones scaled by R_i / R_e
+    from gears.bevel import axial_section, bevel_geometry
+
+    b = 22.0
+    g = bevel_geometry(20, 40, 3.0, b, clearance=clearance)
+    s = axial_section(g.pitch_angle, g.face_angle, g.root_angle, g.cone_distance, b,
+                      g.addendum, g.dedendum)  # fmt: skip
+    assert s.shape == (2, 4, 2)
+    np.testing.assert_allclose(s[:, 0, 0], g.tip_diameter / 2, rtol=1e-12)
+    np.testing.assert_allclose(s[:, 0, 1], g.crown_to_apex, rtol=1e-12)
+    np.testing.assert_allclose(s[:, 3, 0], g.inner_tip_diameter / 2, rtol=1e-12)
+    # the root line runs from the outer root through the pitch apex (theta_f = atan(h_fm / R_m))
+    np.testing.assert_allclose(s[:, 2] * (g.cone_distance / (g.cone_distance - b)), s[:, 1],
+                               rtol=1e-12)  # fmt: skip
+    if clearance == "tapered":
+        np.testing.assert_allclose(s[:, 3] * (g.cone_distance / (g.cone_distance - b)), s[:, 0],
+                                   rtol=1e-12)  # fmt: skip
+
+
+@pytest.mark.parametrize("shaft_angle", [90.0, 60.0])
+def test_bevel_pair_svg_puts_each_tip_where_its_blank_says(shaft_angle):
+    # the drawn tooth zones: gear 1's outer tip at (X_1, +-d_ae1/2) about the x axis, gear 2's
+    # at X_2 along its axis (at the shaft angle) and d_ae2/2 off it (two decimals written)
+    from gears import BevelPair
+
+    pair = BevelPair(20, 30, module=3, face_width=15, shaft_angle=shaft_angle)
+    root = parse(pair._repr_svg_())
+    corners = np.concatenate([r[0] for r in paths(root) if len(r[0]) == 4])
+    sigma = math.radians(shaft_angle)
+    axes = [(np.array([1.0, 0.0]), np.array([0.0, 1.0])),
+            (np.array([math.cos(sigma), math.sin(sigma)]),
+             np.array([math.sin(sigma), -math.cos(sigma)]))]  # fmt: skip
+    for gear, (a, p) in zip(pair.gears, axes, strict=True):
+        for side in (1, -1):
+            tip = gear.crown_to_apex * a + side * gear.tip_diameter / 2 * p
+            assert np.min(np.hypot(*(corners - tip).T)) < 0.02
+    assert root.find(f"{NS}title").text.startswith("BevelPair(20, 30")
+
+
+@_settings
+@given(
+    z1=st.integers(1, 80), z2=st.integers(1, 120), m=st.floats(0.2, 20),
+    b=st.floats(0.5, 200), sigma=st.floats(5, 175),
+)  # fmt: skip
+def test_bevel_display_never_raises(z1, z2, m, b, sigma):
+    from gears import BevelPair
+
+    try:
+        pair = BevelPair(z1, z2, module=m, face_width=b, shaft_angle=sigma)
+    except GearError:
+        return
+    root = parse(pair._repr_svg_())
+    message = is_message(root)
+    assert not message or ("bug" not in message and message.startswith("this bevel pair"))

@@ -83,7 +83,8 @@ def test_notebook_figures_script_writes_the_reprs(tmp_path):
     script = pathlib.Path(__file__).resolve().parents[2] / "docs" / "make_notebook_figures.py"
     written = runpy.run_path(str(script))["main"](tmp_path)
     assert sorted(p.name for p in written) == [
-        "notebook_gear.svg", "notebook_pair.svg", "notebook_ring_pair.svg", "notebook_stage.svg",
+        "notebook_bevel.svg", "notebook_gear.svg", "notebook_pair.svg", "notebook_ring_pair.svg",
+        "notebook_stage.svg",
     ]  # fmt: skip
     for path in written:
         root = ET.fromstring(path.read_text())
