@@ -1,10 +1,10 @@
-"""Write the pictures of docs/notebooks.md: what a notebook shows of a gear, a pair and a stage.
+"""Write the pictures of docs/notebooks.md: what a notebook shows of gears, pairs and stages.
 
 Each file is the object's own ``_repr_svg_()`` text, the very SVG Jupyter displays.
 
 Run: ``python docs/make_notebook_figures.py [out_dir]`` (default ``docs/images``; writes
 ``notebook_gear.svg``, ``notebook_pair.svg``, ``notebook_ring_pair.svg``,
-``notebook_stage.svg``, ``notebook_bevel.svg``).
+``notebook_stage.svg``, ``notebook_bevel.svg``, ``notebook_differential.svg``).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import pathlib
 import sys
 
 from gears import BevelPair, Gear, GearPair
-from trains import Planetary
+from trains import Differential, Planetary
 
 HERE = pathlib.Path(__file__).resolve().parent
 
@@ -28,6 +28,7 @@ def main(out: pathlib.Path) -> list[pathlib.Path]:
         ),
         "stage": Planetary(18, 45, 108, n_planets=3, module=2),
         "bevel": BevelPair(20, 40, module=3, face_width=20),
+        "differential": Differential(16, 10, module=3, gleason=True),
     }
     written = []
     for name, obj in shown.items():

@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-__all__ = ["Circle", "html_table", "message_svg", "svg"]
+__all__ = ["Circle", "bounds", "html_table", "message_svg", "svg"]
 
 #: Style of a failing row of an HTML table (a red text, readable in light and dark themes).
 FAIL_STYLE = "color:#c62828;font-weight:bold"
@@ -53,7 +53,13 @@ class Circle:
 Shape = shapely.Geometry | Circle
 
 
-def _bounds(shapes: Sequence[Shape]) -> tuple[float, float, float, float]:
+def bounds(shapes: Sequence[Shape]) -> tuple[float, float, float, float]:
+    """``(x0, y0, x1, y1)`` of shapely geometries and :class:`Circle` s together (their finite
+    parts; ``(0, 0, 1, 1)`` for nothing).
+
+    >>> bounds([Circle(0, 0, 2), shapely.Point(5, 1)])
+    (-2.0, -2.0, 5.0, 2.0)
+    """
     geoms = [s for s in shapes if not isinstance(s, Circle)]
     boxes = [shapely.total_bounds(geoms)] if geoms else []
     boxes += [(c.x - c.r, c.y - c.r, c.x + c.r, c.y + c.r) for c in shapes if isinstance(c, Circle)]
@@ -125,7 +131,7 @@ def svg(
     str
     """
     items = list(shapes)
-    x0, y0, x1, y1 = _bounds([s for s, _ in items])
+    x0, y0, x1, y1 = bounds([s for s, _ in items])
     x0, y0, x1, y1 = x0 - margin, y0 - margin, x1 + margin, y1 + margin
     w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
     flip = y0 + y1

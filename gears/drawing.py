@@ -1,8 +1,9 @@
 """Layer 7, drawings: what a gear, a pair in mesh, a bevel pair and a stage show in a notebook.
 
-``Gear._repr_svg_``, ``GearPair._repr_svg_``, ``BevelPair._repr_svg_`` and
-``trains.Planetary._repr_svg_`` call these functions; the SVG itself is written by
-:func:`gears.display.svg` (the same text :func:`gears.export.to_svg` writes to a file). The
+``Gear._repr_svg_``, ``GearPair._repr_svg_``, ``BevelPair._repr_svg_``,
+``trains.Planetary._repr_svg_`` and ``trains.Differential._repr_svg_`` call these functions;
+the SVG itself is written by :func:`gears.display.svg` (the same text
+:func:`gears.export.to_svg` writes to a file). The
 outlines are the analytic ones of :func:`gears.outline.gear_outline` and
 :func:`gears.outline.pair_outlines`, sampled at a display tolerance (:func:`display_tolerance`:
 1/1500 of the picture's size, a fraction of a pixel at :data:`WIDTH` pixels), so a drawing stays
@@ -24,13 +25,14 @@ import shapely
 
 from gears.arguments import MIN_TOLERANCE
 from gears.bevel import axial_section
-from gears.display import Circle, message_svg, svg
+from gears.display import Circle, bounds, message_svg, svg
 from gears.meshing import line_of_action_points
 from gears.outline import gear_outline, pair_outlines
 
 __all__ = [
     "WIDTH",
     "bevel_pair_svg",
+    "bevel_svg",
     "display_tolerance",
     "gear_svg",
     "outlines_svg",
@@ -44,7 +46,7 @@ WIDTH = 360
 SAMPLING = 1 / 1500
 
 Colour = Sequence[float]  # RGB(A), 0-255, as gears.mesh.COLOURS
-_LINE = {"fill": "none", "vector-effect": "non-scaling-stroke"}
+_LINE = {"fill": "none"}  # stroke widths and dashes are given in pixels (see _picture)
 
 
 def display_tolerance(size: float) -> float:
@@ -80,7 +82,7 @@ def _css(colour: Colour) -> str:
 
 def _filled(colour: Colour) -> dict[str, Any]:
     return {"fill": _css(colour), "fill-opacity": 0.45, "stroke": _css(colour),
-            "stroke-width": 1, "vector-effect": "non-scaling-stroke"}  # fmt: skip
+            "stroke-width": 1}  # fmt: skip
 
 
 def _digits(size: float) -> int:
@@ -89,7 +91,22 @@ def _digits(size: float) -> int:
 
 
 def _picture(shapes: list, size: float, title: str) -> str:
-    return svg(shapes, margin=0.02 * size, width=WIDTH, digits=_digits(size), title=title)
+    """The SVG of ``shapes`` at :data:`WIDTH` pixels, their stroke widths and dashes (given in
+    pixels) turned into drawing units, so every renderer draws the same lines (SVG's
+    ``vector-effect`` is not supported everywhere)."""
+    margin = 0.02 * size
+    x0, _, x1, _ = bounds([s for s, _ in shapes])
+    px = (x1 - x0 + 2 * margin) / WIDTH  # drawing units per pixel
+    scaled = []
+    for shape, style in shapes:
+        style = dict(style)
+        if "stroke-width" in style:
+            style["stroke-width"] = f"{float(style['stroke-width']) * px:.3g}"
+        if "stroke-dasharray" in style:
+            dashes = str(style["stroke-dasharray"]).split()
+            style["stroke-dasharray"] = " ".join(f"{float(d) * px:.3g}" for d in dashes)
+        scaled.append((shape, style))
+    return svg(scaled, margin=margin, width=WIDTH, digits=_digits(size), title=title)
 
 
 def gear_svg(gear, colour: Colour = (70, 130, 180)) -> str:
@@ -165,38 +182,37 @@ def outlines_svg(parts: Callable[[], list[tuple[shapely.Geometry, Colour]]], wha
     return shown(what, draw)
 
 
-def bevel_pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))) -> str:
-    """A bevel pair in axial section, the drawing of a bevel pair's blanks: both gears' tooth
-    zones (:func:`gears.bevel.axial_section`, either side of each axis, over a lighter body down
-    to the axis) on their common pitch apex at the origin, gear 1's axis along +x and gear 2's
-    at the shaft angle, the pitch cones dashed and the axes dash-dotted.
+def bevel_svg(parts: Callable[[], list[tuple[Any, float, Colour]]], what: str,
+              title: str = "") -> str:  # fmt: skip
+    """Bevel gears on a common pitch apex (the origin) in the axial section of their axes: each
+    gear's tooth zone (:func:`gears.bevel.axial_section`, on both sides of its axis, over a
+    lighter body down to the axis), its pitch cone dashed and its axis dash-dotted. ``parts()``
+    gives ``(bevel gear, axis angle in degrees in the drawing, colour)`` triples (a
+    :class:`gears.BevelGear` or anything with its cone attributes).
 
     >>> from gears import BevelPair
-    >>> bevel_pair_svg(BevelPair(20, 40, module=3, face_width=20)).count("<path")
-    12
+    >>> p = BevelPair(20, 40, module=3, face_width=20)
+    >>> bevel_svg(lambda: [(p.g1, 0.0, (70, 130, 180))], "a gear").count("<path")
+    6
     """
 
     def draw() -> str:
-        sigma = np.radians(pair.shaft_angle)
-        # gear 1's axis along +x, gear 2's at the shaft angle: the pitch cones share the
-        # generator at delta_1 from gear 1's axis
-        frames = [(np.array([1.0, 0.0]), np.array([0.0, 1.0])),
-                  (np.array([np.cos(sigma), np.sin(sigma)]),
-                   np.array([np.sin(sigma), -np.cos(sigma)]))]  # fmt: skip
         size = 0.0
         shapes: list = []
         dashed = {**_LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
         axis = {**_LINE, "stroke": "black", "stroke-width": 0.6, "stroke-dasharray": "8 3 2 3"}
-        for gear, colour, (a, p) in zip(pair.gears, colours, frames, strict=True):
+        for gear, angle, colour in parts():
+            a = np.array([np.cos(np.radians(angle)), np.sin(np.radians(angle))])
+            p = np.array([-a[1], a[0]])  # both sides of the axis are drawn
             corners = axial_section(gear.pitch_angle, gear.face_angle, gear.root_angle,
                                     gear.cone_distance, gear.face_width, gear.addendum,
                                     gear.dedendum)  # fmt: skip
-            delta = np.radians(gear.pitch_angle)
-            pitch = gear.cone_distance * np.array([np.sin(delta), np.cos(delta)])
             (r_o, z_o), (r_i, z_i) = corners[1], corners[2]  # the root line, back to front
             body = [z_o * a + r_o * p, z_i * a + r_i * p, z_i * a - r_i * p, z_o * a - r_o * p]
             shapes.append((shapely.Polygon(body), {**_filled(colour), "fill-opacity": 0.15}))
-            for side in (1.0, -1.0):  # the tooth zone on both sides of the axis
+            delta = np.radians(gear.pitch_angle)
+            pitch = gear.cone_distance * np.array([np.sin(delta), np.cos(delta)])
+            for side in (1.0, -1.0):
                 xy = [z * a + side * rho * p for rho, z in corners]
                 shapes.append((shapely.Polygon(xy), _filled(colour)))
                 end = pitch[1] * a + side * pitch[0] * p
@@ -204,7 +220,21 @@ def bevel_pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222,
             reach = float(np.max(corners[:, 1])) * 1.1
             shapes.append((shapely.LineString([(0.0, 0.0), reach * a]), axis))
             size = max(size, float(np.max(np.abs(corners))))
-        title = f"{pair!r}: axial section, pitch cones dashed"
         return _picture(shapes, 2 * size, title)
 
-    return shown("this bevel pair", draw)
+    return shown(what, draw)
+
+
+def bevel_pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))) -> str:
+    """A bevel pair in axial section (:func:`bevel_svg`), the drawing of its blanks: gear 1's
+    axis along +x, gear 2's at the shaft angle, their pitch cones touching along one generator.
+
+    >>> from gears import BevelPair
+    >>> bevel_pair_svg(BevelPair(20, 40, module=3, face_width=20)).count("<path")
+    12
+    """
+
+    def parts() -> list:
+        return [(pair.g1, 0.0, colours[0]), (pair.g2, float(pair.shaft_angle), colours[1])]
+
+    return bevel_svg(parts, "this bevel pair", f"{pair!r}: axial section, pitch cones dashed")

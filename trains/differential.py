@@ -31,6 +31,7 @@ import numpy as np
 
 from gears import BevelPair, GearError, Report
 from gears.bevel_mesh import rotation
+from gears.drawing import bevel_svg
 from trains.errors import TrainError
 from trains.willis import Motion, Train
 
@@ -309,3 +310,19 @@ class Differential:
             f"Differential(side={self.side}, pinion={self.pinion}, n_pinions={self.n_pinions}, "
             f"module={self.module:g}, face_width={self.face_width:g})"
         )
+
+    def _repr_svg_(self) -> str:
+        """What a notebook shows: the differential in the axial section through the axle and
+        the first pinion (the side gears left and right, the pinions in that plane above and
+        below), drawn by :func:`gears.drawing.bevel_svg`."""
+
+        def parts() -> list:
+            side, pinion = self.pair.g2, self.pair.g1
+            out = [(side, 0.0, COLOURS["side"]), (side, 180.0, COLOURS["side"]),
+                   (pinion, 90.0, COLOURS["pinion"])]  # fmt: skip
+            if self.n_pinions % 2 == 0:  # a pinion opposite the first lies in the plane too
+                out.append((pinion, 270.0, COLOURS["pinion"]))
+            return out
+
+        return bevel_svg(parts, "this differential",
+                         f"{self!r}: axial section through the axle and pinion 1")  # fmt: skip

@@ -24,6 +24,8 @@ def _polygons(text: str) -> list[shapely.Polygon]:
     _, y0, _, h = map(float, root.get("viewBox").split())
     out = []
     for el in root.iter(f"{NS}path"):
+        if not el.get("d").endswith("Z"):
+            continue  # a line, not an outline
         rings = []
         for part in el.get("d").split("M")[1:]:
             xy = np.array([p.split(",") for p in part.rstrip(" Z").split(" L")], float)
@@ -83,9 +85,30 @@ def test_notebook_figures_script_writes_the_reprs(tmp_path):
     script = pathlib.Path(__file__).resolve().parents[2] / "docs" / "make_notebook_figures.py"
     written = runpy.run_path(str(script))["main"](tmp_path)
     assert sorted(p.name for p in written) == [
-        "notebook_bevel.svg", "notebook_gear.svg", "notebook_pair.svg", "notebook_ring_pair.svg",
-        "notebook_stage.svg",
+        "notebook_bevel.svg", "notebook_differential.svg", "notebook_gear.svg",
+        "notebook_pair.svg", "notebook_ring_pair.svg", "notebook_stage.svg",
     ]  # fmt: skip
     for path in written:
         root = ET.fromstring(path.read_text())
         assert not list(root.iter(f"{NS}tspan")) and list(root.iter(f"{NS}path"))
+
+
+@pytest.mark.parametrize("n_pinions", [2, 3])
+def test_differential_svg_shows_the_section_through_the_axle(n_pinions):
+    # the side gears on the axle (+-x), the pinions in the section plane at +-y (the second only
+    # when it lies opposite the first): each outer tip at (X, d_ae/2) of its blank (two decimals)
+    from trains import Differential
+
+    diff = Differential(16, 10, module=3, n_pinions=n_pinions, gleason=True)
+    root = ET.fromstring(diff._repr_svg_())
+    polygons = _polygons(diff._repr_svg_())
+    gears = 4 if n_pinions == 2 else 3
+    assert len(list(root.iter(f"{NS}path"))) == 6 * gears  # body, 2 zones, 2 pitch lines, axis
+    corners = np.concatenate([np.asarray(p.exterior.coords) for p in polygons])
+    side, pinion = diff.pair.g2, diff.pair.g1
+    x, r = side.crown_to_apex, side.tip_diameter / 2
+    tips = [(x, r), (-x, r), (pinion.tip_diameter / 2, pinion.crown_to_apex)]
+    if n_pinions == 2:
+        tips.append((pinion.tip_diameter / 2, -pinion.crown_to_apex))
+    for tip in tips:
+        assert np.min(np.hypot(*(corners - np.array(tip)).T)) < 0.02, tip
