@@ -72,11 +72,14 @@ _RATED_OBJECTIVES = ("volume", "mass", "ring", "teeth", "efficiency")
 _MIN_RATIO = {"simple": 2.0}
 #: combinations of stage ratios examined before the search is refused
 MAX_LOCAL_PAIRS = 5 * 10**7
-#: stages sized per task, and ratio tuples combined per task
+#: stages sized per task at most, and combinations crossed per combination task about
 SIZING_CHUNK = 4096
-TUPLE_CHUNK = 256
+COMBINATIONS = 200_000
 #: tooth-count sets per stage-set task at least (smaller blocks cost more than they save)
 MIN_SETS = 4096
+#: (stage, module, width) rows a rating call takes on a Dask worker and on a local thread
+WORKER_BLOCK = 8192
+LOCAL_BLOCK = 1 << 16
 _ALPHABET = {s: i for i, s in enumerate(sorted(SCHEMES))}  # ident order: scheme names sorted
 
 
@@ -610,23 +613,44 @@ def _ratio_ids(pool) -> tuple[list[Fraction], np.ndarray]:
     order = np.argsort(uniq[:, 0] / uniq[:, 1], kind="stable")
     rank = np.empty(len(order), np.int64)
     rank[order] = np.arange(len(order))
-    ratios = [Fraction(int(n), int(d)) for n, d in uniq[order]]
-    return ratios, rank[np.ravel(inverse)]
+    return _Ratios(uniq[order, 0], uniq[order, 1]), rank[np.ravel(inverse)]
 
 
-def _ratio_tuples(ratios: list[Fraction], target: Fraction, k: int, tol: float) -> list[tuple]:
+class _Ratios:
+    """Distinct reduced ratios ``num/den`` in ascending order (int64 arrays); ``ratios[i]``
+    is the exact Fraction (made only for the ratios asked for)."""
+
+    def __init__(self, num: np.ndarray, den: np.ndarray):
+        self.num, self.den = num, den
+
+    def __len__(self) -> int:
+        return len(self.num)
+
+    def __getitem__(self, i: int) -> Fraction:
+        return Fraction(int(self.num[i]), int(self.den[i]))
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+
+def _ratio_tuples(ratios: _Ratios, target: Fraction, k: int, tol: float) -> list[tuple]:
     """Non-decreasing tuples of indices into ``ratios`` (ascending) whose product meets the
-    target: exactly (a look-up of the reduced fraction) or within a tolerance (a float window,
-    then Fractions decide)."""
+    target: exactly (the reduced fraction looked up in integers, all first ratios at once) or
+    within a tolerance (a float window, then Fractions decide)."""
     n = len(ratios)
-    find = _Finder(ratios, tol)
-    if k == 1:
-        return [(i,) for i in find(target, 0)]
-    if k * n ** (k - 1) > MAX_LOCAL_PAIRS:
+    if k > 1 and k * n ** (k - 1) > MAX_LOCAL_PAIRS:
         raise TrainError(
             f"{n} stage ratios give about {n ** (k - 1):,} combinations for {k} stages, over "
             f"the limit of {MAX_LOCAL_PAIRS:,}; lower z_max or use fewer schemes"
         )
+    if tol == 0 and k > 1 and n:
+        found = _exact_tuples(ratios, target, k)
+        if found is not None:
+            return found
+    ratios = list(ratios)
+    find = _Finder(ratios, tol)
+    if k == 1:
+        return [(i,) for i in find(target, 0)]
     out = []
     limit = target * (1 + Fraction(tol))
     for i, r1 in enumerate(ratios):
@@ -640,6 +664,51 @@ def _ratio_tuples(ratios: list[Fraction], target: Fraction, k: int, tol: float) 
             if r1 * r2 * r2 > limit:
                 break
             out += [(i, j, m) for m in find(target / (r1 * r2), j)]
+    return out
+
+
+def _exact_tuples(ratios: _Ratios, target: Fraction, k: int) -> list[tuple] | None:
+    """:func:`_ratio_tuples` for an exact target in int64 arithmetic: for each first ratio
+    (and second, k = 3) the needed last ratio reduced by its gcd and looked up among the
+    sorted ``num * K + den`` keys. None when the numbers could overflow (then Fractions)."""
+    num, den = ratios.num, ratios.den
+    p, q = target.numerator, target.denominator
+    top = int(max(num.max(), den.max()))
+    if max(p, q) * top ** (2 * (k - 1)) >= 2**62 or top * (top + 1) >= 2**62:
+        return None
+    width = top + 1
+    keys = num * width + den  # ascending ratios are not ascending keys: sort them
+    order = np.argsort(keys)
+    sorted_keys = keys[order]
+
+    def lookup(need_num, need_den):
+        g = np.gcd(need_num, need_den)
+        a, b = need_num // g, need_den // g
+        inside = (a <= top) & (b <= top)
+        key = np.where(inside, a * width + b, -1)
+        pos = np.minimum(np.searchsorted(sorted_keys, key), len(keys) - 1)
+        hit = inside & (sorted_keys[pos] == key)
+        return np.where(hit, order[pos], -1)
+
+    out = []
+    idx = np.arange(len(num))
+    if k == 2:
+        j = lookup(p * den, q * num)
+        for i in np.flatnonzero(j >= idx):
+            out.append((int(i), int(j[i])))
+        return out
+    limit = float(target)
+    for i in range(len(num)):
+        r1 = num[i] / den[i]
+        if r1**3 > limit * (1 + 1e-12):
+            break
+        js = idx[i:]
+        js = js[r1 * (num[js] / den[js]) ** 2 <= limit * (1 + 1e-12)]
+        if not js.size:
+            continue
+        m = lookup(p * den[i] * den[js], q * num[i] * num[js])
+        for j, last in zip(js[m >= js].tolist(), m[m >= js].tolist(), strict=True):
+            out.append((i, j, last))
     return out
 
 
@@ -662,7 +731,7 @@ class _Finder:
         return [j for j in range(max(a, low), b) if abs(self.ratios[j] / need - 1) <= tol]
 
 
-def _places(t: tuple, ratios: list[Fraction]):
+def _places(t: tuple, ratios: _Ratios):
     """``(ratio index, product of the ratios before it)`` for each place of tuple ``t``: the
     stage there carries the input torque times that product."""
     p = Fraction(1)
@@ -690,6 +759,9 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
     design = {f: np.zeros(stage_ids.size) for f in fields}
     design["ok"] = np.zeros(stage_ids.size, bool)
     scheme = pool["scheme"][stage_ids]
+    # a Dask worker returns every temporary over 64 kB to the system at once
+    # (MALLOC_TRIM_THRESHOLD_): small rating calls there, large ones on local threads
+    block = WORKER_BLOCK if runner.client is not None else LOCAL_BLOCK
     args, where = [], []
     for code in np.unique(scheme):
         rows = np.flatnonzero(scheme == code)
@@ -700,7 +772,7 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
             cols = [pool[f][st] for f in ("z1", "z2", "z2p", "z3", "k", "num", "den")]
             args.append((load, names[int(code)], *cols, load.torque * mult[part],
                          load.speed / mult[part], plan.modules, plan.widths,
-                         plan.load_sharing))  # fmt: skip
+                         plan.load_sharing, None, block))  # fmt: skip
             where.append(part)
     for part, res in zip(where, runner.map(size_stages, args), strict=True):
         for f in fields:
@@ -831,8 +903,11 @@ def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, name
     verdicts: dict[tuple, bool] = {}
     checked = 0
     t["row"] = np.arange(len(t["z1"]))
+    sizes = np.array([math.prod(len(lists[i]) for i in kt) for kt in key_tuples], float)
     while True:
-        chunk = max(1, min(TUPLE_CHUNK, -(-len(key_tuples) // (4 * runner.parallel))))
+        # chunks of about COMBINATIONS crossed rows each (a small search: one, in this process)
+        tasks = max(1, min(4 * runner.parallel, math.ceil(sizes.sum() / COMBINATIONS)))
+        chunk = max(1, -(-len(key_tuples) // tasks))
         args = []
         for a in range(0, len(key_tuples), chunk):
             kts = key_tuples[a : a + chunk]
@@ -841,7 +916,7 @@ def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, name
             local = {i: np.searchsorted(used, lists[i]) for kt in kts for i in kt}
             args.append((sub, local, kts, [errors[kt] for kt in kts], plan.objective,
                          plan.rated, keep))  # fmt: skip
-        parts = runner.map(_combine_task, args)
+        parts = runner.map(_combine_task, args) if len(args) > 1 else [_combine_task(*args[0])]
         c = np.concatenate([p[0] for p in parts])
         err = np.concatenate([p[1] for p in parts])
         c = c[_score_order(t, c, err, plan.objective, plan.rated)]

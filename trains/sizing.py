@@ -133,11 +133,14 @@ def ring_tip_alteration(z_planet, z_ring, module, rack: BasicRack | None = None)
 
 
 def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, torque, speed,
-                modules, widths, load_sharing=None,
-                rack: BasicRack | None = None) -> dict:  # fmt: skip
+                modules, widths, load_sharing=None, rack: BasicRack | None = None,
+                block: int = 1 << 16) -> dict:  # fmt: skip
     """The smallest module of ``modules`` (ascending) at which each stage carries its input
     ``torque`` (N m on the sun) at ``speed`` (rpm), and the smallest face width of ``widths``
-    at that module: every mesh of the stage meets the load's minimum safeties.
+    at that module: every mesh of the stage meets the load's minimum safeties. Each rating
+    call takes at most ``block`` (stage, module, width) rows (about ``block`` x 8 bytes a
+    temporary: a Dask worker, which returns every larger one to the system at once, runs
+    faster on 8192).
 
     Returns a dict of arrays of the inputs' broadcast shape: ``module_index`` and
     ``width_index`` (-1 where no module of the list carries it), ``module``, ``face_width``
@@ -170,42 +173,12 @@ def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, t
         if not pending.size:
             break
         window = modules[lo : lo + MODULE_WINDOW]
-        # every pending stage x module of the window x width, rated at once (one call a mesh);
-        # the first (module, width) in that order that carries the load is the stage's
-        grid = (pending.size, window.size, nw)
-        rows = np.broadcast_to(pending[:, None, None], grid).ravel()
-        m = np.broadcast_to(window[None, :, None], grid).ravel()
-        b = np.broadcast_to(widths[None, None, :], grid).ravel()
-        ok = np.ones(rows.size, bool)
-        low_h = np.full(rows.size, np.inf)
-        low_f = np.full(rows.size, np.inf)
-        for ms in meshes:
-            relief = 0.0
-            if ms["internal"]:  # per stage and module, then per width
-                r2 = ring_tip_alteration(ms["z1"][pending][:, None], ms["z2"][pending][:, None],
-                                         window[None, :], rack)  # fmt: skip
-                relief = np.broadcast_to(r2[:, :, None], grid).ravel()
-            r = rate(
-                load, ms["z1"][rows], ms["z2"][rows], m, b, internal=ms["internal"], rack=rack,
-                torque=torque[rows] * ms["torque"][rows],
-                speed=speed[rows] * np.abs(ms["speed"][rows]),
-                contacts=tuple(_at(c, rows) for c in ms["contacts"]),
-                idler=tuple(_at(v, rows) for v in ms["idler"]),
-                load_sharing=k_gamma[rows], tip_alteration=(0.0, relief),
-            )  # fmt: skip
-            ok &= load.meets(r)
-            low_h = np.minimum(low_h, np.minimum(r.S_H1, r.S_H2))
-            low_f = np.minimum(low_f, np.minimum(r.S_F1, r.S_F2))
-        ok = ok.reshape(pending.size, -1)
-        hit = ok.any(axis=1)
-        first = np.argmax(ok, axis=1)[hit]  # module-major: the smallest module, then width
-        where = pending[hit]
-        flat = np.flatnonzero(hit) * ok.shape[1] + first
-        mi[where] = lo + first // nw
-        wi[where] = first % nw
-        s_h[where] = low_h[flat]
-        s_f[where] = low_f[flat]
-        pending = pending[~hit]
+        per = max(1, block // (window.size * nw))  # stages a rating call takes
+        left = []
+        for a in range(0, pending.size, per):
+            left.append(_window(load, meshes, pending[a : a + per], window, lo, widths, torque,
+                                speed, k_gamma, rack, mi, wi, s_h, s_f))  # fmt: skip
+        pending = np.concatenate(left)
     found = mi >= 0
     m_of = np.where(found, modules[np.maximum(mi, 0)], 0.0)
     b_of = np.where(found, widths[np.maximum(wi, 0)], 0.0)
@@ -222,6 +195,51 @@ def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, t
         "ring": np.asarray(z3, float) * m_of,
     }  # fmt: skip
     return {key: v.reshape(shape) for key, v in out.items()}
+
+
+def _window(load, meshes, pending, window, lo, widths, torque, speed, k_gamma, rack, mi, wi,
+            s_h, s_f) -> np.ndarray:  # fmt: skip
+    """Rate stages ``pending`` at every module of ``window`` (modules ``lo ...``) and width;
+    write the first (module, width) that carries each into ``mi``, ``wi``, ``s_h``, ``s_f``;
+    return the stages none carries."""
+    nw = widths.size
+    # every pending stage x module of the window x width, rated at once (one call a mesh);
+    # the first (module, width) in that order that carries the load is the stage's
+    grid = (pending.size, window.size, nw)
+    rows = np.broadcast_to(pending[:, None, None], grid).ravel()
+    m = np.broadcast_to(window[None, :, None], grid).ravel()
+    b = np.broadcast_to(widths[None, None, :], grid).ravel()
+    ok = np.ones(rows.size, bool)
+    low_h = np.full(rows.size, np.inf)
+    low_f = np.full(rows.size, np.inf)
+    for ms in meshes:
+        relief = 0.0
+        if ms["internal"]:  # per stage and module, then per width
+            r2 = ring_tip_alteration(ms["z1"][pending][:, None], ms["z2"][pending][:, None],
+                                     window[None, :], rack)  # fmt: skip
+            relief = np.broadcast_to(r2[:, :, None], grid).ravel()
+        r = rate(
+            load, ms["z1"][rows], ms["z2"][rows], m, b, internal=ms["internal"], rack=rack,
+            torque=torque[rows] * ms["torque"][rows],
+            speed=speed[rows] * np.abs(ms["speed"][rows]),
+            contacts=tuple(_at(c, rows) for c in ms["contacts"]),
+            idler=tuple(_at(v, rows) for v in ms["idler"]),
+            load_sharing=k_gamma[rows], tip_alteration=(0.0, relief),
+        )  # fmt: skip
+        ok &= load.meets(r)
+        low_h = np.minimum(low_h, np.minimum(r.S_H1, r.S_H2))
+        low_f = np.minimum(low_f, np.minimum(r.S_F1, r.S_F2))
+    ok = ok.reshape(pending.size, -1)
+    hit = ok.any(axis=1)
+    first = np.argmax(ok, axis=1)[hit]  # module-major: the smallest module, then width
+    where = pending[hit]
+    flat = np.flatnonzero(hit) * ok.shape[1] + first
+    mi[where] = lo + first // nw
+    wi[where] = first % nw
+    s_h[where] = low_h[flat]
+    s_f[where] = low_f[flat]
+    pending = pending[~hit]
+    return pending
 
 
 def _at(value, rows):

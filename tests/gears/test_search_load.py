@@ -284,3 +284,15 @@ def test_command_line_rated_search_estimate_and_dataset(tmp_path, capsys):
     assert "--quality" in capsys.readouterr().err
     assert main(["search", "pairs", "--ratio", "3", "--torque", "5", "--speed", "9"]) == 2
     assert "--face-width" in capsys.readouterr().err
+
+
+def test_figure_script_runs(tmp_path):
+    # docs/make_search_figures.py draws the docs figure (safety against volume, its fronts)
+    pytest.importorskip("matplotlib")
+    import pathlib
+    import runpy
+
+    root = pathlib.Path(__file__).resolve().parents[2]
+    mod = runpy.run_path(str(root / "docs" / "make_search_figures.py"))
+    (path,) = mod["main"](tmp_path)
+    assert path.name == "search_load_front.png" and path.stat().st_size > 10_000
