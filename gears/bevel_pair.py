@@ -11,8 +11,12 @@ at both ends of the face). ISO 10300 load capacity of bevel gears is not modelle
 from __future__ import annotations
 
 import math
+import os
+import pathlib
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -47,6 +51,9 @@ from gears.pair import GearPair, Rack
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 from gears.spherical import SphericalTooth
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = [
     "ANIMATION_BUDGET_3D",
@@ -441,7 +448,7 @@ class BevelPair:
         return self.virtual_pair.mesh_efficiency(friction)
 
     # --- placement -------------------------------------------------------------------------------
-    def placement(self, angle: float = 0.0):
+    def placement(self, angle: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
         """4x4 placements ``(gear 1, gear 2)`` on the common apex when gear 1 has turned by
         ``angle`` degrees (:func:`gears.bevel_mesh.bevel_placement`): gear 1's axis +z, gear 2's
         ``(sin Sigma, 0, cos Sigma)``, phased so the teeth interleave."""
@@ -451,7 +458,7 @@ class BevelPair:
     def scene(
         self, angle: float = 0.0, tolerance: float = 0.01, backlash: float = 0.0,
         bore: float | None = None, back_cone: bool = True,
-    ):  # fmt: skip
+    ) -> trimesh.Scene:  # fmt: skip
         """Both gears as a ``trimesh.Scene`` (nodes ``gear1``, ``gear2``): a common apex at the
         origin, the axes at the shaft angle (:meth:`placement`), gear 1 turned by ``angle``
         degrees and gear 2 rolling with it. At zero ``backlash`` (mm, normal, at the mean
@@ -475,10 +482,11 @@ class BevelPair:
         return scene([("gear1", m1, p1, COLOURS["gear1"]), ("gear2", m2, p2, COLOURS["gear2"])])
 
     def animate(
-        self, path, frames: int = 24, fps: float = 12.0, turn: float | None = None,
-        tolerance: float = 0.05, backlash: float = 0.0, elevation: float = 30.0,
-        azimuth: float = -30.0, size: int = 400, progress=None,
-    ):  # fmt: skip
+        self, path: str | os.PathLike[str], frames: int = 24, fps: float = 12.0,
+        turn: float | None = None, tolerance: float = 0.05, backlash: float = 0.0,
+        elevation: float = 30.0, azimuth: float = -30.0, size: int = 400,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4 with ffmpeg) of the pair turning: gear 1 by ``turn`` degrees
         (default one pitch, ``360 / z1``), gear 2 rolling with it, seen from ``elevation`` and
         ``azimuth`` degrees, ``size`` pixels square (:func:`gears.render.write_animation_3d`;
@@ -823,7 +831,7 @@ class BevelGear:
     def mesh(
         self, tolerance: float = 0.01, bore: float | None = None, back_cone: bool = True,
         backlash: float = 0.0,
-    ):  # fmt: skip
+    ) -> trimesh.Trimesh:  # fmt: skip
         """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, pitch
         apex at the origin, tooth 0 centred on +x; the teeth between the cone distances
         ``R_e - b`` and ``R_e`` (:func:`gears.bevel_mesh.bevel_solid`).

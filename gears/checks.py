@@ -28,6 +28,7 @@ from types import SimpleNamespace
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from gears.geometry import (
     CROSSING,
@@ -133,9 +134,12 @@ def flank_depth(rack, pressure_angle):
     return _out(out)
 
 
-def gear_margins(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0,
-                 internal=False, rack=None, tip_alteration=0.0, min_tip_land=0.2,
-                 form=None, root=None):  # fmt: skip
+def gear_margins(z: ArrayLike, module: ArrayLike, profile_shift: ArrayLike = 0.0,
+                 pressure_angle: ArrayLike = 20.0, helix_angle: ArrayLike = 0.0,
+                 internal: ArrayLike = False, rack: BasicRack | None = None,
+                 tip_alteration: ArrayLike = 0.0, min_tip_land: float = 0.2,
+                 form: ArrayLike | None = None,
+                 root: ArrayLike | None = None) -> GearMargins:  # fmt: skip
     """All margins of ``Gear.check()`` for rack-cut gears (arrays broadcast).
 
     ``form`` and ``root`` give the form- and root-circle diameters when the caller has them (a
@@ -422,9 +426,12 @@ class PairMargins(NamedTuple):
         return np.logical_and.reduce(np.broadcast_arrays(*[np.asarray(f[k]) >= 0 for k in names]))
 
 
-def pair_margins(z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angle=0.0,
-                 internal=False, rack=None, tip_shortening=True, min_contact_ratio=1.1,
-                 min_tip_land=0.2, allow_undercut=True, threads=1):  # fmt: skip
+def pair_margins(z1: ArrayLike, z2: ArrayLike, module: ArrayLike, x1: ArrayLike = 0.0,
+                 x2: ArrayLike = 0.0, pressure_angle: ArrayLike = 20.0,
+                 helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
+                 rack: BasicRack | None = None, tip_shortening: bool = True,
+                 min_contact_ratio: float = 1.1, min_tip_land: float = 0.2,
+                 allow_undercut: bool = True, threads: int | None = 1) -> PairMargins:  # fmt: skip
     """Every finding of ``GearPair(Gear(z1, ...), Gear(z2, ...)).check()`` over arrays of
     rack-cut pairs: the geometry of :func:`gears.meshing.pair_geometry`, each gear's
     :func:`gear_margins` and the mesh margins, with the largest specific sliding.

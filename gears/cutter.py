@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -104,7 +105,7 @@ class ShaperCutter:
             raise GearError(f"cutter tip_radius = {self.tip_radius}; valid is >= 0")
 
     @classmethod
-    def default_for(cls, gear) -> ShaperCutter:
+    def default_for(cls, gear: Any) -> ShaperCutter:
         """The cutter used when none is given: the tooth count nearest a 76 mm pitch diameter,
         between 12 and 100 teeth, and for an internal gear at most half the ring's teeth (so the
         cutter clears the ring's tips on its way out). For a ring, the nearest such cutter that
@@ -148,20 +149,20 @@ class ShaperCutter:
             gear.pressure_angle, gear.helix_angle, gear.internal, tip_shortening=False,
         )  # fmt: skip
 
-    def working_pressure_angle(self, gear) -> float:
+    def working_pressure_angle(self, gear: Any) -> float:
         """alpha_w0 of the cutting mesh, degrees (transverse)."""
         return float(self._mesh(gear).working_pressure_angle)
 
-    def center_distance(self, gear) -> float:
+    def center_distance(self, gear: Any) -> float:
         """Cutting centre distance a0 in mm."""
         return float(self._mesh(gear).center_distance)
 
-    def tip_diameter_of_cutter(self, gear) -> float:
+    def tip_diameter_of_cutter(self, gear: Any) -> float:
         """d_a0 = m_t z0 + 2 (h_a0* + x0) m_n (:func:`gears.geometry.tip_diameter`)."""
         h, _ = self._h(gear)
         return float(tip_diameter(self.teeth, gear.module, self.shift, gear.helix_angle, h))
 
-    def root_diameter(self, gear) -> float:
+    def root_diameter(self, gear: Any) -> float:
         """Root diameter the cutter leaves on ``gear``: 2 (a0 -+ r_a0) (- external, + internal).
 
         >>> from gears import Gear
@@ -172,7 +173,7 @@ class ShaperCutter:
         a0, ra0 = self.center_distance(gear), self.tip_diameter_of_cutter(gear) / 2
         return 2 * (a0 + ra0) if gear.internal else 2 * (a0 - ra0)
 
-    def form_diameter(self, gear) -> float:
+    def form_diameter(self, gear: Any) -> float:
         """Diameter where the generated involute ends: the work point conjugate to the end of the
         cutter's involute (its tangency with the tip round), on the line of action.
 
@@ -184,7 +185,7 @@ class ShaperCutter:
         rb = gear.base_diameter / 2
         return 2 * math.sqrt(rb * rb + max(rho_w, 0.0) ** 2)
 
-    def check(self, gear):
+    def check(self, gear: Any) -> Report:
         """Can this cutter cut ``gear``? A :class:`gears.Report` with
 
         * ``undercut`` (external gear): the cutter's involute must end before the interference

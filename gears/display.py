@@ -30,7 +30,7 @@ import math
 import textwrap
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 import shapely
@@ -50,7 +50,7 @@ class Circle:
     r: float
 
 
-Shape = shapely.Geometry | Circle
+Shape: TypeAlias = shapely.Geometry | Circle
 
 
 def bounds(shapes: Sequence[Shape]) -> tuple[float, float, float, float]:

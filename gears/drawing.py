@@ -46,6 +46,8 @@ WIDTH = 360
 SAMPLING = 1 / 1500
 
 Colour = Sequence[float]  # RGB(A), 0-255, as gears.mesh.COLOURS
+#: gear 1 and gear 2 (the RGB of gears.mesh.COLOURS, which the classes pass in)
+_PAIR_COLOURS = ((70, 130, 180), (222, 140, 60))
 _LINE = {"fill": "none"}  # stroke widths and dashes are given in pixels (see _picture)
 
 
@@ -109,7 +111,7 @@ def _picture(shapes: list, size: float, title: str) -> str:
     return svg(scaled, margin=margin, width=WIDTH, digits=_digits(size), title=title)
 
 
-def gear_svg(gear, colour: Colour = (70, 130, 180)) -> str:
+def gear_svg(gear: Any, colour: Colour = (70, 130, 180)) -> str:
     """The gear's outline (analytic, every tooth) with its reference circle dashed.
 
     >>> from gears import Gear
@@ -127,7 +129,7 @@ def gear_svg(gear, colour: Colour = (70, 130, 180)) -> str:
     return shown("this gear", draw)
 
 
-def pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))) -> str:
+def pair_svg(pair: Any, colours: tuple[Colour, Colour] = _PAIR_COLOURS) -> str:
     """Both gears in mesh as :meth:`GearPair.outlines` places them (as mounted), their working
     circles dashed, the line of action from N1 (to N2) and the path of contact A-E in red.
 
@@ -225,7 +227,9 @@ def bevel_svg(parts: Callable[[], list[tuple[Any, float, Colour]]], what: str,
     return shown(what, draw)
 
 
-def bevel_pair_svg(pair, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))) -> str:
+def bevel_pair_svg(
+    pair: Any, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))
+) -> str:
     """A bevel pair in axial section (:func:`bevel_svg`), the drawing of its blanks: gear 1's
     axis along +x, gear 2's at the shaft angle, their pitch cones touching along one generator.
 

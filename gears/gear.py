@@ -9,8 +9,14 @@ the exact envelope and the outline come from the layers below (:mod:`gears.cutte
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from functools import cached_property
+from typing import TYPE_CHECKING
+
+import numpy as np
+import shapely
+from numpy.typing import ArrayLike
 
 from gears.arguments import (
     check_callback,
@@ -50,6 +56,9 @@ from gears.outline import METHODS, gear_outline, outline_vertices
 from gears.profile import ShaperProfile, default_rim
 from gears.rack import BasicRack
 from gears.report import Finding, Report
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["Gear"]
 
@@ -238,7 +247,7 @@ class Gear:
         return self.teeth / (math.cos(bb) ** 2 * math.cos(b))
 
     # --- tooth thickness ---------------------------------------------------------------------
-    def tooth_thickness(self, diameter):
+    def tooth_thickness(self, diameter: ArrayLike) -> float | np.ndarray:
         """Transverse arc tooth thickness at ``diameter`` (mm; array in, array out).
 
         Raises :class:`GearError` for a diameter inside the base circle or past the pointed tip
@@ -507,8 +516,9 @@ class Gear:
     def outline(
         self, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
         bore: float | None = None, rim: float | None = None, angle: float = 0.0,
-        center=(0.0, 0.0), cutter=None, progress=None,
-    ):  # fmt: skip
+        center: tuple[float, float] = (0.0, 0.0), cutter: ShaperCutter | None = None,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> shapely.Polygon:  # fmt: skip
         """Transverse tooth outline as a shapely Polygon (see :func:`gears.profile.outline`,
         :func:`gears.generate.rack_outline`, :func:`gears.generate.shaper_outline`).
 
@@ -529,8 +539,9 @@ class Gear:
     def mesh(
         self, face_width: float | None = None, tolerance: float = 0.01, method: str = "analytic",
         backlash: float = 0.0, bore: float | None = None, herringbone: bool = False,
-        cutter=None, rim: float | None = None, progress=None,
-    ):  # fmt: skip
+        cutter: ShaperCutter | None = None, rim: float | None = None,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> trimesh.Trimesh:  # fmt: skip
         """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, mid-plane
         z = 0, the section at z turned by ``2 z tan(beta) / d`` (right hand > 0).
 
@@ -573,7 +584,8 @@ class Gear:
         return self.tip_diameter / 2
 
     def solid_vertices(self, tolerance: float, twist: float = 0.0, method: str = "analytic",
-                       backlash: float = 0.0, bore=None, rim=None, cutter=None,
+                       backlash: float = 0.0, bore: float | None = None,
+                       rim: float | None = None, cutter: ShaperCutter | None = None,
                        herringbone: bool = False) -> float:  # fmt: skip
         """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
         the slices; :func:`gears.outline.outline_vertices`), before any outline is drawn."""
@@ -581,8 +593,9 @@ class Gear:
         return n * float(solid_levels(twist, self.solid_radius(rim), tolerance, herringbone))
 
     def check_solid_budget(
-        self, tolerance, twist=0.0, method="analytic", backlash=0.0, bore=None, rim=None,
-        cutter=None, herringbone=False,
+        self, tolerance: float, twist: float = 0.0, method: str = "analytic",
+        backlash: float = 0.0, bore: float | None = None, rim: float | None = None,
+        cutter: ShaperCutter | None = None, herringbone: bool = False,
     ) -> float:  # fmt: skip
         """:meth:`solid_vertices`, or a GearError over the mesh budget naming the tolerance
         that fits."""

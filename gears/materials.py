@@ -128,7 +128,9 @@ class Material:
         """The integer code of :attr:`kind` (its index in :data:`KINDS`)."""
         return KINDS.index(self.kind)
 
-    def with_limits(self, sigma_Hlim: float | None = None, sigma_Flim: float | None = None):
+    def with_limits(
+        self, sigma_Hlim: float | None = None, sigma_Flim: float | None = None
+    ) -> Material:
         """The same material with other allowable stress numbers (None keeps a value)."""
         from dataclasses import replace
 

@@ -25,6 +25,7 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse
@@ -64,9 +65,10 @@ def _sigma(internal):
 
 
 def pair_geometry(
-    z1, z2, module, x1=0.0, x2=0.0, pressure_angle=20.0, helix_angle=0.0, internal=False,
-    addendum=1.0, tip_shortening=True, threads=None,
-):  # fmt: skip
+    z1: ArrayLike, z2: ArrayLike, module: ArrayLike, x1: ArrayLike = 0.0, x2: ArrayLike = 0.0,
+    pressure_angle: ArrayLike = 20.0, helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
+    addendum: ArrayLike = 1.0, tip_shortening: ArrayLike = True, threads: int | None = None,
+) -> PairGeometry:  # fmt: skip
     """Geometry of many pairs at once (all arguments broadcast; angles in degrees).
 
     ``z2`` and ``x2`` are gear 2's own (positive) tooth count and shift; ``internal`` marks

@@ -9,8 +9,12 @@ from __future__ import annotations
 
 import math
 import numbers
+import os
+import pathlib
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
@@ -54,6 +58,13 @@ from gears.meshing import (
 )
 from gears.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.report import Finding, Report
+
+if TYPE_CHECKING:
+    import trimesh
+    from numpy.typing import ArrayLike
+
+    from gears.cutter import ShaperCutter
+    from gears.materials import Material
 
 __all__ = ["GearPair", "PathOfContact", "Rack"]
 
@@ -528,7 +539,9 @@ class GearPair:
             return self.contact_ratio
         return self.contact_ratio + self.overlap_ratio
 
-    def specific_sliding(self, u=None, n: int = 101):
+    def specific_sliding(
+        self, u: ArrayLike | None = None, n: int = 101
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Specific sliding ``(u, zeta_1, zeta_2)`` along the path of contact.
 
         ``u`` are positions in mm from N1 (default: ``n`` points from start to end).
@@ -564,10 +577,14 @@ class GearPair:
 
     # --- load capacity (ISO 6336) -----------------------------------------------------------------
     def rating(
-        self, torque: float, speed: float, material="case-carburized", *, life: float = 20000.0,
+        self, torque: float, speed: float,
+        material: str | Material | tuple[str | Material, str | Material] = "case-carburized", *,
+        life: float = 20000.0,
         application_factor: float = 1.0, quality: int = 6, roughness: float = 1.0,
-        oil_viscosity: float = 220.0, tip_relief: float | None = None, sigma_Hlim=None,
-        sigma_Flim=None, face_width: float | None = None, contacts=(1, 1), idler=(False, False),
+        oil_viscosity: float = 220.0, tip_relief: float | None = None,
+        sigma_Hlim: float | tuple[float, float] | None = None,
+        sigma_Flim: float | tuple[float, float] | None = None, face_width: float | None = None,
+        contacts: tuple[int, int] = (1, 1), idler: tuple[bool, bool] = (False, False),
         misalignment: float | None = None, root: str = "auto", **factors,
     ) -> Rating:  # fmt: skip
         """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
@@ -636,8 +653,9 @@ class GearPair:
     # --- checks ----------------------------------------------------------------------------------
     def outlines(
         self, angle: float = 0.0, tolerance: float = 0.001, method: str = "analytic",
-        backlash: float = 0.0, cutter=None, progress=None,
-    ):  # fmt: skip
+        backlash: float = 0.0, cutter: ShaperCutter | tuple | None = None,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> tuple[shapely.Polygon, shapely.Polygon]:  # fmt: skip
         """Both outlines in mesh: gear 1 at the origin turned by ``angle`` degrees, gear 2 at the
         working centre distance (see :func:`gears.outline.pair_outlines`; ``cutter`` is a
         shaper cutter for both gears or a pair of them; ``progress(done, total)`` follows a
@@ -681,9 +699,10 @@ class GearPair:
 
     def scene(
         self, angle: float = 0.0, face_width: float | None = None, tolerance: float = 0.01,
-        method: str = "analytic", backlash: float = 0.0, herringbone: bool = False, cutter=None,
-        progress=None,
-    ):  # fmt: skip
+        method: str = "analytic", backlash: float = 0.0, herringbone: bool = False,
+        cutter: ShaperCutter | tuple | None = None,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> trimesh.Scene:  # fmt: skip
         """Both gears as a ``trimesh.Scene`` in mesh (nodes ``gear1``, ``gear2``, coloured).
 
         Gear 1 sits at the origin turned by ``angle`` degrees, gear 2 at the working centre
@@ -734,10 +753,11 @@ class GearPair:
         return scene(parts)
 
     def animate(
-        self, path, frames: int = 48, fps: float = 20.0, turn: float | None = None,
-        tolerance: float = 0.02, method: str = "analytic", backlash: float = 0.0, cutter=None,
-        progress=None,
-    ):  # fmt: skip
+        self, path: str | os.PathLike[str], frames: int = 48, fps: float = 20.0,
+        turn: float | None = None, tolerance: float = 0.02, method: str = "analytic",
+        backlash: float = 0.0, cutter: ShaperCutter | tuple | None = None,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4 with ffmpeg) of both outlines in mesh while gear 1 turns by
         ``turn`` degrees (default one mesh cycle, ``360 / z1``), gear 2 placed as
         :meth:`outlines` places it; ``progress(i, n)`` after each frame

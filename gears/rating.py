@@ -44,9 +44,11 @@ from __future__ import annotations
 
 import itertools
 import math
-from typing import NamedTuple
+from collections.abc import Sequence
+from typing import Any, NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.geometry import root_diameter, tip_diameter, tooth_thickness
@@ -768,14 +770,19 @@ def _overrides(factors):
 
 # --- the rating -------------------------------------------------------------------------------
 def rate_pairs(
-    z1, z2, module, face_width, torque, speed, *, x1=0.0, x2=0.0, pressure_angle=20.0,
-    helix_angle=0.0, internal=False, material=("case-carburized", "case-carburized"),
-    sigma_Hlim=None, sigma_Flim=None, life=20000.0, application_factor=1.0, quality=6,
-    roughness=1.0, root_roughness=None, oil_viscosity=220.0, tip_relief=None,
-    load_sharing=1.0, contacts=(1, 1), idler=(False, False), misalignment=None,
-    addendum=1.0, dedendum=1.25, root_radius=0.38, protuberance=0.0, tip_shortening=True,
-    tip_alteration=(0.0, 0.0), root=(None, None), factors=None, errors="raise",
-    fields=None, threads=None, geometry=None,
+    z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: ArrayLike, torque: ArrayLike,
+    speed: ArrayLike, *, x1: ArrayLike = 0.0, x2: ArrayLike = 0.0,
+    pressure_angle: ArrayLike = 20.0, helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
+    material: Any = ("case-carburized", "case-carburized"), sigma_Hlim: Any = None,
+    sigma_Flim: Any = None, life: ArrayLike = 20000.0, application_factor: ArrayLike = 1.0,
+    quality: ArrayLike = 6, roughness: ArrayLike = 1.0, root_roughness: ArrayLike | None = None,
+    oil_viscosity: ArrayLike = 220.0, tip_relief: ArrayLike | None = None,
+    load_sharing: ArrayLike = 1.0, contacts: Any = (1, 1), idler: Any = (False, False),
+    misalignment: ArrayLike | None = None, addendum: ArrayLike = 1.0,
+    dedendum: ArrayLike = 1.25, root_radius: ArrayLike = 0.38, protuberance: ArrayLike = 0.0,
+    tip_shortening: ArrayLike = True, tip_alteration: Any = (0.0, 0.0), root: Any = (None, None),
+    factors: dict[str, Any] | None = None, errors: str = "raise",
+    fields: Sequence[str] | None = None, threads: int | None = None, geometry: Any = None,
 ) -> PairRatings:  # fmt: skip
     """ISO 6336 method B pitting and bending ratings of many pairs at once (arrays broadcast).
 

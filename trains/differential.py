@@ -25,7 +25,10 @@ from __future__ import annotations
 
 import math
 import numbers
-from typing import Any
+import os
+import pathlib
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -34,6 +37,9 @@ from gears.bevel_mesh import rotation
 from gears.drawing import bevel_svg
 from trains.errors import TrainError
 from trains.willis import Motion, Train
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["Differential"]
 
@@ -208,7 +214,7 @@ class Differential:
     def scene(
         self, angle: float = 0.0, left: float = 1.0, right: float = 1.0, tolerance: float = 0.02,
         backlash: float = 0.0, bore: float | None = None,
-    ):  # fmt: skip
+    ) -> trimesh.Scene:  # fmt: skip
         """The side gears and pinions as a ``trimesh.Scene`` (:meth:`placements`): the two side
         gears share one mesh, the pinions another (instanced). ``bore`` is the side gears' bore
         (the axle), mm.
@@ -241,10 +247,11 @@ class Differential:
         return scene(parts)
 
     def animate(
-        self, path, frames: int = 48, left: float = 0.9, right: float = 1.1,
-        turn: float | None = None, tolerance: float = 0.05, fps: float = 16.0,
-        elevation: float = 20.0, azimuth: float = -35.0, size: int = 400, progress=None,
-    ):  # fmt: skip
+        self, path: str | os.PathLike[str], frames: int = 48, left: float = 0.9,
+        right: float = 1.1, turn: float | None = None, tolerance: float = 0.05, fps: float = 16.0,
+        elevation: float = 20.0, azimuth: float = -35.0, size: int = 400,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4) of the differential turning through a corner: the wheels at the
         speeds ``left`` and ``right`` (the outer wheel faster), the faster one turning by
         ``turn`` degrees over the animation (default two pinion pitches, ``720 / z_pinion``),

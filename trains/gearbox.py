@@ -39,7 +39,7 @@ import itertools
 import math
 import numbers
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from fractions import Fraction
@@ -171,7 +171,8 @@ class Gearboxes(list):
         With a load: stage-load rows sized.
     """
 
-    def __init__(self, items, stage_sets, ratio_tuples, checked, seconds, tasks=0, sized=0):
+    def __init__(self, items: Iterable[Gearbox], stage_sets: dict[str, int], ratio_tuples: int,
+                 checked: int, seconds: float, tasks: int = 0, sized: int = 0) -> None:  # fmt: skip
         super().__init__(items)
         self.stage_sets = dict(stage_sets)
         self.ratio_tuples = int(ratio_tuples)
@@ -393,11 +394,14 @@ def _completed(futures):
 
 def synthesize_gearbox(
     ratio: Any, stages: int = 2, n_planets: Any = 3, schemes: str | Sequence[str] = "simple",
-    *, tolerance: float = 0.0, z_min: int = 17, z_max: int = 150, module=None,
+    *, tolerance: float = 0.0, z_min: int = 17, z_max: int = 150,
+    module: float | Sequence[float] | None = None,
     objective: str | None = None, top: int = 10, mesh_checks: str = "geometry",
-    min_contact_ratio: float = 1.1, full_checks: bool = True, torque=None, speed=None,
-    material="case-carburized", face_width=None, life: float = 20000.0, min_safety=None,
-    client=None, threads: int | None = None, chunk_size: int | None = None,
+    min_contact_ratio: float = 1.1, full_checks: bool = True, torque: float | None = None,
+    speed: float | None = None, material: Any = "case-carburized",
+    face_width: float | Sequence[float] | None = None, life: float = 20000.0,
+    min_safety: dict[str, float] | None = None, client: Any = None,
+    threads: int | None = None, chunk_size: int | None = None,
     progress: Callable[[int, int], object] | bool | None = None, max_seconds: float = 30.0,
     **rating_options,
 ) -> Gearboxes:  # fmt: skip

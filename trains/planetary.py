@@ -40,11 +40,13 @@ from __future__ import annotations
 import math
 import numbers
 import operator
-from collections.abc import Iterable
+import os
+import pathlib
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -72,6 +74,9 @@ from trains.conditions import assembly_number
 from trains.errors import TrainError
 from trains.power import power_flow
 from trains.willis import Train
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = [
     "NEIGHBOUR_TOLERANCE",
@@ -715,7 +720,7 @@ class Planetary:
 
     # ---- kinematics ------------------------------------------------------------------------
     @cached_property
-    def train(self):
+    def train(self) -> Train:
         """The stage as a :class:`trains.Train` (members sun, planet[, planet2], ring, carrier)."""
         t = Train()
         internal_keys = {k for k, internal, _ in _GEARS[self.scheme] if internal}
@@ -1260,7 +1265,7 @@ class Planetary:
 
     def scene(self, angle: float = 0.0, face_width: float | None = None,
               tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False,
-              progress=None):  # fmt: skip
+              progress: Callable[[int, int], object] | None = None) -> trimesh.Scene:  # fmt: skip
         """The stage as a ``trimesh.Scene`` with real teeth, every mesh engaged.
 
         Sun, ring and every planet sit at the real centre distances, turned to their phase from
@@ -1320,8 +1325,9 @@ class Planetary:
             parts.append((name, solids[key], transform(rot, centre, z * b), colour))
         return scene(parts)
 
-    def animate(self, path, frames: int = 48, fps: float = 20.0, turn: float | None = None,
-                tolerance: float = 0.02, fixed: str = "ring", progress=None):  # fmt: skip
+    def animate(self, path: str | os.PathLike[str], frames: int = 48, fps: float = 20.0,
+                turn: float | None = None, tolerance: float = 0.02, fixed: str = "ring",
+                progress: Callable[[int, int], object] | None = None) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4 with ffmpeg) of the stage's outlines in mesh while it turns.
 
         ``turn`` is the carrier rotation covered, degrees (the sun's when the carrier is

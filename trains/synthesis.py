@@ -135,7 +135,7 @@ class Candidates(list):
     """
 
     def __init__(self, items: Iterable[Candidate], examined: int, removed: dict[str, int],
-                 reach: tuple[float, float] | None = None, request: str = ""):  # fmt: skip
+                 reach: tuple[float, float] | None = None, request: str = "") -> None:  # fmt: skip
         super().__init__(items)
         self.examined = examined
         self.removed = dict(removed)
