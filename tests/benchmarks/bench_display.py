@@ -1,5 +1,5 @@
-"""Benchmark: the notebook displays (issue 21): time and size of ``_repr_svg_`` of gears, pairs
-and a stage, and of ``Report._repr_html_``.
+"""Benchmark: the notebook displays (issue 21): time and size of ``_repr_svg_`` of gears, pairs,
+a bevel pair, a stage and a differential, and of the HTML tables of a Report and a Rating.
 
 Each display is timed as the best of N wall times (``time.perf_counter``), beside a baseline
 measured in the same run: the same gear written as :func:`gears.export.to_svg` writes a file
@@ -15,9 +15,9 @@ from __future__ import annotations
 import os
 import time
 
-from gears import Gear, GearPair
+from gears import BevelPair, Gear, GearPair
 from gears.display import svg
-from trains import Planetary
+from trains import Differential, Planetary
 
 
 def best_of(fn, repeat: int) -> float:
@@ -41,6 +41,8 @@ def main() -> None:
          GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)),
          20),
         ("stage 18/45/108 x 3, m = 2", Planetary(18, 45, 108, n_planets=3, module=2), 5),
+        ("bevel pair 20/40, m = 3, b = 20", BevelPair(20, 40, module=3, face_width=20), 30),
+        ("differential 16/10 x 2, m = 3", Differential(16, 10, module=3, gleason=True), 30),
     ]  # fmt: skip
     print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
     print("| display | `_repr_svg_` | SVG size | baseline: file SVG at 0.001 mm | ratio |")
@@ -66,6 +68,10 @@ def main() -> None:
     t = best_of(report._repr_html_, 200)
     print(f"| `Report._repr_html_` (11 findings) | {t * 1e3:.3f} ms | "
           f"{len(report._repr_html_()) / 1024:.1f} kB | | |")  # fmt: skip
+    rating = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30)).rating(200, 1500)
+    t = best_of(rating._repr_html_, 50)
+    print(f"| `Rating._repr_html_` (20/50, 200 N m) | {t * 1e3:.2f} ms | "
+          f"{len(rating._repr_html_()) / 1024:.1f} kB | | |")  # fmt: skip
     print(f"load average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 
