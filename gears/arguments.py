@@ -37,6 +37,7 @@ __all__ = [
     "LENGTH_RANGE",
     "MAX_FPS",
     "MAX_FRAMES",
+    "MAX_TEETH",
     "MIN_FPS",
     "MIN_TOLERANCE",
     "MODULE_RANGE",
@@ -67,6 +68,9 @@ MIN_TOLERANCE = 1e-6
 #: size it is measured against (a module or an outline's radius): below, a float32 file cannot
 #: tell its faces apart; above, volumes lose every digit.
 LENGTH_RANGE = (1e-6, 1e6)
+
+#: The most teeth a gear may have (its diameter is then 10^7 modules: far past any rack limit).
+MAX_TEETH = 10_000_000
 
 #: The modules a gear may have, mm: below, areas and volumes underflow; above, they overflow.
 MODULE_RANGE = (1e-6, 1e6)
@@ -123,13 +127,14 @@ def check_integer(name: str, value, low: int = 1, high: int | None = None) -> in
 
 
 def check_teeth(name: str, z) -> int:
-    """Validate a tooth count: an integer >= 1 (int-valued floats are accepted)."""
+    """Validate a tooth count: an integer 1 ... :data:`MAX_TEETH` (int-valued floats are
+    accepted)."""
     if not _is_real(z):
         raise GearError(f"{name} must be an integer >= 1; got {z!r}")
     if not math.isfinite(float(z)) or float(z) != int(z):
         raise GearError(f"{name} = {z!r} is not a whole number of teeth; valid is an integer >= 1")
-    if int(z) < 1:
-        raise GearError(f"{name} = {int(z)}; valid is an integer >= 1")
+    if not 1 <= int(z) <= MAX_TEETH:
+        raise GearError(f"{name} = {int(z)}; valid is an integer 1 ... {MAX_TEETH}")
     return int(z)
 
 

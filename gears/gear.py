@@ -128,8 +128,9 @@ class Gear:
         if pa != self.rack.pressure_angle:
             set_(self, "rack", self.rack.with_pressure_angle(pa))
         set_(self, "helix_angle", check_real("helix_angle", self.helix_angle, -60.0, 60.0))
-        set_(self, "profile_shift", check_real("profile_shift", self.profile_shift))
-        set_(self, "tip_alteration", check_real("tip_alteration", self.tip_alteration))
+        # shifts beyond +-1000 modules draw no gear and would swamp d in d + 2 x m_n
+        for name in ("profile_shift", "tip_alteration"):
+            set_(self, name, check_real(name, getattr(self, name), -1000.0, 1000.0))
         if self.face_width is not None:
             set_(self, "face_width", check_real("face_width", self.face_width, 0.0))
         set_(self, "internal", bool(self.internal))

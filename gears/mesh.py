@@ -94,18 +94,26 @@ def helix_twist(face_width, helix_angle, reference_diameter):
     return out if out.ndim else out[()]
 
 
+#: The most a section turns between two slices, degrees, however coarse the tolerance: the quads
+#: between slices stay near planar (a tolerance larger than the gear once gave one slice for a
+#: 121-degree twist, and a self-intersecting solid of negative volume).
+MAX_SLICE_TURN = 15.0
+
+
 def _slices(twist, radius, tolerance):
     """:func:`slice_count` as floats (no integer overflow for an absurd twist)."""
     t = np.radians(np.abs(np.asarray(twist, dtype=float)))
     r = np.asarray(radius, dtype=float)
     tol = np.asarray(tolerance, dtype=float)
     step = 2.0 * np.arccos(np.clip(1.0 - tol / r, -1.0, 1.0))
+    step = np.minimum(step, math.radians(MAX_SLICE_TURN))
     return np.maximum(1.0, np.ceil(t / step - 1e-12))
 
 
 def slice_count(twist, radius, tolerance):
     """Axial slices needed so a vertex at ``radius`` that turns by ``twist`` degrees keeps its
-    chord within ``tolerance`` of the true helix: ``r (1 - cos(dtheta / 2)) <= tolerance``.
+    chord within ``tolerance`` of the true helix: ``r (1 - cos(dtheta / 2)) <= tolerance``, and
+    turns by at most :data:`MAX_SLICE_TURN` a slice.
 
     At least 1 (a prism). Vectorised.
 

@@ -104,7 +104,10 @@ def pair_geometry(
         raise GearError(f"threads = {threads!r}; valid is an integer >= 1")
     if n < 2 * _CHUNK:
         _check_rows(args, shape, 0)
-        return PairGeometry(*_pair_geometry_block(*args, tip_shortening))
+        # every argument at the full shape: the block's in-place steps (inv_wt *= 2 tan) need
+        # their first operand as large as the result (a scalar z1 with arrays of pressure angle)
+        full = [np.broadcast_to(v, shape) for v in args]
+        return PairGeometry(*_pair_geometry_block(*full, tip_shortening))
     # Large arrays: blocks of _CHUNK pairs, whose temporaries stay in cache, shared by the
     # threads (numpy ufuncs release the GIL). Measured in docs/performance.md.
     flat = [v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in args]

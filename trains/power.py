@@ -183,7 +183,9 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
     out = []
     for r, e in zip(rel, etas, strict=True):
         if isinstance(e, bool) or not isinstance(e, numbers.Real):
-            raise TrainError(f"efficiency of {r.name!r} must be a number, got {e!r}")
+            raise TrainError(
+                f"mesh_efficiency = {e!r} for {r.name!r}; valid is a number in (0, 1]"
+            )
         e = float(e)
         if not (0.0 < e <= 1.0):
             how = (
@@ -192,7 +194,9 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
                 and not (isinstance(mesh_efficiency, Mapping) and r.name in mesh_efficiency)
                 else ""
             )
-            raise TrainError(f"efficiency of {r.name!r} must be in (0, 1], got {e:.6g}{how}")
+            raise TrainError(
+                f"mesh_efficiency = {e:.6g} for {r.name!r}{how}; valid is a number in (0, 1]"
+            )
         out.append(e)
     return out
 

@@ -1200,7 +1200,13 @@ class Train:
                 self._check_amplification(mat, vals[:, None], res[:, None])
             out = {n: float(x) for n, x in zip(mp.determined, res, strict=True)}
             return self._assemble(mp, dict(zip(mp.known, map(float, vals), strict=True)), out)
-        arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
+        try:
+            arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
+        except (TypeError, ValueError):  # text, ragged lists, shapes that do not broadcast
+            raise TrainError(
+                f"speeds must be numbers or arrays of one shape, got "
+                f"{dict(zip(mp.known, values, strict=True))}"
+            ) from None
         shape = arrays[0].shape if arrays else ()
         w = np.stack([a.reshape(-1) for a in arrays]) if arrays else np.zeros((0, 1))
         if not np.all(np.isfinite(w)):
