@@ -41,6 +41,7 @@ __all__ = [
     "MIN_FPS",
     "MIN_TOLERANCE",
     "MODULE_RANGE",
+    "PRESSURE_ANGLES",
     "check_angle",
     "check_callback",
     "check_choice",
@@ -52,6 +53,7 @@ __all__ = [
     "check_module",
     "check_point",
     "check_positive",
+    "check_pressure_angle",
     "check_real",
     "check_teeth",
     "check_tolerance",
@@ -68,6 +70,10 @@ MIN_TOLERANCE = 1e-6
 #: size it is measured against (a module or an outline's radius): below, a float32 file cannot
 #: tell its faces apart; above, volumes lose every digit.
 LENGTH_RANGE = (1e-6, 1e6)
+
+#: The normal pressure angles a gear may have, degrees (1 <= alpha_n < 45): below a degree the
+#: involute formulas divide by sin(alpha) of nearly nothing; 45 is the rack's own limit.
+PRESSURE_ANGLES = (1.0, 45.0)
 
 #: The most teeth a gear may have (its diameter is then 10^7 modules: far past any rack limit).
 MAX_TEETH = 10_000_000
@@ -153,6 +159,12 @@ def check_module(value, name: str = "module") -> float:
     """
     lo, hi = MODULE_RANGE
     return check_real(name, value, lo, hi, low_open=False, high_open=False)
+
+
+def check_pressure_angle(value, name: str = "pressure_angle") -> float:
+    """A normal pressure angle in degrees within :data:`PRESSURE_ANGLES` (1 <= alpha < 45)."""
+    lo, hi = PRESSURE_ANGLES
+    return check_real(name, value, lo, hi, low_open=False)
 
 
 def check_length(name: str, value, scale: float, of: str = "the module") -> float:

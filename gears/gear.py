@@ -25,6 +25,7 @@ from gears.arguments import (
     check_length,
     check_module,
     check_positive,
+    check_pressure_angle,
     check_tolerance,
 )
 from gears.budget import check_budget
@@ -123,7 +124,7 @@ class Gear:
             raise GearError(f"rack must be a BasicRack; got {self.rack!r}")
         if self.pressure_angle is None:
             set_(self, "pressure_angle", self.rack.pressure_angle)
-        pa = check_real("pressure_angle", self.pressure_angle, 0.0, 45.0)
+        pa = check_pressure_angle(self.pressure_angle)
         set_(self, "pressure_angle", pa)
         if pa != self.rack.pressure_angle:
             set_(self, "rack", self.rack.with_pressure_angle(pa))

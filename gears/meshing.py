@@ -136,7 +136,7 @@ _ROWS = (
     ("module", lambda a: (a[2] > 0) & (a[2] < 1e6), "0 < module (mm)"),
     ("x1", lambda a: np.abs(a[3]) < 1e3, "a finite shift"),
     ("x2", lambda a: np.abs(a[4]) < 1e3, "a finite shift"),
-    ("pressure_angle", lambda a: (a[5] > 0) & (a[5] < 45), "0 < pressure_angle < 45 deg"),
+    ("pressure_angle", lambda a: (a[5] >= 1) & (a[5] < 45), "1 <= pressure_angle < 45 deg"),
     ("helix_angle", lambda a: np.abs(a[6]) < 60, "-60 < helix_angle < 60 deg"),
     ("addendum", lambda a: (a[7] > 0) & (a[7] < 10), "0 < addendum < 10 (module units)"),
     ("z2", lambda a: ~a[8] | (a[1] > a[0]), "z2 > z1 for a ring (internal)"),

@@ -395,3 +395,18 @@ def test_zero_backlash_outlines_of_a_stage_never_overlap():
         for k in (1, 2, 3):
             assert o["ring"].intersection(o[f"planet{k}"]).area == 0.0
             assert o["sun"].intersection(o[f"planet{k}"]).area == 0.0
+
+
+def test_long_work_reports_progress():
+    # a scene reports each distinct solid; a mesh or scene of a simulated outline follows the
+    # simulation (the long part), ending at its total
+    calls = []
+    STAGE.scene(tolerance=0.2, progress=lambda done, total: calls.append((done, total)))
+    assert calls == [(1, 3), (2, 3), (3, 3)]
+    calls.clear()
+    Gear(20, 1).mesh(5, tolerance=0.05, method="rack", progress=lambda d, t: calls.append((d, t)))
+    assert calls and calls[-1][0] == calls[-1][1]
+    calls.clear()
+    PAIR.scene(tolerance=0.05, method="rack", progress=lambda d, t: calls.append((d, t)))
+    assert calls[-1] == (1000, 1000)
+    refused(lambda: PAIR.scene(progress="yes"), "progress")

@@ -183,9 +183,7 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
     out = []
     for r, e in zip(rel, etas, strict=True):
         if isinstance(e, bool) or not isinstance(e, numbers.Real):
-            raise TrainError(
-                f"mesh_efficiency = {e!r} for {r.name!r}; valid is a number in (0, 1]"
-            )
+            raise TrainError(f"mesh_efficiency = {e!r} for {r.name!r}; valid is a number in (0, 1]")
         e = float(e)
         if not (0.0 < e <= 1.0):
             how = (

@@ -218,6 +218,12 @@ def _as_ratio(ratio: Any) -> Fraction:
         )
     if r.denominator > 10**12:
         r = r.limit_denominator(10**12)
+    if abs(r) > 10**12 or abs(r) < Fraction(1, 10**12):
+        # the exact tooth arithmetic runs in 64-bit integers; no stage comes near either end
+        raise TrainError(
+            f"ratio = {ratio!r}; valid is a ratio 1e-12 <= |ratio| <= 1e12 (one stage of "
+            "z <= 10^6 reaches far less)"
+        )
     return r
 
 

@@ -28,6 +28,7 @@ import numpy as np
 import shapely
 
 from gears import Gear
+from gears.arguments import min_tolerance
 from gears.cutter import ShaperCutter
 from gears.generate import rack_outline, shaper_outline
 from gears.profile import outline
@@ -82,7 +83,9 @@ def measure():
     rows = []
     for name, gear, fn, cutter, rep in cases():
         for tol in TOLERANCES:
-            ref = _ring(outline(gear, tol / 1000, cutter=cutter), gear.internal)
+            # the reference 1000 times finer, down to the finest tolerance honoured (1e-6 mm)
+            fine = max(tol / 1000, min_tolerance(gear.module))
+            ref = _ring(outline(gear, fine, cutter=cutter), gear.internal)
             ring = _ring(fn(gear, tol), gear.internal)
             dev = hausdorff(ring, ref)
             t = best_of(lambda fn=fn, gear=gear, tol=tol: fn(gear, tol), rep)
