@@ -644,3 +644,32 @@ def test_synthesize(args):
         report = cand.stage.check()
         no_nan(report)
         assert report["neighbour"].ok and report["assembly"].ok  # its own filters hold
+
+
+@sweep(40)
+@given(
+    args=arguments(
+        sun=st.integers(6, 60),
+        planet=st.integers(6, 60),
+        ring=st.integers(20, 200),
+        n_planets=st.integers(1, 6),
+        module=st.sampled_from([0.5, 1.0, 3.0]),
+        helix_angle=st.one_of(st.just(0.0), st.floats(-30, 30)),
+        clearance=st.sampled_from([0.0, 0.5, 2.0]),
+    ),
+    scheme=st.sampled_from(["simple", "simple", "stepped", "double-planet"]),
+    second=st.integers(6, 60),
+)
+def test_stage_check(args, scheme, second):
+    # Planetary(...) is a stage or a TrainError; its check() never raises, has no NaN
+    kw, bad = args
+    if scheme != "simple" and bad != "planet":
+        kw["planet"] = (kw["planet"], second)
+    stage = answer(lambda: Planetary(**kw, scheme=scheme), *named(bad), "mesh", "scheme")
+    if isinstance(stage, TrainError):
+        return
+    no_nan(answer(stage.check))
+    no_nan(answer(stage.train.check))
+    out = answer(lambda: (float(stage.ratio()), stage.efficiency()))
+    if not isinstance(out, ERRORS):
+        finite(*out)
