@@ -673,3 +673,27 @@ def test_stage_check(args, scheme, second):
     out = answer(lambda: (float(stage.ratio()), stage.efficiency()))
     if not isinstance(out, ERRORS):
         finite(*out)
+
+
+@sweep(20)
+@given(
+    args=arguments(
+        mesh_efficiency=st.one_of(st.none(), st.floats(0.5, 1.0)), friction=st.floats(0.0, 0.3)
+    ),
+    stage=st.sampled_from(STAGES[:2]),
+    a=st.one_of(st.floats(40.0, 90.0), BAD),
+    split=st.sampled_from(["equal_sliding", "proportional", "keep", "none"]),
+)
+def test_stage_efficiency_and_coaxial(args, stage, a, split):
+    kw, bad = args
+    eta = answer(lambda: stage.efficiency(**kw), *named(bad), "relation")
+    if not isinstance(eta, ERRORS):
+        finite(eta)
+    made_ = answer(
+        lambda: Planetary.coaxial(21, 43, 108, 3, module=1, center_distance=a, split=split),
+        "center_distance",
+        "split",
+        *DESIGN,
+    )
+    if not isinstance(made_, ERRORS):
+        no_nan(made_.check())

@@ -60,6 +60,7 @@ from gears.arguments import (
     check_frames,
     check_length,
     check_positive,
+    check_real,
     check_tolerance,
 )
 from gears.budget import check_budget
@@ -519,7 +520,10 @@ class Planetary:
             helix = ref.helix_angle * sign0[key0]
             pa = ref.pressure_angle
         else:
-            helix, pa = float(helix_angle), pressure_angle
+            try:
+                helix, pa = check_angle("helix_angle", helix_angle), pressure_angle
+            except GearError as exc:
+                raise TrainError(str(exc)) from None
         gears: dict[str, Gear] = {}
         for key, internal, hsign in _GEARS[self.scheme]:
             v = given[key]
@@ -644,7 +648,10 @@ class Planetary:
             return cls(sp.g1, planet_arg, pr.g2, n_planets, base.module, scheme=scheme, **kwargs)
 
         if center_distance is not None:
-            return build(float(center_distance))
+            try:
+                return build(check_real("center_distance", center_distance, 0.0))
+            except GearError as exc:
+                raise TrainError(str(exc)) from None
         m = base.module
         mean = (a1 + a2) / 2
         steps = np.arange(-150, 151) * 0.01 * m
@@ -824,7 +831,7 @@ class Planetary:
             None if input is None else self._member(input),
             None if output is None else self._member(output),
         )
-        etas = {} if mesh_efficiency is None else {n: float(mesh_efficiency) for n in self._pairs}
+        etas = {} if mesh_efficiency is None else {n: mesh_efficiency for n in self._pairs}
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
         flow = power_flow(self.train, name[input], name[output], fixed=[name[fixed]],
                           mesh_efficiency=etas,
