@@ -20,9 +20,12 @@ See ``docs/search.md``.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
+import os
 import sys
+import threading
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, CancelledError, ThreadPoolExecutor, wait
@@ -55,6 +58,8 @@ __all__ = [
     "dask_results",
     "estimate",
     "evaluate_chunk",
+    "in_kept_heap",
+    "kept_heap",
     "pairs",
     "write_table",
 ]
@@ -773,6 +778,71 @@ def dask_client(client, timeout: float | None = None):
         except (ValueError, ImportError):
             return None
     return None
+
+
+_HEAP = {"lock": None, "active": 0}
+
+
+@contextlib.contextmanager
+def kept_heap():
+    """Keep freed memory in this process's heap while the block runs, then give it back.
+
+    Dask's nannies start workers with ``MALLOC_TRIM_THRESHOLD_=65536``: glibc then returns each
+    free block over 64 kB to the system at once and maps each allocation over 128 kB afresh, so
+    every numpy temporary of a chunk costs page faults (a gearbox sizing chunk ran 1.6-3x
+    slower on a worker than in the client, docs/performance.md). Inside, the thresholds are
+    raised (``mallopt``: trim 1 GiB, mmap 32 MiB); when the last such block of the process ends
+    they are set back to the environment's values and the heap is trimmed (``malloc_trim``),
+    so between tasks the worker's memory is as it asked. Does nothing without that setting or
+    where the C library is not glibc.
+    """
+    trim = os.environ.get("MALLOC_TRIM_THRESHOLD_")
+    libc = _glibc() if trim is not None else None
+    if libc is None:
+        yield
+        return
+    if _HEAP["lock"] is None:
+        _HEAP["lock"] = threading.Lock()
+    with _HEAP["lock"]:
+        if _HEAP["active"] == 0:
+            libc.mallopt(_M_TRIM_THRESHOLD, 1 << 30)
+            libc.mallopt(_M_MMAP_THRESHOLD, 1 << 25)
+        _HEAP["active"] += 1
+    try:
+        yield
+    finally:
+        with _HEAP["lock"]:
+            _HEAP["active"] -= 1
+            if _HEAP["active"] == 0:
+                libc.mallopt(_M_TRIM_THRESHOLD, int(trim))
+                mmap = os.environ.get("MALLOC_MMAP_THRESHOLD_", str(128 * 1024))
+                libc.mallopt(_M_MMAP_THRESHOLD, int(mmap))
+                libc.malloc_trim(0)
+
+
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3  # glibc's mallopt parameters
+
+
+def _glibc():
+    """The C library when it is glibc (it has mallopt and malloc_trim), else None."""
+    import ctypes
+    import ctypes.util
+
+    if not sys.platform.startswith("linux"):
+        return None
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        libc.mallopt  # noqa: B018 - glibc has both
+        libc.malloc_trim  # noqa: B018
+    except (OSError, AttributeError):
+        return None
+    return libc
+
+
+def in_kept_heap(fn: Callable, *args):
+    """``fn(*args)`` inside :func:`kept_heap` (a Dask task that runs numpy on large blocks)."""
+    with kept_heap():
+        return fn(*args)
 
 
 def dask_results(client, pending: set, timeout: float | None = None):

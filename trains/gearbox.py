@@ -39,6 +39,7 @@ import itertools
 import math
 import numbers
 import time
+import uuid
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -49,7 +50,7 @@ import numpy as np
 
 from gears.errors import GearError
 from gears.meshing import default_threads
-from gears.search import dask_client, dask_results, progress_callback
+from gears.search import dask_client, dask_results, in_kept_heap, progress_callback
 from gears.sizing import ISO54, load_case
 from trains.errors import TrainError
 from trains.planetary import SCHEMES, canonical_scheme
@@ -77,8 +78,7 @@ SIZING_CHUNK = 4096
 COMBINATIONS = 200_000
 #: tooth-count sets per stage-set task at least (smaller blocks cost more than they save)
 MIN_SETS = 4096
-#: (stage, module, width) rows a rating call takes on a Dask worker and on a local thread
-WORKER_BLOCK = 8192
+#: (stage, module, width) rows a rating call takes
 LOCAL_BLOCK = 1 << 16
 _ALPHABET = {s: i for i, s in enumerate(sorted(SCHEMES))}  # ident order: scheme names sorted
 
@@ -355,7 +355,9 @@ class _Runner:
             return []
         results: list = [None] * len(args)
         if self.client is not None:
-            futures = {self.client.submit(fn, *a, pure=False): i for i, a in enumerate(args)}
+            name = fn.__name__.strip("_").replace("_", "-")  # the dashboard's task name
+            futures = {self.client.submit(in_kept_heap, fn, *a, key=f"{name}-{uuid.uuid4().hex}"):
+                       i for i, a in enumerate(args)}  # fmt: skip
             try:
                 for fut, value in dask_results(self.client, set(futures)):
                     results[futures[fut]] = value
@@ -763,9 +765,7 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
     design = {f: np.zeros(stage_ids.size) for f in fields}
     design["ok"] = np.zeros(stage_ids.size, bool)
     scheme = pool["scheme"][stage_ids]
-    # a Dask worker returns every temporary over 64 kB to the system at once
-    # (MALLOC_TRIM_THRESHOLD_): small rating calls there, large ones on local threads
-    block = WORKER_BLOCK if runner.client is not None else LOCAL_BLOCK
+    block = LOCAL_BLOCK  # the tasks keep their heap on Dask workers too (kept_heap)
     args, where = [], []
     for code in np.unique(scheme):
         rows = np.flatnonzero(scheme == code)
@@ -872,9 +872,7 @@ def _score_order(t: dict, c: np.ndarray, err: np.ndarray, objective: str, rated:
     """The order of combinations ``c`` (table rows, one column per place) by score: the
     objective, its tie-breakers, the ratio error, then each stage's identity (scheme name,
     teeth, planets), as the unrated search always ranked."""
-    head = _head(objective, rated, t["ring"][c].max(axis=1), t["total"][c].sum(axis=1),
-                 t["volume"][c].sum(axis=1), t["mass"][c].sum(axis=1),
-                 np.prod(t["eta"][c], axis=1))  # fmt: skip
+    head = _head(objective, rated, *_columns(t, c))
     ident = []
     for j in range(c.shape[1]):
         cj = c[:, j]
@@ -887,14 +885,42 @@ def _combine_task(t: dict, lists: dict, key_tuples: list, errors: list, objectiv
     """The best ``keep`` combinations of a chunk of key tuples (a task): each tuple's lists
     crossed, scored, reduced. ``t`` holds only the chunk's rows; returns their ``row`` ids
     (an (n, k) array) and the combinations' ratio errors, in score order."""
-    combos, errs = [], []
-    for kt, err in zip(key_tuples, errors, strict=True):
-        grids = np.meshgrid(*(lists[i] for i in kt), indexing="ij")
-        combos.append(np.stack([g.ravel() for g in grids], axis=1))
-        errs.append(np.full(combos[-1].shape[0], err))
-    c, err = np.concatenate(combos), np.concatenate(errs)
+    c, tuple_of = _cross(lists, key_tuples)
+    err = np.asarray(errors, float)[tuple_of]
+    if len(c) > 2 * keep:  # only rows that can reach the best `keep` by the first key
+        first = _head(objective, rated, *_columns(t, c))[0]
+        near = first <= np.partition(first, keep - 1)[keep - 1]
+        c, err = c[near], err[near]
     order = _score_order(t, c, err, objective, rated)[:keep]
     return t["row"][c[order]], err[order]
+
+
+def _cross(lists: dict, key_tuples: list) -> tuple[np.ndarray, np.ndarray]:
+    """Every combination of each key tuple's lists (the rows per place, an (n, k) array), and
+    the index of the tuple each came from: all tuples at once, by mixed-radix counting."""
+    k = len(key_tuples[0])
+    keys = sorted({i for kt in key_tuples for i in kt})
+    flat = np.concatenate([lists[i] for i in keys])
+    sizes = np.array([len(lists[i]) for i in keys])
+    start = dict(zip(keys, np.concatenate([[0], np.cumsum(sizes)[:-1]]).tolist(), strict=True))
+    size = dict(zip(keys, sizes.tolist(), strict=True))
+    radix = np.array([[size[i] for i in kt] for kt in key_tuples], np.int64)  # (T, k)
+    base = np.array([[start[i] for i in kt] for kt in key_tuples], np.int64)
+    count = radix.prod(axis=1)
+    tuple_of = np.repeat(np.arange(len(key_tuples)), count)
+    local = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
+    out = np.empty((local.size, k), np.int64)
+    for j in range(k - 1, -1, -1):  # the last place counts fastest
+        r = radix[tuple_of, j]
+        out[:, j] = flat[base[tuple_of, j] + local % r]
+        local = local // r
+    return out, tuple_of
+
+
+def _columns(t: dict, c: np.ndarray) -> tuple:
+    """``(ring, teeth, volume, mass, efficiency)`` of combinations ``c``."""
+    return (t["ring"][c].max(axis=1), t["total"][c].sum(axis=1), t["volume"][c].sum(axis=1),
+            t["mass"][c].sum(axis=1), np.prod(t["eta"][c], axis=1))  # fmt: skip
 
 
 def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, names,

@@ -80,22 +80,33 @@ def main() -> None:
 
     from distributed import Client, LocalCluster
 
-    kw = dict(GEARBOX, schemes=("simple", "stepped"), z_max=150)
-    dask = {}
+    cases = {
+        "rated 1:20, simple+stepped, z <= 150": dict(GEARBOX, schemes=("simple", "stepped"),
+                                                     z_max=150),
+        "rated 1:20, simple+stepped, z <= 200": dict(GEARBOX, schemes=("simple", "stepped"),
+                                                     z_max=200),
+        "unrated 1:37, simple+stepped, z <= 150": dict(ratio=37, stages=2, z_max=150,
+                                                       schemes=("simple", "stepped"),
+                                                       progress=False),
+    }  # fmt: skip
+    dask = {name: {} for name in cases}
     for workers in (1, 2):
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                dashboard_address=None)  # fmt: skip
         with cluster, Client(cluster) as client:
-            synthesize_gearbox(**dict(kw, z_max=100), client=client)  # warm the workers
-            t, g = best_of(lambda c=client: synthesize_gearbox(**kw, client=c))
-        dask[workers] = t
-        print(f"gearbox on a LocalCluster of {workers} worker process(es): {t:.2f} s, "
-              f"{g.tasks} tasks")  # fmt: skip
-    eff = dask[1] / (2 * dask[2])
-    t_local, _ = best_of(lambda: synthesize_gearbox(**kw, client=False))
-    print(f"scaling efficiency 1 -> 2 workers: {eff:.2f} (local threads: {t_local:.2f} s)")
-    results["dask"] = {"workers_1_s": dask[1], "workers_2_s": dask[2], "efficiency": eff,
-                       "local_s": t_local}  # fmt: skip
+            synthesize_gearbox(**dict(GEARBOX, z_max=100), client=client)  # warm the workers
+            for name, kw in cases.items():
+                t, g = best_of(lambda c=client, kw=kw: synthesize_gearbox(**kw, client=c))
+                dask[name][workers] = t
+                print(f"{name} on a LocalCluster of {workers} worker process(es): {t:.2f} s, "
+                      f"{g.tasks} tasks")  # fmt: skip
+    for name, kw in cases.items():
+        t_local, _ = best_of(lambda kw=kw: synthesize_gearbox(**kw, client=False))
+        eff = dask[name][1] / (2 * dask[name][2])
+        dask[name].update(local_s=t_local, efficiency=eff)
+        print(f"{name}: scaling efficiency 1 -> 2 workers {eff:.2f}; local threads "
+              f"{t_local:.2f} s, 2 workers {dask[name][2]:.2f} s")  # fmt: skip
+    results["dask"] = {k: {str(w): v for w, v in d.items()} for k, d in dask.items()}
     results["load_after"] = os.getloadavg()
     print(load())
     path = pathlib.Path(__file__).parent / "results" / "load.json"

@@ -200,7 +200,7 @@ def test_local_threads_and_a_cluster_give_the_same_gearboxes():
                       dashboard_address=None) as cluster, Client(cluster) as client:  # fmt: skip
         with get_task_stream(client) as stream:
             remote = synthesize_gearbox(**kw, client=client)
-        blocks = [t for t in stream.data if "stage_block" in str(t["key"])]
+        blocks = [t for t in stream.data if "stage-block" in str(t["key"])]
     for a, b in ((one, two), (one, remote)):
         assert [str(g) for g in a] == [str(g) for g in b] and len(a) == 5
         for g, h in zip(a, b, strict=True):
@@ -309,3 +309,20 @@ def test_command_line_sizes_gearboxes_locally_and_on_a_scheduler(tmp_path, capsy
     assert "--torque apply to gearboxes" in capsys.readouterr().err
     assert main(["synthesize", "--ratio", "12", "--stages", "2", "--quality", "5"]) == 2
     assert "--quality" in capsys.readouterr().err
+
+
+def test_kept_heap_on_a_worker_restores_itself(monkeypatch):
+    # a Dask worker's nanny sets MALLOC_TRIM_THRESHOLD_; the tasks keep their heap while they
+    # run (glibc mallopt) and give it back after: nested and repeated blocks balance out
+    from gears import search
+
+    monkeypatch.setenv("MALLOC_TRIM_THRESHOLD_", "65536")
+    with search.kept_heap():
+        with search.kept_heap():
+            assert search._HEAP["active"] == 2 or search._glibc() is None
+        x = np.arange(10**6).sum()
+    assert search._HEAP["active"] == 0 and x == 499999500000
+    assert search.in_kept_heap(sum, [1, 2, 3]) == 6
+    monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_")
+    with search.kept_heap():  # without the setting: nothing to do
+        assert search._HEAP["active"] == 0
