@@ -28,7 +28,9 @@ from gears.arguments import (
     check_fps,
     check_frames,
     check_length,
+    check_module,
     check_positive,
+    check_pressure_angle,
     check_tolerance,
 )
 from gears.budget import check_budget
@@ -94,12 +96,15 @@ class Rack:
     addendum: float = 1.0
 
     def __post_init__(self) -> None:
-        if not (isinstance(self.module, int | float) and self.module > 0):
-            raise GearError(f"rack module = {self.module!r}; valid is > 0")
-        if not 0 < self.pressure_angle < 45:
-            raise GearError(f"rack pressure_angle = {self.pressure_angle}; valid is 0 < a < 45")
-        if not -60 < self.helix_angle < 60:
-            raise GearError(f"rack helix_angle = {self.helix_angle}; valid is -60 < b < 60")
+        set_ = object.__setattr__
+        set_(self, "module", check_module(self.module, "rack module"))
+        set_(
+            self, "pressure_angle", check_pressure_angle(self.pressure_angle, "rack pressure_angle")
+        )
+        set_(self, "helix_angle", check_real("rack helix_angle", self.helix_angle, -60.0, 60.0))
+        if self.face_width is not None:
+            set_(self, "face_width", check_positive("rack face_width", self.face_width))
+        set_(self, "addendum", check_real("rack addendum", self.addendum, 0.0, 10.0))
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,7 @@ import shapely
 from hypothesis import HealthCheck, assume, event, given, settings
 from hypothesis import strategies as st
 
-from gears import BasicRack, Gear, GearError, GearPair, gear_margins, pair_margins
+from gears import BasicRack, Gear, GearError, GearPair, Rack, gear_margins, pair_margins
 from gears.report import Report
 from trains import Planetary, Train, TrainError, power_flow, synthesize, synthesize_gearbox
 
@@ -240,6 +240,38 @@ def test_pair_check_and_centre_distance(gears, split):
     )
     if not isinstance(other, GearError):
         no_nan(answer(other.check))
+
+
+@sweep(60)
+@given(
+    args=arguments(
+        pressure_angle=st.sampled_from([20.0, 25.0]),
+        face_width=st.floats(1, 40),
+        addendum=st.sampled_from([0.8, 1.0, 1.25]),
+    ),
+    z=st.integers(3, 80),
+    x=shift,
+    beta=helix,
+)
+def test_pinion_and_rack(args, z, x, beta):
+    kw, bad = args
+    rack = answer(lambda: Rack(1.5, helix_angle=-beta, **kw), *named(bad))
+    if isinstance(rack, GearError):
+        return
+    pinion = made(
+        {
+            "teeth": z,
+            "module": 1.5,
+            "pressure_angle": rack.pressure_angle,
+            "helix_angle": beta,
+            "profile_shift": x,
+        }
+    )
+    assume(pinion is not None)
+    pair = answer(lambda: GearPair(pinion, rack))
+    if isinstance(pair, GearError):
+        return
+    no_nan(answer(pair.check))
 
 
 @sweep(120)
