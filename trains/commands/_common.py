@@ -325,10 +325,11 @@ PAIR_NAMES = {
 SPLITS = ("equal_sliding", "proportional", "keep")
 
 
-def pair_arguments(parser: argparse.ArgumentParser) -> None:
-    """The options that describe one pair (those of ``pair``, used by ``rate``): Z1, Z2,
-    ``--module``, ``--shift X1 X2``, ``--internal``, ``--helix``, ``--pressure-angle``,
-    ``--face-width``, ``--center-distance`` and ``--split`` (built by :func:`build_pair`)."""
+def pair_arguments(parser: argparse.ArgumentParser, face_width_help: str) -> None:
+    """The options that describe one pair (``pair``, ``rate``): Z1, Z2, ``--module``,
+    ``--shift X1 X2``, ``--internal``, ``--helix``, ``--pressure-angle``, ``--face-width`` (its
+    help saying what the command uses it for), ``--center-distance`` and ``--split`` (built by
+    :func:`build_pair`)."""
     parser.add_argument("z1", type=integer("Z1"), metavar="Z1", help="teeth of gear 1 (pinion)")
     parser.add_argument(
         "z2", type=integer("Z2"), metavar="Z2", help="teeth of gear 2 (the ring with --internal)"
@@ -351,7 +352,7 @@ def pair_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     parser.add_argument(
         "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
-        help="face width in mm (needed for the overlap ratio of a helical pair and a rating)",
+        help=face_width_help,
     )  # fmt: skip
     parser.add_argument(
         "--center-distance", type=positive("--center-distance", "mm"), default=None, metavar="A",
@@ -378,12 +379,151 @@ def build_pair(args: argparse.Namespace):
     if args.center_distance is not None:
         split = args.split or "equal_sliding"
         return GearPair.at_center_distance(g1, g2, args.center_distance, split=split)
-    if args.split is not None:
-        from trains.errors import TrainError
+    refuse_split_alone(args)
+    return GearPair(g1, g2)
 
+
+def refuse_split_alone(args: argparse.Namespace) -> None:
+    """A TrainError (exit 2) for ``--split`` without the ``--center-distance`` it divides."""
+    from trains.errors import TrainError
+
+    if args.split is not None and args.center_distance is None:
         raise TrainError("--split divides the shift sum a --center-distance needs: it applies "
                          "with --center-distance only")  # fmt: skip
-    return GearPair(g1, g2)
+
+
+#: the library's names for a bevel pair's fields -> the options of bevel_arguments
+BEVEL_NAMES = {
+    "module": "--module",
+    "face_width": "--face-width",
+    "pressure_angle": "--pressure-angle",
+    "profile_shift": "--shift",
+}
+
+
+def bevel_arguments(
+    parser: argparse.ArgumentParser, module: float, face_width_help: str, shift_help: str,
+    shaft_angle: bool,
+) -> None:  # fmt: skip
+    """The options of a straight bevel pair (``bevel``, ``differential``): ``--module`` m_et
+    (default ``module``), ``--face-width`` (default R_e / 3.5), ``--shaft-angle`` (when
+    ``shaft_angle``), ``--pressure-angle`` and ``--shift`` x_hm of the pinion."""
+    parser.add_argument(
+        "--module", "-m", type=positive("--module", "mm"), default=module,
+        help="outer transverse module m_et, mm",
+    )  # fmt: skip
+    parser.add_argument(
+        "--face-width", "-b", type=positive("--face-width", "mm"), default=None,
+        help=face_width_help,
+    )  # fmt: skip
+    if shaft_angle:
+        parser.add_argument(
+            "--shaft-angle", type=bounded("--shaft-angle", 0, 180, low_open=True,
+                                          high_open=True, unit="deg"),
+            default=90.0, help="angle between the axes, deg",
+        )  # fmt: skip
+    parser.add_argument(
+        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
+        help="pressure angle of the generating crown gear, deg",
+    )  # fmt: skip
+    parser.add_argument("--shift", "-x", type=finite("--shift"), default=0.0, help=shift_help)
+
+
+# --- a design drawn in 3D (--scene) and animated (--animate) --------------------------------
+
+#: what an animation can be written as (matplotlib's writers)
+ANIMATION_FORMATS = (".gif", ".mp4")
+
+#: the --tolerance of --animate by default, mm (a picture needs less than a 3D file)
+ANIMATION_TOLERANCE = 0.05
+
+#: the library's names in drawing errors -> the options of drawing_arguments
+DRAWING_NAMES = {"tolerance": "--tolerance", "frames": "--frames"}
+
+
+def scene_argument(parser: argparse.ArgumentParser, what: str) -> None:
+    """``--scene FILE``: also write ``what`` in 3D (see :func:`write_scene`)."""
+    parser.add_argument(
+        "--scene", type=output_file(SCENE_FORMATS, "--scene"), default=None, metavar="FILE",
+        help=f"also write {what} in 3D ({' '.join(SCENE_FORMATS)})",
+    )  # fmt: skip
+
+
+def drawing_arguments(
+    parser: argparse.ArgumentParser, scene: str, animate: str, frames: int, tolerance: float
+) -> None:
+    """``--scene FILE`` (``scene`` in 3D), ``--animate FILE`` (``animate``), ``--frames N`` and
+    ``--tolerance`` of the 3D teeth; ``frames`` and ``tolerance`` (of ``--scene``) are the
+    defaults the help shows, the same the command gives :func:`write_animation` and
+    :func:`write_scene`. :func:`refuse_undrawn` refuses them without their file."""
+    scene_argument(parser, scene)
+    parser.add_argument(
+        "--animate", type=output_file(ANIMATION_FORMATS, "--animate"), default=None,
+        metavar="FILE", help=f"also write {animate} ({' '.join(ANIMATION_FORMATS)})",
+    )  # fmt: skip
+    parser.add_argument(
+        "--frames", type=integer("--frames"), default=None, metavar="N",
+        help=f"frames of --animate (default: {frames})",
+    )  # fmt: skip
+    parser.add_argument(
+        "--tolerance", type=positive("--tolerance", "mm"), default=None,
+        help=f"largest deviation of the 3D teeth from the exact ones, mm (default: {tolerance:g} "
+        f"for --scene, {ANIMATION_TOLERANCE:g} for --animate)",
+    )  # fmt: skip
+
+
+def refuse_undrawn(
+    args: argparse.Namespace, drawing: tuple[str, ...] = ("--tolerance",),
+    scene: tuple[str, ...] = (),
+) -> None:  # fmt: skip
+    """A TrainError (exit 2) for an option of :func:`drawing_arguments` given without its file:
+    each option of ``drawing`` without ``--scene`` or ``--animate``, then each of ``scene``
+    without ``--scene``, then ``--frames`` without ``--animate``. An option counts as given when
+    it is neither None nor 0 (the defaults)."""
+    from trains.errors import TrainError
+
+    def given(option: str) -> bool:
+        return bool(getattr(args, option[2:].replace("-", "_")))
+
+    for option in drawing:
+        if given(option) and args.scene is None and args.animate is None:
+            raise TrainError(f"{option} applies with --scene or --animate only")
+    for option in scene:
+        if given(option) and args.scene is None:
+            raise TrainError(f"{option} applies with --scene only")
+    if args.frames is not None and args.animate is None:
+        raise TrainError("--frames counts the frames of --animate: it applies with --animate only")
+
+
+def write_scene(
+    args: argparse.Namespace, make: Callable[[float], object], tolerance: float,
+    note: Callable[[object, float], str],
+) -> None:  # fmt: skip
+    """With ``--scene``: the scene ``make(tolerance)`` at ``--tolerance`` (default
+    ``tolerance``) written to that file, and a line naming it and ``note(scene, tolerance)``."""
+    if args.scene is None:
+        return
+    from gears.export import save
+
+    tol = tolerance if args.tolerance is None else args.tolerance
+    scene = make(tol)
+    save(args.scene, scene)
+    print(f"\nwrote {args.scene} ({note(scene, tol)})")
+
+
+def write_animation(
+    args: argparse.Namespace, animate: Callable[..., object], frames: int, note: str
+) -> None:
+    """With ``--animate``: ``animate(file, frames=, tolerance=, progress=)`` at ``--frames``
+    (default ``frames``) and ``--tolerance`` (default :data:`ANIMATION_TOLERANCE`) with a
+    progress bar, and a line naming the file, the frames and ``note``."""
+    if args.animate is None:
+        return
+    tol = ANIMATION_TOLERANCE if args.tolerance is None else args.tolerance
+    n = frames if args.frames is None else args.frames
+    with progress_bar("frames", n) as bar:
+        animate(args.animate, frames=n, tolerance=tol, progress=bar)
+    print(f"wrote {args.animate} ({n} frames{note})")
 
 
 #: the library's names in rating errors -> the options of rating_arguments

@@ -19,15 +19,19 @@ from __future__ import annotations
 import argparse
 
 from trains.commands._common import (
+    BEVEL_NAMES,
     CHECK_FAILED,
+    DRAWING_NAMES,
     OK,
-    SCENE_FORMATS,
-    bounded,
+    bevel_arguments,
+    drawing_arguments,
     finite,
     integer,
     non_negative,
-    output_file,
     positive,
+    refuse_undrawn,
+    write_animation,
+    write_scene,
 )
 
 HELP = "check a straight bevel pair (Z1 Z2) and print its geometry and report; 3D scene"
@@ -35,44 +39,27 @@ HELP = "check a straight bevel pair (Z1 Z2) and print its geometry and report; 3
 NAMES = {
     "z1": "Z1",
     "z2": "Z2",
-    "module": "--module",
-    "face_width": "--face-width",
+    **BEVEL_NAMES,
     "shaft_angle": "--shaft-angle",
-    "pressure_angle": "--pressure-angle",
-    "profile_shift": "--shift",
     "thickness_modification": "--thickness-mod",
     "tool_radius": "--tool-radius",
-    "tolerance": "--tolerance",
     "backlash": "--backlash",
     "bore": "--bore",
-    "frames": "--frames",
+    **DRAWING_NAMES,
 }
 """The library's names in error messages -> this command's options (see trains.cli)."""
+
+#: the defaults of --frames and of --tolerance for --scene (mm)
+FRAMES, SCENE_TOLERANCE = 24, 0.01
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("z1", type=integer("Z1"), metavar="Z1", help="teeth of the pinion")
     parser.add_argument("z2", type=integer("Z2"), metavar="Z2", help="teeth of the wheel")
-    parser.add_argument(
-        "--module", "-m", type=positive("--module", "mm"), default=1.0,
-        help="outer transverse module m_et, mm",
-    )  # fmt: skip
-    parser.add_argument(
-        "--face-width", "-b", type=positive("--face-width", "mm"), default=None,
-        help="face width along the pitch cone, mm (default: R_e / 3.5)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--shaft-angle", type=bounded("--shaft-angle", 0, 180, low_open=True, high_open=True,
-                                      unit="deg"),
-        default=90.0, help="angle between the axes, deg",
-    )  # fmt: skip
-    parser.add_argument(
-        "--pressure-angle", type=finite("--pressure-angle"), default=20.0,
-        help="pressure angle of the generating crown gear, deg",
-    )  # fmt: skip
-    parser.add_argument(
-        "--shift", "-x", type=finite("--shift"), default=0.0,
-        help="the pinion's profile shift x_hm (the wheel gets its negative)",
+    bevel_arguments(
+        parser, module=1.0, shaft_angle=True,
+        face_width_help="face width along the pitch cone, mm (default: R_e / 3.5)",
+        shift_help="the pinion's profile shift x_hm (the wheel gets its negative)",
     )  # fmt: skip
     parser.add_argument(
         "--thickness-mod", type=finite("--thickness-mod"), default=0.0,
@@ -95,23 +82,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--tool-radius", type=non_negative("--tool-radius", "mean modules"), default=None,
         help="tip radius of the generating crown gear (default: the full round of the clearance)",
     )  # fmt: skip
-    parser.add_argument(
-        "--scene", type=output_file(SCENE_FORMATS, "--scene"), default=None, metavar="FILE",
-        help="also write the pair in 3D (.glb .3mf .stl .obj .ply)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--animate", type=output_file((".gif", ".mp4"), "--animate"), default=None,
-        metavar="FILE", help="also write the pair turning by one pitch of the pinion (.gif .mp4)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--frames", type=integer("--frames"), default=None, metavar="N",
-        help="frames of --animate (default: 24)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--tolerance", type=positive("--tolerance", "mm"), default=None,
-        help="largest deviation of the 3D teeth from the exact ones, mm (default: 0.01 for "
-        "--scene, 0.05 for --animate)",
-    )  # fmt: skip
+    drawing_arguments(parser, "the pair", "the pair turning by one pitch of the pinion", FRAMES,
+                      SCENE_TOLERANCE)  # fmt: skip
     parser.add_argument(
         "--backlash", type=non_negative("--backlash", "mm"), default=0.0,
         help="normal backlash of the --scene pair at the mean cone, mm (each gear takes half)",
@@ -126,14 +98,7 @@ def run(args: argparse.Namespace) -> int:
     from gears import BevelPair
     from trains.errors import TrainError
 
-    drawing = args.scene is not None or args.animate is not None
-    for given, what in ((args.tolerance, "--tolerance"), (args.bore, "--bore")):
-        if given is not None and not drawing:
-            raise TrainError(f"{what} applies with --scene or --animate only")
-    if args.backlash and args.scene is None:
-        raise TrainError("--backlash applies with --scene only")
-    if args.frames is not None and args.animate is None:
-        raise TrainError("--frames counts the frames of --animate: it applies with --animate only")
+    refuse_undrawn(args, drawing=("--tolerance", "--bore"), scene=("--backlash",))
     if args.gleason and (args.shift or args.clearance != "constant"):
         raise TrainError("--gleason sets the shift and the clearance: give neither with it")
     face = args.face_width
@@ -153,21 +118,11 @@ def run(args: argparse.Namespace) -> int:
     report = pair.check()
     print(pair.describe())
     print(report)
-    if args.scene is not None:
-        from gears.export import save
-
-        tol = 0.01 if args.tolerance is None else args.tolerance
-        sc = pair.scene(tolerance=tol, backlash=args.backlash, bore=args.bore)
-        save(args.scene, sc)
-        faces = sum(len(g.faces) for g in sc.geometry.values())
-        print(f"\nwrote {args.scene} (common apex, shaft angle {pair.shaft_angle:g} deg, "
-              f"{faces} triangles, tolerance {tol:g} mm)")  # fmt: skip
-    if args.animate is not None:
-        tol = 0.05 if args.tolerance is None else args.tolerance
-        frames = 24 if args.frames is None else args.frames
-        from trains.commands._common import progress_bar
-
-        with progress_bar("frames", frames) as bar:
-            pair.animate(args.animate, frames=frames, tolerance=tol, progress=bar)
-        print(f"wrote {args.animate} ({frames} frames: the pinion turning by one pitch)")
+    write_scene(
+        args, lambda tol: pair.scene(tolerance=tol, backlash=args.backlash, bore=args.bore),
+        SCENE_TOLERANCE,
+        lambda sc, tol: f"common apex, shaft angle {pair.shaft_angle:g} deg, "
+        f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
+    )  # fmt: skip
+    write_animation(args, pair.animate, FRAMES, ": the pinion turning by one pitch")
     return OK if report.ok else CHECK_FAILED

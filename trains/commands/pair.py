@@ -21,13 +21,15 @@ from typing import TYPE_CHECKING
 from trains.commands._common import (
     CHECK_FAILED,
     OK,
-    SCENE_FORMATS,
+    PAIR_NAMES,
     bounded,
-    finite,
-    integer,
+    build_pair,
     non_negative,
-    output_file,
+    pair_arguments,
     positive,
+    refuse_split_alone,
+    scene_argument,
+    write_scene,
 )
 
 if TYPE_CHECKING:
@@ -36,23 +38,8 @@ if TYPE_CHECKING:
 HELP = "geometry, contact ratios and checks of a gear pair (external, internal, helical)"
 
 
-SPLITS = ("equal_sliding", "proportional", "keep")
-
 NAMES = {
-    r"split\s*=\s*'(\w+)'": r"--split \1",
-    "x1": "X1",
-    "x2": "X2",
-    "z1": "Z1",
-    "z2": "Z2",
-    "g1": "gear 1",
-    "g2": "gear 2",
-    "profile_shift": "--shift",
-    "module": "--module",
-    "pressure_angle": "--pressure-angle",
-    "helix_angle": "--helix",
-    "face_width": "--face-width",
-    "center_distance": "--center-distance",
-    "at_center_distance": "--center-distance",
+    **PAIR_NAMES,
     "min_contact_ratio": "--min-contact-ratio",
     "min_tip_land": "--min-tip-land",
     "friction": "--friction",
@@ -61,40 +48,11 @@ NAMES = {
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("z1", type=integer("Z1"), metavar="Z1", help="teeth of gear 1 (pinion)")
-    parser.add_argument(
-        "z2", type=integer("Z2"), metavar="Z2", help="teeth of gear 2 (the ring with --internal)"
+    pair_arguments(
+        parser,
+        face_width_help="face width in mm: the overlap ratio of a helical pair, the gears of "
+        "--scene (default there: 10 modules)",
     )
-    parser.add_argument(
-        "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
-    )
-    parser.add_argument(
-        "--shift", "-x", type=finite("--shift"), nargs=2, default=(0.0, 0.0), metavar=("X1", "X2"),
-        help="profile-shift coefficients of gear 1 and gear 2",
-    )  # fmt: skip
-    parser.add_argument("--internal", action="store_true", help="gear 2 is an internal ring")
-    parser.add_argument(
-        "--helix", type=finite("--helix"), default=0.0, metavar="BETA",
-        help="helix angle of gear 1 in degrees (+ right hand); gear 2 gets the mating hand",
-    )  # fmt: skip
-    parser.add_argument(
-        "--pressure-angle", type=finite("--pressure-angle"), default=20.0, metavar="ALPHA",
-        help="normal pressure angle in degrees",
-    )  # fmt: skip
-    parser.add_argument(
-        "--face-width", type=positive("--face-width", "mm"), default=None, metavar="B",
-        help="face width in mm: the overlap ratio of a helical pair, the gears of --scene "
-        "(default there: 10 modules)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--center-distance", type=positive("--center-distance", "mm"), default=None, metavar="A",
-        help="working centre distance in mm: the shifts follow from it (overrides --shift X2)",
-    )  # fmt: skip
-    parser.add_argument(
-        "--split", choices=SPLITS, default=None,
-        help="with --center-distance: how it divides the shift sum ('keep' keeps X1 of --shift; "
-        "default equal_sliding)",
-    )  # fmt: skip
     parser.add_argument(
         "--min-contact-ratio", type=non_negative("--min-contact-ratio"), default=1.1,
         help="required transverse contact ratio",
@@ -107,40 +65,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--friction", type=bounded("--friction", 0, 1, high_open=True), default=0.1,
         help="friction coefficient for the mesh efficiency",
     )  # fmt: skip
-    parser.add_argument(
-        "--scene", type=output_file(SCENE_FORMATS, "--scene"), default=None, metavar="FILE",
-        help="also write both gears in mesh in 3D (.glb .3mf .stl .obj .ply)",
-    )  # fmt: skip
+    scene_argument(parser, "both gears in mesh")
     parser.add_argument(
         "--tolerance", type=positive("--tolerance", "mm"), default=None,
         help="mesh tolerance of --scene, mm (default 0.02)",
     )  # fmt: skip
 
 
-def build_pair(args: argparse.Namespace) -> GearPair:
-    """The :class:`GearPair` the arguments describe."""
-    from gears import Gear, GearPair
-
-    x1, x2 = args.shift
-    beta = args.helix
-    g1 = Gear(args.z1, args.module, args.pressure_angle, beta, x1, args.face_width, internal=False)
-    g2 = Gear(
-        args.z2, args.module, args.pressure_angle, beta if args.internal else -beta, x2,
-        args.face_width, internal=args.internal,
-    )  # fmt: skip
-    if args.center_distance is not None:
-        split = args.split or "equal_sliding"
-        return GearPair.at_center_distance(g1, g2, args.center_distance, split=split)
-    return GearPair(g1, g2)
-
-
 def refuse_unused(args: argparse.Namespace) -> None:
     """A TrainError (exit 2) for an option that means nothing for this pair."""
     from trains.errors import TrainError
 
-    if args.split is not None and args.center_distance is None:
-        raise TrainError("--split divides the shift sum a --center-distance needs: it applies "
-                         "with --center-distance only")  # fmt: skip
+    refuse_split_alone(args)
     if args.tolerance is not None and args.scene is None:
         raise TrainError("--tolerance is the mesh tolerance of --scene: it applies with --scene "
                          "only")  # fmt: skip
@@ -244,10 +180,6 @@ def run(args: argparse.Namespace) -> int:
     )
     print()
     print(pair_report(pair, args.min_contact_ratio, args.min_tip_land, args.friction))
-    if args.scene is not None:
-        from gears.export import save
-
-        tolerance = 0.02 if args.tolerance is None else args.tolerance
-        save(args.scene, pair.scene(tolerance=tolerance))
-        print(f"\nwrote {args.scene} (both gears in mesh, tolerance {tolerance:g} mm)")
+    write_scene(args, lambda tol: pair.scene(tolerance=tol), 0.02,
+                lambda _, tol: f"both gears in mesh, tolerance {tol:g} mm")  # fmt: skip
     return OK if ok else CHECK_FAILED

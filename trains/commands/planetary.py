@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 
 from trains.commands._common import (
+    ANIMATION_FORMATS,
     CHECK_FAILED,
     OK,
     RATING_NAMES,
@@ -29,6 +30,7 @@ from trains.commands._common import (
     rating_given,
     rating_minimums,
     rating_options,
+    write_scene,
 )
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
@@ -83,7 +85,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="also write the stage in 3D, planets phased and instanced (.glb .3mf .stl .obj .ply)",
     )  # fmt: skip
     parser.add_argument(
-        "--animate", type=output_file((".gif", ".mp4"), "--animate"), default=None,
+        "--animate", type=output_file(ANIMATION_FORMATS, "--animate"), default=None,
         metavar="FILE", help="also write the stage turning through one mesh cycle (.gif, .mp4)",
     )  # fmt: skip
     parser.add_argument(
@@ -149,11 +151,8 @@ def run(args: argparse.Namespace) -> int:
     if ratings is not None:
         print()
         ok = _print_ratings(ratings, args, rating_options(args)) and ok
-    if args.scene is not None:
-        from gears.export import save
-
-        save(args.scene, stage.scene(face_width=args.face_width, tolerance=tolerance))
-        print(f"\nwrote {args.scene} (planets phased, tolerance {tolerance:g} mm)")
+    write_scene(args, lambda tol: stage.scene(face_width=args.face_width, tolerance=tol),
+                tolerance, lambda _, tol: f"planets phased, tolerance {tol:g} mm")  # fmt: skip
     if args.animate is not None:
         stage.animate(args.animate, frames=frames, tolerance=tolerance)
         print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")

@@ -32,7 +32,11 @@ NAMES = {**PAIR_NAMES, **RATING_NAMES}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    pair_arguments(parser)
+    pair_arguments(
+        parser,
+        face_width_help="face width in mm (needed for the overlap ratio of a helical pair and a "
+        "rating)",
+    )
     rating_arguments(parser, required=True)
 
 
