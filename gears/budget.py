@@ -38,7 +38,7 @@ from collections.abc import Callable
 
 from gears.errors import GearError
 
-__all__ = ["BUDGETS", "check_budget", "check_size", "fitting_tolerance", "round_up"]
+__all__ = ["BUDGETS", "check_budget", "fitting_tolerance", "round_up"]
 
 #: The budget of each kind of work, in its unit (see the module docstring).
 BUDGETS = {
@@ -128,9 +128,3 @@ def check_budget(
             f": {hint}" if hint else ""))  # fmt: skip
     more = f" (or {hint})" if hint else ""
     raise GearError(f"{head}; use tolerance >= {fits:.2g} mm{more}")
-
-
-def check_size(vertices: float, what: str, tolerance: float, budget: float) -> None:
-    """:func:`check_budget` for a count known at one tolerance, work growing as 1/tolerance
-    (the form the bevel solids and the crown simulation use)."""
-    check_budget("vertex", what, lambda t: vertices * tolerance / t, tolerance, budget=budget)

@@ -43,7 +43,7 @@ from gears.profile import (
     _refuse_protuberance,
     arc_segments,
     assemble,
-    check_bore,
+    check_blank,
     circle_points,
     involute_rolls,
     rim_width,
@@ -311,7 +311,7 @@ def rack_outline(
             "rack-limit outline of a shaper-cut ring)"
         )
     prof = ToothProfile(gear, backlash)
-    check_bore(bore, prof.rf)
+    check_blank(gear, bore, None, prof.rf)
     space = _space(prof, tol, progress)
     if space.geom_type != "Polygon":
         raise GearError(f"z = {gear.teeth}: the simulated tooth space is not one piece")
@@ -561,9 +561,7 @@ def shaper_outline(
     check_callback("progress", progress)
     _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
-    check_bore(bore, prof.rf)
-    if gear.internal:
-        rim_width(gear, rim)
+    check_blank(gear, bore, rim, prof.rf)
     t = prof.tool
     m = gear.module
     space = _shaper_space(prof, tol, progress)

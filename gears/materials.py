@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -132,8 +132,6 @@ class Material:
         self, sigma_Hlim: float | None = None, sigma_Flim: float | None = None
     ) -> Material:
         """The same material with other allowable stress numbers (None keeps a value)."""
-        from dataclasses import replace
-
         return replace(
             self,
             sigma_Hlim=self.sigma_Hlim if sigma_Hlim is None else sigma_Hlim,
@@ -150,6 +148,17 @@ _SLIP_LAYER = {
 }  # fmt: skip
 
 _STEEL = {"youngs_modulus": 206000.0, "poisson": 0.3, "density": 7.83e-6}
+
+_INDUCTION = Material(
+    "induction-hardened",
+    "IF",
+    1200.0,
+    370.0,
+    hardness=560.0,
+    **_STEEL,
+    source="ISO 6336-5 induction- or flame-hardened steel, MQ at 560 HV: sigma_Hlim "
+    "1200, sigma_Flim 370",
+)
 
 #: The named materials: one point of ISO 6336-5 each (quality MQ), its ``source`` says which.
 MATERIALS: dict[str, Material] = {
@@ -174,26 +183,8 @@ MATERIALS: dict[str, Material] = {
             **_STEEL,
             source="ISO 6336-5 nitriding steel, gas-nitrided, MQ: sigma_Hlim 1250, sigma_Flim 420",
         ),
-        Material(
-            "induction-hardened",
-            "IF",
-            1200.0,
-            370.0,
-            hardness=560.0,
-            **_STEEL,
-            source="ISO 6336-5 induction- or flame-hardened steel, MQ at 560 HV: sigma_Hlim "
-            "1200, sigma_Flim 370",
-        ),
-        Material(
-            "flame-hardened",
-            "IF",
-            1200.0,
-            370.0,
-            hardness=560.0,
-            **_STEEL,
-            source="ISO 6336-5 induction- or flame-hardened steel, MQ at 560 HV: sigma_Hlim "
-            "1200, sigma_Flim 370",
-        ),
+        _INDUCTION,
+        replace(_INDUCTION, name="flame-hardened"),  # one ISO 6336-5 point for both
         Material(
             "through-hardened",
             "V",

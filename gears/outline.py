@@ -12,7 +12,7 @@ from gears.arguments import check_angle, check_callback, check_choice, check_poi
 from gears.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.generate import rack_outline, shaper_outline
-from gears.profile import outline
+from gears.profile import check_blank, outline
 from gears.profile import outline_vertices as analytic_vertices
 
 __all__ = ["METHODS", "gear_outline", "outline_vertices", "pair_outlines", "pair_placement"]
@@ -70,6 +70,7 @@ def gear_outline(
             raise GearError(
                 "this gear is cut by a shaper cutter; use method='shaper' or 'analytic', not 'rack'"
             )
+        check_blank(gear, None, rim, 0.0)  # the rack cuts external gears: rim= means nothing
         return rack_outline(gear, tolerance, backlash, bore, angle, center, progress)
     return shaper_outline(
         gear, tolerance, backlash, bore=bore, rim=rim, angle=angle, center=center,

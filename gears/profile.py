@@ -58,7 +58,7 @@ from gears.arguments import (
     check_real,
     check_tolerance,
 )
-from gears.budget import BUDGETS, check_budget, check_size
+from gears.budget import BUDGETS, check_budget
 from gears.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import CROSSING, space_half_angle
@@ -72,7 +72,7 @@ __all__ = [
     "ToothProfile",
     "assemble",
     "check_backlash",
-    "check_size",
+    "check_blank",
     "check_tolerance",
     "one_sided",
     "outline",
@@ -704,8 +704,7 @@ def outline(
     center = check_point("center", center)
     _refuse_protuberance(gear)
     prof = profile_of(gear, cutter, backlash)
-    check_bore(bore, prof.rf)
-    rim_width(gear, rim)
+    check_blank(gear, bore, rim, prof.rf)
     pts = prof.ring(tol, math.radians(angle))
     return assemble(gear, pts, tol, bore, rim, center, prof.rf)
 
@@ -733,16 +732,38 @@ def check_bore(bore, root_radius: float) -> float | None:
     return bd
 
 
+def check_blank(gear, bore, rim, root_radius: float) -> tuple[float | None, float | None]:
+    """``bore`` (a hole in an external gear, :func:`check_bore`) and ``rim`` (a ring's width
+    outside its roots, :func:`rim_width`) checked against the gear they are given for: a ring
+    has no bore and an external gear no rim, so either given to the other is a
+    :class:`GearError` rather than silently ignored. Returns (bore diameter or None, rim width
+    or None)."""
+    if gear.internal and bore is not None:
+        raise GearError(
+            f"bore = {bore!r}: a bore is a hole in an external gear; an internal gear (a ring) "
+            "has none (its outer edge is set by rim=)"
+        )
+    if not gear.internal and rim is not None:
+        raise GearError(
+            f"rim = {rim!r}: a rim is a ring's width outside its tooth roots; an external gear "
+            "has none (bore= makes a hole in it)"
+        )
+    if gear.internal:
+        return None, rim_width(gear, rim)
+    return check_bore(bore, root_radius), None
+
+
 def outline_vertices(gear, tolerance: float, backlash: float = 0.0, bore: float | None = None,
                      rim: float | None = None, cutter=None) -> float:  # fmt: skip
     """Vertices of :func:`outline` at ``tolerance`` (one tooth sampled, times z, plus the rim
     or bore circle), without drawing it: the estimate budgets are checked on."""
     prof = profile_of(gear, cutter, backlash)
     n = prof.vertices(tolerance)
-    if gear.internal:
-        n += circle_segments(prof.rf + rim_width(gear, rim), tolerance)
-    elif bore is not None:
-        n += circle_segments(check_bore(bore, prof.rf) / 2, tolerance)
+    bd, width = check_blank(gear, bore, rim, prof.rf)
+    if width is not None:
+        n += circle_segments(prof.rf + width, tolerance)
+    elif bd is not None:
+        n += circle_segments(bd / 2, tolerance)
     return n
 
 

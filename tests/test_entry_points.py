@@ -124,6 +124,7 @@ def test_pair_margins_take_array_pressure_angles_and_scalars_give_arrays():
 BOX = shapely.box(-1.0, -1.0, 1.0, 1.0)
 PAIR = GearPair(Gear(12, 2), Gear(30, 2))
 STAGE = Planetary(18, 45, 108, n_planets=3, module=2)
+RING = Gear(60, 1, internal=True)
 
 
 @pytest.mark.parametrize(
@@ -152,6 +153,12 @@ STAGE = Planetary(18, 45, 108, n_planets=3, module=2)
             ).outline(0.05),
             ["z = 6"],
         ),
+        # a bore on a ring and a rim on an external gear were silently ignored (the CLI refused)
+        (lambda: RING.outline(0.05, bore=10), ["bore = 10", "external"]),
+        (lambda: RING.mesh(5, tolerance=0.05, bore=10), ["bore = 10", "external"]),
+        (lambda: Gear(20, 1).outline(0.05, rim=3), ["rim = 3", "external"]),
+        (lambda: Gear(20, 1).outline(0.05, "rack", rim=3), ["rim = 3", "external"]),
+        (lambda: Gear(20, 1).mesh(5, tolerance=0.05, rim=3), ["rim = 3", "external"]),
     ],
 )
 def test_3d_and_outline_calls_refuse_bad_input(call, words):
