@@ -307,10 +307,12 @@ def plot_blocking_contour(result: BlockingContour, ax=None, contact_levels=None,
     if ax is None:
         _, ax = plt.subplots(figsize=(7.5, 7.0))
     x1, x2 = result.x1, result.x2
-    ax.contourf(
-        x1, x2, (~result.feasible).astype(float), levels=[0.5, 1.5], colors=["0.85"],
-        hatches=["///"], alpha=0.6,
-    )  # fmt: skip
+    with plt.rc_context({"hatch.color": "0.6", "hatch.linewidth": 0.6}):
+        ax.contourf(
+            x1, x2, (~result.feasible).astype(float), levels=[0.5, 1.5], colors=["0.9"],
+            hatches=["///"], alpha=0.6,
+        )  # fmt: skip
+    labels = []  # every contour label on a white box: readable over the hatching
     colors = ["tab:red", "tab:orange", "tab:green", "tab:olive", "tab:purple", "tab:pink",
               "black", "tab:brown", "tab:cyan"]  # fmt: skip
     for i, name in enumerate(LIMITS):
@@ -318,18 +320,20 @@ def plot_blocking_contour(result: BlockingContour, ax=None, contact_levels=None,
         if not (field.min() < 0.0 < field.max()):
             continue  # this limit does not cross the drawn region
         cs = ax.contour(x1, x2, field, levels=[0.0], colors=[colors[i]], linewidths=1.8)
-        ax.clabel(cs, fmt={0.0: _LABELS[name]}, fontsize=8, inline=True)
+        labels += ax.clabel(cs, fmt={0.0: _LABELS[name]}, fontsize=8, inline=True)
     eps = result.contact_ratio
     levels = contact_levels
     if levels is None:
         levels = [v for v in np.arange(1.1, 2.0, 0.1) if eps.min() < v < eps.max()]
     if len(levels):
         cs = ax.contour(x1, x2, eps, levels=levels, colors="0.35", linewidths=0.7, linestyles=":")
-        ax.clabel(cs, fmt=lambda v: f"ε={v:.1f}", fontsize=7)
+        labels += ax.clabel(cs, fmt=lambda v: f"ε={v:.1f}", fontsize=7)
     a = result.center_distance
     a_levels = np.linspace(a.min(), a.max(), n_center + 2)[1:-1]
     cs = ax.contour(x1, x2, a, levels=a_levels, colors="tab:blue", linewidths=0.6, linestyles="--")
-    ax.clabel(cs, fmt=lambda v: f"a={v:.2f}", fontsize=7)
+    labels += ax.clabel(cs, fmt=lambda v: f"a={v:.2f}", fontsize=7)
+    for text in labels:
+        text.set_bbox({"facecolor": "white", "edgecolor": "none", "alpha": 0.85, "pad": 1.0})
     ax.axhline(0.0, color="k", linewidth=0.5)
     ax.axvline(0.0, color="k", linewidth=0.5)
     ax.set_xlabel("$x_1$")
