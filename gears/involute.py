@@ -22,6 +22,7 @@ Numerics (standards.md §2):
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from math import comb, factorial
 
@@ -59,6 +60,7 @@ def _tan_minus_x_coefficients(terms: int) -> np.ndarray:
 
 _SERIES_SWITCH = 0.25  # rad; below it inv() uses the series
 _TAN_SERIES = _tan_minus_x_coefficients(14)  # term ratio ~ (2x/pi)^2 <= 0.026: error < 1e-20
+_TAN_DESCENDING = tuple(float(c) for c in _TAN_SERIES[::-1])  # Horner order, Python floats
 
 # Cheng's reversion alpha = sum a_k t^(2k+1), t = (3 y)^(1/3) (standards.md §2.1, 10 terms).
 _CHENG = np.array(
@@ -110,6 +112,16 @@ def inv(alpha):
     0.014904383867
     """
     a = np.asarray(alpha, dtype=float)
+    if a.ndim == 0:  # one angle: the same formulas on Python floats (a tenth of the cost)
+        x = float(a)
+        if not abs(x) < _HALF_PI:  # NaN fails too
+            raise GearError(f"alpha = {x:g} rad; valid is |alpha| < pi/2 (involute function)")
+        if abs(x) >= _SERIES_SWITCH:
+            return np.float64(math.tan(x) - x)
+        x2, acc = x * x, 0.0
+        for c in _TAN_DESCENDING:
+            acc = acc * x2 + c
+        return np.float64(x * x2 * acc)
     if not np.all(np.abs(a) < _HALF_PI):  # NaN fails too
         bad = np.ravel(a)[np.argmax(~np.ravel(np.abs(a) < _HALF_PI))]
         raise GearError(f"alpha = {float(bad):g} rad; valid is |alpha| < pi/2 (involute function)")

@@ -264,9 +264,16 @@ def _out(a):
 def _where(cond, a, b):
     """``np.where`` that keeps one pair's numbers numpy scalars (a Python branch: ten times
     faster than 0-d arrays, which is most of rating one pair)."""
-    if np.ndim(cond) == 0 and np.ndim(a) == 0 and np.ndim(b) == 0:
+    if _scalar(cond) and _scalar(a) and _scalar(b):
         return a if cond else b
     return np.where(cond, a, b)
+
+
+def _scalar(v) -> bool:
+    """Whether ``v`` is one number (``np.ndim(v) == 0`` without its cost on numbers)."""
+    if type(v) is np.ndarray:
+        return v.ndim == 0
+    return isinstance(v, (float, int, np.generic)) or np.ndim(v) == 0
 
 
 # --- ISO 1328-1 deviations --------------------------------------------------------------------
