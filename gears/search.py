@@ -863,7 +863,10 @@ def dask_results(client, pending: set, timeout: float | None = None):
     idle_since = None
     while pending:
         try:
-            done, _ = wait(list(pending), timeout=min(seconds, 1.0), return_when="FIRST_COMPLETED")
+            with client.as_current():  # wait() asks for the current client: this one, even
+                done, _ = wait(  # when it is not the default (set_as_default=False)
+                    list(pending), timeout=min(seconds, 1.0), return_when="FIRST_COMPLETED"
+                )
         except TimeoutError:
             if _workers(client):
                 idle_since = None

@@ -182,6 +182,26 @@ def test_local_and_dask_cluster_agree():
     _assert_same_table(local.table, active.table)
 
 
+def test_a_client_that_is_not_the_default_runs_both_searches():
+    # a Client(..., set_as_default=False) (one of several, say) raised "No clients found" from
+    # dask's wait() before: the results are awaited on the client given
+    from distributed import Client, LocalCluster
+
+    from trains import synthesize_gearbox
+
+    kw = dict(ratio=3.2, module=[2, 3], teeth=(12, 40), shifts=(-0.4, 1.0, 0.2), progress=False,
+              top=5, chunk_size=200)  # fmt: skip
+    box = dict(ratio=12, stages=2, z_max=80, top=3, progress=False)
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                      dashboard_address=None) as cluster, Client(
+                          cluster, set_as_default=False) as client:  # fmt: skip
+        remote = pairs(**kw, client=client)
+        boxes = synthesize_gearbox(**box, client=client)
+    _assert_same_table(pairs(**kw, client=False).table, remote.table)
+    assert [str(g) for g in boxes] == [str(g) for g in synthesize_gearbox(**box, client=False)]
+    assert len(boxes) == 3
+
+
 def test_progress_callback_and_off(capsys):
     seen = []
     r = pairs(ratio=2, module=2, teeth=(14, 40), chunk_size=500, progress=lambda d, n: seen.append(
