@@ -881,13 +881,13 @@ def dask_results(client, pending: set, timeout: float | None = None):
             continue
         except lost as exc:
             raise _lost_work(exc) from None
-        for fut in done:
-            pending.discard(fut)
-            try:
-                result = fut.result()
-            except lost as exc:
-                raise _lost_work(exc) from None
-            yield fut, result
+        done = list(done)
+        pending.difference_update(done)
+        try:  # every finished result in one round trip (one per future cost 5-10 ms each)
+            results = client.gather(done)
+        except lost as exc:
+            raise _lost_work(exc) from None
+        yield from zip(done, results, strict=True)
 
 
 def _lost_work(exc: BaseException) -> GearError:

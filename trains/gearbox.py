@@ -76,6 +76,8 @@ MAX_LOCAL_PAIRS = 5 * 10**7
 #: stages sized per task at most, and combinations crossed per combination task about
 SIZING_CHUNK = 4096
 COMBINATIONS = 200_000
+#: stages sized per task at least (a smaller task costs a cluster more than it saves)
+MIN_SIZING = 512
 #: tooth-count sets per stage-set task at least (smaller blocks cost more than they save)
 MIN_SETS = 4096
 #: (stage, module, width) rows a rating call takes
@@ -379,6 +381,19 @@ class _Runner:
                 self._tick()
         return results
 
+    def share(self, value: Any) -> Any:
+        """``value`` for the tasks of :meth:`map` to share: on a cluster scattered to every
+        worker once (a future the tasks receive resolved), locally the value itself."""
+        if self.client is None:
+            return value
+        try:
+            return self.client.scatter([value], broadcast=True, hash=False)[0]
+        except (TimeoutError, OSError) as exc:
+            raise TrainError(
+                f"the Dask cluster took no data: {exc}; check the cluster, or "
+                "run without client= (local threads)"
+            ) from None
+
     def _tick(self) -> None:
         self.done += 1
         if self.report:
@@ -547,9 +562,7 @@ def synthesize_gearbox(
     tuples = _ratio_tuples(ratios, target, k, tol)
     if plan.rated:  # a stage's load depends on its place: every order of a tuple
         tuples = sorted({p for t in tuples for p in itertools.permutations(t)})
-        keys = sorted({key for t in tuples for key in _places(t, ratios)})
-        index = {key: i for i, key in enumerate(keys)}
-        key_tuples = [tuple(index[key] for key in _places(t, ratios)) for t in tuples]
+        keys, key_tuples = _place_keys(tuples, ratios)
         design = _size(runner, pool, rid, keys, plan, names)
         rows, row_key = design["stage"], design["key"]
         feasible = design["ok"]
@@ -567,8 +580,7 @@ def synthesize_gearbox(
         pool["eta"][use] = _efficiencies(runner, pool, use, names, m0)
     table = _stage_table(pool, rows, design, plan, names)
     lists = _best_per_key(table, row_key, feasible, len(keys), plan, top)
-    errors = {kt: float(abs(math.prod((ratios[r] for r in t), start=Fraction(1)) - target)
-                        / target) for kt, t in zip(key_tuples, tuples, strict=True)}  # fmt: skip
+    errors = _ratio_errors(key_tuples, tuples, ratios, target, tol)
     key_tuples = [kt for kt in key_tuples if all(len(lists[i]) for i in kt)]
 
     # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
@@ -607,15 +619,20 @@ def _merge_blocks(parts: list[dict], names: Sequence[str]) -> dict[str, np.ndarr
     return pool
 
 
-def _ratio_ids(pool) -> tuple[list[Fraction], np.ndarray]:
+def _ratio_ids(pool) -> tuple[_Ratios, np.ndarray]:
     """The distinct stage ratios (ascending, exact) and each stage's index into them.
 
     Distinct reduced fractions with denominators below 2^26 differ by more than a float64 can
     confuse, so the float order is the exact order."""
     if not len(pool["num"]):
-        return [], np.empty(0, np.int64)
-    pairs = np.stack([pool["num"], pool["den"]], axis=1)
-    uniq, inverse = np.unique(pairs, axis=0, return_inverse=True)
+        return _Ratios(np.empty(0, np.int64), np.empty(0, np.int64)), np.empty(0, np.int64)
+    num, den = pool["num"], pool["den"]
+    width = int(den.max()) + 1
+    if int(num.max()) < 2**62 // width:  # one int64 key per ratio: a 1-d unique, 20x faster
+        codes, inverse = np.unique(num * width + den, return_inverse=True)
+        uniq = np.stack([codes // width, codes % width], axis=1)
+    else:
+        uniq, inverse = np.unique(np.stack([num, den], axis=1), axis=0, return_inverse=True)
     order = np.argsort(uniq[:, 0] / uniq[:, 1], kind="stable")
     rank = np.empty(len(order), np.int64)
     rank[order] = np.arange(len(order))
@@ -737,13 +754,41 @@ class _Finder:
         return [j for j in range(max(a, low), b) if abs(self.ratios[j] / need - 1) <= tol]
 
 
-def _places(t: tuple, ratios: _Ratios):
-    """``(ratio index, product of the ratios before it)`` for each place of tuple ``t``: the
-    stage there carries the input torque times that product."""
-    p = Fraction(1)
-    for r in t:
-        yield r, p
-        p *= ratios[r]
+def _place_keys(tuples: list[tuple], ratios: _Ratios) -> tuple[list, list[tuple]]:
+    """The sizing keys of ratio tuples: each place's ``(ratio index, product of the ratios
+    before it)`` (the stage there carries the input torque times that product, a float), the
+    distinct keys in ascending order, and each tuple as indices into them. The products are
+    exact (reduced integers) so that equal loads share a key."""
+    num, den = ratios.num.tolist(), ratios.den.tolist()
+    value = {}
+    for pre in {t[:j] for t in tuples for j in range(len(t))}:
+        p = q = 1
+        for r in pre:
+            p, q = p * num[r], q * den[r]
+        g = math.gcd(p, q)
+        value[pre] = (p // g, q // g)
+    # ascending products (the float first; (p, q) orders products a float cannot tell apart)
+    ordered = sorted(value, key=lambda pre: (value[pre][0] / value[pre][1], value[pre]))
+    products: list[tuple[int, int]] = []
+    ident = {}
+    for pre in ordered:
+        if not products or products[-1] != value[pre]:
+            products.append(value[pre])
+        ident[pre] = len(products) - 1
+    places = [tuple((r, ident[t[:j]]) for j, r in enumerate(t)) for t in tuples]
+    distinct = sorted({key for pl in places for key in pl})
+    index = {key: i for i, key in enumerate(distinct)}
+    keys = [(r, products[q][0] / products[q][1]) for r, q in distinct]
+    return keys, [tuple(index[key] for key in pl) for pl in places]
+
+
+def _ratio_errors(key_tuples, tuples, ratios: _Ratios, target: Fraction, tol: float) -> dict:
+    """Each tuple's relative ratio error |prod - target| / target: 0 for an exact search (its
+    tuples meet the target exactly), else from the exact products."""
+    if tol == 0:
+        return dict.fromkeys(key_tuples, 0.0)
+    return {kt: float(abs(math.prod((ratios[r] for r in t), start=Fraction(1)) - target)
+                      / target) for kt, t in zip(key_tuples, tuples, strict=True)}  # fmt: skip
 
 
 def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
@@ -753,14 +798,14 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
     load = plan.load
     order = np.argsort(rid, kind="stable")
     cuts = np.searchsorted(rid[order], np.arange(len(keys) and (int(rid.max()) + 2)))
-    key_ids, stage_ids, mult = [], [], []
-    for i, (r, p) in enumerate(keys):
-        s = order[cuts[r] : cuts[r + 1]]
-        key_ids.append(np.full(s.size, i, np.int64))
-        stage_ids.append(s)
-        mult.append(np.full(s.size, float(p)))
-    cat = lambda parts, dtype: np.concatenate(parts) if parts else np.empty(0, dtype)  # noqa: E731
-    key_ids, stage_ids, mult = cat(key_ids, np.int64), cat(stage_ids, np.int64), cat(mult, float)
+    # every key's stages (those of its ratio), all keys at once: key i takes order[cuts[r_i]
+    # : cuts[r_i + 1]] at the multiplier p_i
+    r = np.array([key[0] for key in keys], np.int64)
+    counts = cuts[r + 1] - cuts[r] if len(keys) else np.empty(0, np.int64)
+    key_ids = np.repeat(np.arange(len(keys)), counts)
+    offset = np.arange(key_ids.size) - np.repeat(np.cumsum(counts) - counts, counts)
+    stage_ids = order[np.repeat(cuts[r], counts) + offset] if len(keys) else key_ids
+    mult = np.repeat(np.array([float(key[1]) for key in keys]), counts)
     fields = ("module", "face_width", "S_H", "S_F", "volume", "mass", "ring")
     design = {f: np.zeros(stage_ids.size) for f in fields}
     design["ok"] = np.zeros(stage_ids.size, bool)
@@ -769,7 +814,7 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
     args, where = [], []
     for code in np.unique(scheme):
         rows = np.flatnonzero(scheme == code)
-        size = max(64, min(SIZING_CHUNK, -(-rows.size // (4 * runner.parallel))))
+        size = max(MIN_SIZING, min(SIZING_CHUNK, -(-rows.size // (4 * runner.parallel))))
         for a in range(0, rows.size, size):
             part = rows[a : a + size]
             st = stage_ids[part]
@@ -880,13 +925,17 @@ def _score_order(t: dict, c: np.ndarray, err: np.ndarray, objective: str, rated:
     return np.lexsort(list(reversed([*head, err, *ident])))
 
 
-def _combine_task(t: dict, lists: dict, key_tuples: list, errors: list, objective: str,
+def _combine_task(shared: tuple, key_tuples: np.ndarray, errors: np.ndarray, objective: str,
                   rated: bool, keep: int) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
-    """The best ``keep`` combinations of a chunk of key tuples (a task): each tuple's lists
-    crossed, scored, reduced. ``t`` holds only the chunk's rows; returns their ``row`` ids
-    (an (n, k) array) and the combinations' ratio errors, in score order."""
-    c, tuple_of = _cross(lists, key_tuples)
-    err = np.asarray(errors, float)[tuple_of]
+    """The best ``keep`` combinations of a chunk of key tuples (a task; ``key_tuples`` an
+    (T, k) array, ``errors`` their ratio errors): each tuple's lists crossed, scored, reduced.
+    ``shared`` is ``(table, keys, sizes, flat)``, the same for every chunk: the rows the lists
+    name and the lists packed (key ``keys[i]`` owns ``sizes[i]`` rows of ``flat``, positions
+    in the table). Returns the combinations' ``row`` ids (an (n, k) array) and their ratio
+    errors, in score order."""
+    t, keys, sizes, flat = shared
+    c, tuple_of = _cross(keys, sizes, flat, key_tuples)
+    err = errors[tuple_of]
     if len(c) > 2 * keep:  # only rows that can reach the best `keep` by the first key
         first = _head(objective, rated, *_columns(t, c))[0]
         near = first <= np.partition(first, keep - 1)[keep - 1]
@@ -895,17 +944,15 @@ def _combine_task(t: dict, lists: dict, key_tuples: list, errors: list, objectiv
     return t["row"][c[order]], err[order]
 
 
-def _cross(lists: dict, key_tuples: list) -> tuple[np.ndarray, np.ndarray]:
+def _cross(keys: np.ndarray, sizes: np.ndarray, flat: np.ndarray,
+           key_tuples: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """Every combination of each key tuple's lists (the rows per place, an (n, k) array), and
-    the index of the tuple each came from: all tuples at once, by mixed-radix counting."""
-    k = len(key_tuples[0])
-    keys = sorted({i for kt in key_tuples for i in kt})
-    flat = np.concatenate([lists[i] for i in keys])
-    sizes = np.array([len(lists[i]) for i in keys])
-    start = dict(zip(keys, np.concatenate([[0], np.cumsum(sizes)[:-1]]).tolist(), strict=True))
-    size = dict(zip(keys, sizes.tolist(), strict=True))
-    radix = np.array([[size[i] for i in kt] for kt in key_tuples], np.int64)  # (T, k)
-    base = np.array([[start[i] for i in kt] for kt in key_tuples], np.int64)
+    the index of the tuple each came from: all tuples at once, by mixed-radix counting. The
+    lists are packed: key ``keys[i]`` (ascending) owns ``sizes[i]`` entries of ``flat``."""
+    k = key_tuples.shape[1]
+    start = np.cumsum(sizes) - sizes
+    at = np.searchsorted(keys, key_tuples)  # (T, k) positions of the keys
+    radix, base = sizes[at], start[at]
     count = radix.prod(axis=1)
     tuple_of = np.repeat(np.arange(len(key_tuples)), count)
     local = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
@@ -923,6 +970,11 @@ def _columns(t: dict, c: np.ndarray) -> tuple:
             t["mass"][c].sum(axis=1), np.prod(t["eta"][c], axis=1))  # fmt: skip
 
 
+#: the table columns a combination's score reads (:func:`_columns`, :func:`_score_order`)
+_COMBINE_FIELDS = ("row", "ring", "total", "volume", "mass", "eta", "alpha", "z1", "z2", "z2p",
+                   "z3", "k", "module")  # fmt: skip
+
+
 def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, names,
           target) -> tuple[list[Gearbox], int]:  # fmt: skip
     """Combine the tuples in chunks (tasks), rank, and walk the ranking checking stages in
@@ -934,18 +986,27 @@ def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, name
     checked = 0
     t["row"] = np.arange(len(t["z1"]))
     sizes = np.array([math.prod(len(lists[i]) for i in kt) for kt in key_tuples], float)
+    # the rows the lists name (the columns a score reads) and the lists packed, made once; on
+    # a cluster sent to every worker once (scatter), so that a task carries only its tuples (a
+    # dict of small arrays per task cost a cluster ten times the work in serialisation)
+    keys = np.array(sorted({i for kt in key_tuples for i in kt}), np.int64)
+    lengths = np.array([len(lists[i]) for i in keys], np.int64)
+    rows = np.concatenate([lists[i] for i in keys])
+    used = np.unique(rows)
+    packed = ({f: t[f][used] for f in _COMBINE_FIELDS}, keys, lengths,
+              np.searchsorted(used, rows))  # fmt: skip
+    shared = None
+    err_all = np.array([errors[kt] for kt in key_tuples], float)
+    kt_array = np.array(key_tuples, np.int64)
     while True:
         # chunks of about COMBINATIONS crossed rows each (a small search: one, in this process)
         tasks = max(1, min(4 * runner.parallel, math.ceil(sizes.sum() / COMBINATIONS)))
         chunk = max(1, -(-len(key_tuples) // tasks))
-        args = []
-        for a in range(0, len(key_tuples), chunk):
-            kts = key_tuples[a : a + chunk]
-            used = np.unique(np.concatenate([lists[i] for kt in kts for i in kt]))
-            sub = {f: v[used] for f, v in t.items()}  # only the chunk's rows travel
-            local = {i: np.searchsorted(used, lists[i]) for kt in kts for i in kt}
-            args.append((sub, local, kts, [errors[kt] for kt in kts], plan.objective,
-                         plan.rated, keep))  # fmt: skip
+        if tasks > 1 and shared is None:
+            shared = runner.share(packed)
+        args = [(shared if tasks > 1 else packed, kt_array[a : a + chunk],
+                 err_all[a : a + chunk], plan.objective, plan.rated, keep)
+                for a in range(0, len(key_tuples), chunk)]  # fmt: skip
         parts = runner.map(_combine_task, args) if len(args) > 1 else [_combine_task(*args[0])]
         c = np.concatenate([p[0] for p in parts])
         err = np.concatenate([p[1] for p in parts])
