@@ -190,9 +190,13 @@ def test_best_design_equals_the_brute_force_product(objective):
     assert got.modules == pytest.approx(best[3:5], rel=0)
 
 
-def test_local_threads_and_a_cluster_give_the_same_gearboxes():
+def test_local_threads_and_a_cluster_give_the_same_gearboxes(monkeypatch):
     from distributed import Client, LocalCluster, get_task_stream
 
+    import trains.gearbox
+
+    # small combination chunks: several combine tasks, which share one scattered table
+    monkeypatch.setattr(trains.gearbox, "COMBINATIONS", 1)
     kw = dict(BOX, ratio=12, stages=2, schemes=("simple", "stepped"), z_max=80, top=5)
     one = synthesize_gearbox(**kw, client=False, threads=1)
     two = synthesize_gearbox(**kw, client=False, threads=2)
@@ -201,6 +205,7 @@ def test_local_threads_and_a_cluster_give_the_same_gearboxes():
         with get_task_stream(client) as stream:
             remote = synthesize_gearbox(**kw, client=client)
         blocks = [t for t in stream.data if "stage-block" in str(t["key"])]
+        combines = [t for t in stream.data if "combine-task" in str(t["key"])]
     for a, b in ((one, two), (one, remote)):
         assert [str(g) for g in a] == [str(g) for g in b] and len(a) == 5
         for g, h in zip(a, b, strict=True):
@@ -208,7 +213,7 @@ def test_local_threads_and_a_cluster_give_the_same_gearboxes():
             np.testing.assert_allclose(g.safety, h.safety, rtol=1e-12)
     # the work ran as many tasks: more than one stage-set block per scheme, and the sizing,
     # combination and check chunks
-    assert len(blocks) > 2 and remote.tasks > len(blocks)
+    assert len(blocks) > 2 and remote.tasks > len(blocks) and len(combines) > 1
 
 
 def test_unrated_search_splits_each_scheme_into_blocks():
