@@ -46,7 +46,6 @@ from gears.profile import (
     check_blank,
     circle_points,
     involute_rolls,
-    rim_width,
 )
 
 __all__ = [
@@ -561,7 +560,7 @@ def shaper_outline(
     check_callback("progress", progress)
     _refuse_protuberance(gear)
     prof = ShaperProfile(gear, cutter, backlash)
-    check_blank(gear, bore, rim, prof.rf)
+    _, width = check_blank(gear, bore, rim, prof.rf)  # width: a ring's rim, checked
     t = prof.tool
     m = gear.module
     space = _shaper_space(prof, tol, progress)
@@ -569,7 +568,6 @@ def shaper_outline(
         blank = shapely.Polygon(circle_points(prof.ra, tol / 2))
         space = space.intersection(shapely.Polygon(circle_points(prof.ra + 0.1 * m, tol)))
     else:
-        width = rim_width(gear, rim)
         outer = circle_points(prof.rf + width, tol / 2)
         blank = shapely.Polygon(outer, holes=[circle_points(prof.ra, tol / 2, ccw=False)])
         clip = shapely.Polygon(
