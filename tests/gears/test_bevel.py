@@ -112,7 +112,10 @@ KHK_GLEASON = {
 )
 def test_khk_worked_examples_to_their_printed_digits(pair, table):
     assert pair.cone_distance == pytest.approx(67.08204, abs=5e-6)
-    assert [pair.g1.reference_diameter, pair.g2.reference_diameter] == [60.0, 120.0]
+    # KHK Table 4.10/4.11: d = m z = 60 and 120 mm (computed floats: to rounding)
+    assert [pair.g1.reference_diameter, pair.g2.reference_diameter] == pytest.approx(
+        [60.0, 120.0], rel=1e-12
+    )
     for name, (printed, tol) in table.items():
         got = (getattr(pair.g1, name), getattr(pair.g2, name))
         assert got == pytest.approx(printed, abs=tol), name
@@ -265,7 +268,8 @@ def test_tip_land_at_the_ends_follows_the_face_cone():
 def test_gear_view_and_describe():
     p = BevelPair(20, 40, module=3, face_width=22, clearance="tapered")
     assert p.g1.mate is p.g2 and p.g2.mate is p.g1
-    assert (p.g1.teeth, p.g2.teeth, p.ratio) == (20, 40, 2.0)
+    assert (p.g1.teeth, p.g2.teeth) == (20, 40)
+    assert p.ratio == pytest.approx(2.0, rel=1e-12)  # u = z2 / z1
     assert p.g2.check()["undercut"].ok and "g2." not in "".join(p.g2.check())
     text = p.describe()
     assert "65.99559" in text and "67.0820" in text and "pinion" in text
