@@ -3,12 +3,12 @@
 - ``bevel_pair.png``: KHK's Gleason pair 20/40 (m 3, b 22) in mesh (``BevelPair.scene``);
 - ``bevel_section.png``: the pinion's tooth space on its outer spherical section: the octoid
   (the envelope of the crown gear's plane flank), the spherical involute, and the crown gear's
-  positions of the simulated cutting (``gears.crown``) in the gnomonic plane; beside it, the
+  positions of the simulated cutting (``gears.bevel.crown``) in the gnomonic plane; beside it, the
   octoid minus the spherical involute along the flank of both gears, in micrometres;
 - ``bevel_differential.png`` and ``bevel_differential.gif``: the seeds' differential 16/10 with
   real teeth (``trains.Differential``), standing and turning through a corner.
 
-Rendered by ``gears.render`` (orthographic, back faces culled, flat shading) and matplotlib.
+Rendered by ``gears.solid.render`` (orthographic, back faces culled, flat shading) and matplotlib.
 Run: ``python docs/make_bevel_figures.py [pair] [section] [differential]`` (writes
 ``docs/images/bevel_*``; all of them by default).
 """
@@ -25,9 +25,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from gears import BevelPair
-from gears.crown import _tool, crown_positions, gnomonic
-from gears.render import Camera, render_image, scene_parts
-from gears.spherical import _rotate, polar
+from gears.bevel.crown import _tool, crown_positions, gnomonic
+from gears.bevel.spherical import _rotate, polar
+from gears.solid.render import Camera, render_image, scene_parts
 from trains import Differential
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -63,7 +63,7 @@ def section_picture() -> None:
         both = np.concatenate([xy[::-1] * [-1, 1], xy])
         ax.plot(both[:, 0], both[:, 1], style, lw=1.6, label=label)
     az = np.linspace(-math.pi / 20, math.pi / 20, 200)
-    from gears.spherical import direction
+    from gears.bevel.spherical import direction
 
     rim = gnomonic(tooth, direction(tip, az)) * r_e * [1, -1]
     ax.plot(rim[:, 0], rim[:, 1], ":", color="k", lw=0.8, label="tip circle")

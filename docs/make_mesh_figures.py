@@ -22,8 +22,8 @@ from matplotlib.patches import PathPatch
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from gears import Gear
-from gears.animate import polygon_path
-from gears.mesh import COLOURS
+from gears.solid.animate import polygon_path
+from gears.solid.mesh import COLOURS
 from trains import Planetary
 
 HERE = pathlib.Path(__file__).resolve().parent

@@ -11,8 +11,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 from gears import Gear, GearPair
-from gears.cutter import ShaperCutter
-from gears.plot import generation_figure, pair_figure, tooth_figure
+from gears.cutting.cutter import ShaperCutter
+from gears.figures.plot import generation_figure, pair_figure, tooth_figure
 
 OUT = pathlib.Path(__file__).resolve().parent / "images"
 

@@ -2,7 +2,7 @@
 
 * ``rating_root.png``: the root of an external pinion (30 deg tangents) and of a ring gear
   (60 deg tangents) on their real outlines, with s_Fn, rho_F, the load at d_en and h_Fe, as
-  :func:`gears.root.measure_root` measures them;
+  :func:`gears.rating.root.measure_root` measures them;
 * ``rating_torque.png``: S_H and S_F of both gears of a pair against the torque, from
   :func:`gears.rate_pairs` over an array of torques.
 """
@@ -17,14 +17,14 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from gears import Gear, GearPair, rate_pairs
-from gears.capacity import load_diameters
-from gears.root import measure_root
+from gears.rating.capacity import load_diameters
+from gears.rating.root import measure_root
 
 OUT = pathlib.Path(__file__).resolve().parent / "images"
 
 
 def _tooth_frame(gear, pair):
-    """The gear's outline turned into the tooth frame of gears.root (tooth 0's centre line on
+    """The gear's outline turned into the tooth frame of gears.rating.root (tooth 0's centre line on
     +y, pointing to its tip) and the measured root form."""
     poly = gear.outline(tolerance=gear.module / 2000)
     ring = poly.interiors[0] if gear.internal else poly.exterior

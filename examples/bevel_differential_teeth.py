@@ -20,8 +20,8 @@ import tempfile
 from fractions import Fraction
 
 from gears import BevelPair
-from gears.export import save
-from gears.mesh import to_manifold
+from gears.solid.export import save
+from gears.solid.mesh import to_manifold
 from trains import Differential, power_flow
 
 out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(tempfile.mkdtemp())

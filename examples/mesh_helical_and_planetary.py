@@ -19,8 +19,8 @@ import sys
 import tempfile
 
 from gears import Gear
-from gears.export import save
-from gears.mesh import to_manifold
+from gears.solid.export import save
+from gears.solid.mesh import to_manifold
 from trains import Planetary
 
 out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(tempfile.mkdtemp())

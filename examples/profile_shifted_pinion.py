@@ -15,8 +15,8 @@ import sys
 import tempfile
 
 from gears import Gear, GearPair
-from gears.export import to_svg
-from gears.measure import thickness_on
+from gears.cutting.measure import thickness_on
+from gears.solid.export import to_svg
 
 pinion = Gear(12, 3, profile_shift=0.6)
 wheel = Gear(24, 3, profile_shift=0.36)
@@ -34,7 +34,7 @@ assert p1.intersection(p2).area < 1e-4
 
 to_svg(out / "pinion_wheel.svg", p1, p2)
 try:
-    from gears.plot import pair_figure
+    from gears.figures.plot import pair_figure
 except ImportError:  # matplotlib missing: the SVG is still written
     pass
 else:

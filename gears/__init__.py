@@ -9,18 +9,25 @@ The public surface (see ``docs/``)::
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
 """
 
-from gears.bevel_pair import BevelGear, BevelPair
-from gears.capacity import Rating
+from importlib.metadata import PackageNotFoundError, version
+
+from gears.bevel.pair import BevelGear, BevelPair
 from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
-from gears.cutter import ShaperCutter
+from gears.cutting.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
-from gears.materials import MATERIALS, Material
 from gears.meshing import PairGeometry, pair_geometry
 from gears.pair import GearPair, Rack
 from gears.rack import BasicRack
-from gears.rating import PairRatings, rate_pairs
+from gears.rating.capacity import Rating
+from gears.rating.iso6336 import PairRatings, rate_pairs
+from gears.rating.materials import MATERIALS, Material
 from gears.report import Finding, Report
+
+try:
+    __version__ = version("geartrain")  # pyproject.toml's version, as installed
+except PackageNotFoundError:  # pragma: no cover - a bare source tree, not installed
+    __version__ = "unknown"
 
 __all__ = [
     "MATERIALS",

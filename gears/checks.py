@@ -1,7 +1,7 @@
 """Layer 4, checks: every finding of ``Gear.check()`` and ``GearPair.check()`` as a vectorised
 signed margin (positive = satisfied), over arrays of gears and pairs.
 
-The classes call these functions for one gear or one pair; :func:`gears.search.pairs` calls
+The classes call these functions for one gear or one pair; :func:`gears.search.engine.pairs` calls
 them for millions (issue 13). Each margin is the one the finding of the same name reports:
 
 * gear: ``undercut`` (x - x_min, module), ``tip_above_base`` ((d_a - d_b)/2, mm),
@@ -16,7 +16,7 @@ them for millions (issue 13). Each margin is the one the finding of the same nam
 
 The form circle of an undercut gear is where the generated fillet cuts the involute:
 :func:`undercut_form_diameter` solves it for arrays of gears (a grid bracket, then bisection to
-machine precision), on the same envelope equations as :class:`gears.profile.ToothProfile`
+machine precision), on the same envelope equations as :class:`gears.cutting.profile.ToothProfile`
 (:meth:`gears.rack.RackTool.envelope`; standards.md §3.1).
 """
 
@@ -188,7 +188,7 @@ def undercut_form_diameter(z, module, profile_shift, pressure_angle=20.0, helix_
     the tool's tip round (and the straight flank below the limit point N1) cuts the involute,
     on the envelope of :meth:`gears.rack.RackTool.envelope`: the first crossing on a grid of
     the fillet parameter, then bisection to machine precision (the array form of
-    :func:`gears.profile.undercut_form_diameter`, which uses Brent's method per gear). NaN
+    :func:`gears.cutting.profile.undercut_form_diameter`, which uses Brent's method per gear). NaN
     where the fillet never meets the involute (the tooth is cut away).
 
     Examples
@@ -438,7 +438,7 @@ def pair_margins(z1: ArrayLike, z2: ArrayLike, module: ArrayLike, x1: ArrayLike 
 
     ``helix_angle`` is gear 1's (gear 2 has the opposite hand externally). Pairs whose shift
     sum leaves no working pressure angle raise :class:`GearError` (filter them first, as
-    :func:`gears.search.pairs` does). ``allow_undercut=False`` skips the undercut form-circle
+    :func:`gears.search.engine.pairs` does). ``allow_undercut=False`` skips the undercut form-circle
     solve (undercut gears fail their ``undercut`` finding anyway; their tip-interference margin
     then uses the closed form).
 

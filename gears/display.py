@@ -1,8 +1,9 @@
 """Layer 0, display text: SVG drawings and HTML tables, importing no project module.
 
-The one place that writes SVG: :func:`gears.export.to_svg` writes :func:`svg` text to a file
+The one place that writes SVG: :func:`gears.solid.export.to_svg` writes :func:`svg` text to a file
 (user unit 1 mm), and the notebook displays (``Gear._repr_svg_``, ``GearPair._repr_svg_``,
-``Planetary._repr_svg_``, through :mod:`gears.drawing`) show it at a pixel width. HTML tables
+``Planetary._repr_svg_``, through :mod:`gears.figures.drawing`) show it at a pixel width. HTML
+tables
 (:func:`html_table`) are what ``Report``, ``SearchResult`` and ``Rating`` show in a notebook.
 
 Drawings keep the drawings' orientation (y up): a point ``(x, y)`` is written at

@@ -1,6 +1,6 @@
 """Layer 1, output files: the one check of a path that a writer is about to write.
 
-Every writer of the library (:func:`gears.export.save` and its format writers, the animation
+Every writer of the library (:func:`gears.solid.export.save` and its format writers, the animation
 writer) and every output option of the ``geartrain`` CLI calls :func:`check_output` before any
 work, so a bad path is one clear :class:`~gears.errors.GearError` naming the path and what is
 valid, never a ``FileNotFoundError`` after a long computation. :func:`writing` turns what can

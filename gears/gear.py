@@ -2,8 +2,8 @@
 
 External or internal, spur or helical, with profile shift. Every quantity is computed by the
 vectorised formulas of :mod:`gears.geometry` (ISO 21771 symbols are mapped there); the cutter,
-the exact envelope and the outline come from the layers below (:mod:`gears.cutter`,
-:mod:`gears.profile`, :mod:`gears.outline`).
+the exact envelope and the outline come from the layers below (:mod:`gears.cutting.cutter`,
+:mod:`gears.cutting.profile`, :mod:`gears.cutting.outline`).
 """
 
 from __future__ import annotations
@@ -30,9 +30,11 @@ from gears.arguments import (
 )
 from gears.budget import check_budget
 from gears.checks import gear_margins, undercut_form_diameter
-from gears.cutter import ShaperCutter, ShaperTool
-from gears.drawing import gear_svg
+from gears.cutting.cutter import ShaperCutter, ShaperTool
+from gears.cutting.outline import METHODS, gear_outline, outline_vertices
+from gears.cutting.profile import ShaperProfile, default_rim
 from gears.errors import GearError
+from gears.figures.drawing import gear_svg
 from gears.geometry import (
     base_diameter,
     check_real,
@@ -52,11 +54,9 @@ from gears.geometry import (
     transverse_pressure_angle,
 )
 from gears.involute import inv, inv_inverse, pressure_angle_at
-from gears.mesh import COLOURS, gear_solid, helix_twist, solid_levels
-from gears.outline import METHODS, gear_outline, outline_vertices
-from gears.profile import ShaperProfile, default_rim
 from gears.rack import BasicRack
 from gears.report import Finding, Report
+from gears.solid.mesh import COLOURS, gear_solid, helix_twist, solid_levels
 
 if TYPE_CHECKING:
     import trimesh
@@ -92,7 +92,7 @@ class Gear:
         Tip alteration coefficient k (DIN 3960): d_a changes by 2 k m_n. A :class:`GearPair`
         sets it for tip shortening; leave 0 for a gear on its own.
     cutter : ShaperCutter or None
-        The gear is cut by this shaper (:class:`gears.cutter.ShaperCutter`) instead of the
+        The gear is cut by this shaper (:class:`gears.cutting.cutter.ShaperCutter`) instead of the
         rack-type tool: its root and form circles, undercut, outline and the pair checks then
         follow that cutter. None (default): rack-cut (an internal gear: the shaper's rack limit).
 
@@ -521,17 +521,17 @@ class Gear:
         center: tuple[float, float] = (0.0, 0.0), cutter: ShaperCutter | None = None,
         progress: Callable[[int, int], object] | None = None,
     ) -> shapely.Polygon:  # fmt: skip
-        """Transverse tooth outline as a shapely Polygon (see :func:`gears.profile.outline`,
-        :func:`gears.generate.rack_outline`, :func:`gears.generate.shaper_outline`).
+        """Transverse tooth outline as a shapely Polygon (see :func:`gears.cutting.profile.outline`,
+        :func:`gears.cutting.generate.rack_outline`, :func:`gears.cutting.generate.shaper_outline`).
 
         ``method`` is ``"analytic"``, ``"rack"`` or ``"shaper"``; ``tolerance`` is the largest
         deviation from the exact curves in mm; ``backlash`` the pair's normal backlash (this
         gear takes half); ``bore`` a hole (external; default none); ``rim`` the ring's width
         outside its root circle (internal; default 3 modules);
-        ``cutter`` a :class:`gears.cutter.ShaperCutter` (for ``"shaper"``, and for
+        ``cutter`` a :class:`gears.cutting.cutter.ShaperCutter` (for ``"shaper"``, and for
         ``"analytic"`` to draw that shaper's exact envelope instead of the rack's);
         ``progress(done, total)`` is called as a simulation advances. The finest tolerance is
-        :data:`gears.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
+        :data:`gears.cutting.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
         tolerance that fits.
         """
         return gear_outline(
@@ -550,7 +550,7 @@ class Gear:
         ``face_width`` (mm) defaults to the gear's own (``Gear(face_width=...)``), else 10
         modules, as in :meth:`GearPair.scene`, ``Planetary.scene`` and ``geartrain mesh``;
         ``tolerance`` (mm) drives both the outline and the axial slices
-        (:func:`gears.mesh.gear_solid`); ``method``, ``backlash``, ``bore``, ``rim`` (a ring's
+        (:func:`gears.solid.mesh.gear_solid`); ``method``, ``backlash``, ``bore``, ``rim`` (a ring's
         width outside its root circle, default 3 modules) and ``cutter`` are those of
         :meth:`outline`; ``herringbone`` makes two opposite-hand halves meeting at z = 0;
         ``progress`` follows a simulated outline. Every argument is checked and the solid's
@@ -590,7 +590,7 @@ class Gear:
                        rim: float | None = None, cutter: ShaperCutter | None = None,
                        herringbone: bool = False) -> float:  # fmt: skip
         """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
-        the slices; :func:`gears.outline.outline_vertices`), before any outline is drawn."""
+        the slices; :func:`gears.cutting.outline.outline_vertices`), before any outline is drawn."""
         n = outline_vertices(self, tolerance, method, backlash, bore, rim, cutter)
         return n * float(solid_levels(twist, self.solid_radius(rim), tolerance, herringbone))
 
@@ -613,5 +613,5 @@ class Gear:
 
     def _repr_svg_(self) -> str:
         """The gear's outline as an SVG picture, what a notebook shows
-        (:func:`gears.drawing.gear_svg`; a text instead when it cannot be drawn)."""
+        (:func:`gears.figures.drawing.gear_svg`; a text instead when it cannot be drawn)."""
         return gear_svg(self, COLOURS["gear1"])

@@ -192,7 +192,8 @@ def form_diameter(
     External, rack-type tool:
     d_Ff = 2 sqrt(r_b^2 + (r sin alpha_t - (h*_eff - x) m_n / sin alpha_t)^2)
     while the bracket is >= 0; below that the gear is undercut and the involute starts where the
-    fillet cuts it (see :func:`gears.profile.undercut_form_diameter` for that exact point; here
+    fillet cuts it (see :func:`gears.cutting.profile.undercut_form_diameter` for that exact point;
+    here
     the base diameter is returned as the limit of the involute). Internal gears are modelled as
     cut by a rack-type (infinitely large) tool; the form circle then lies outside the reference
     circle: d_Ff = 2 sqrt(r_b^2 + (r sin alpha_t + (h*_eff + x) m_n / sin alpha_t)^2), at most

@@ -254,7 +254,8 @@ def line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
 
 def line_of_action_points(rb1, working_pressure_angle, u, internal=False):
     """``(x, y)`` of the points at ``u`` mm from N1 on the line of action, in the frame of
-    :func:`gears.outline.pair_placement` (gear 1 at the origin, gear 2 on +x, a ring's centre on
+    :func:`gears.cutting.outline.pair_placement` (gear 1 at the origin, gear 2 on +x, a ring's
+    centre on
     -x): N1 = r_b1 (cos alpha_wt, sigma sin alpha_wt), the line running along
     (sin alpha_wt, -sigma cos alpha_wt) through the pitch point C = (r_w1, 0) at u_C = r_b1 tan
     alpha_wt (sigma = +1 external, -1 internal). ``working_pressure_angle`` in degrees.

@@ -2,7 +2,7 @@
 
 External, internal (gear 2 is the ring) or pinion-and-rack, spur or helical. The formulas are
 the vectorised functions of :mod:`gears.meshing` (its docstring defines the positions on the line
-of action); the outlines in mesh come from :mod:`gears.outline`.
+of action); the outlines in mesh come from :mod:`gears.cutting.outline`.
 """
 
 from __future__ import annotations
@@ -19,7 +19,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
-from gears.animate import FORMATS, write_animation
 from gears.arguments import (
     check_angle,
     check_callback,
@@ -34,7 +33,6 @@ from gears.arguments import (
     check_tolerance,
 )
 from gears.budget import check_budget
-from gears.capacity import Rating, rate_pair
 from gears.checks import (
     equal_sliding_split,
     form_lengths,
@@ -42,13 +40,13 @@ from gears.checks import (
     tip_diameter_limits,
     tip_interference,
 )
-from gears.drawing import pair_svg
+from gears.cutting.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.errors import GearError
+from gears.figures.drawing import pair_svg
 from gears.files import check_output
 from gears.gear import Gear
 from gears.geometry import check_real
 from gears.involute import inv
-from gears.mesh import COLOURS, gear_solid, helix_twist, scene, solid_levels, transform
 from gears.meshing import (
     PairGeometry,
     center_distance_shift_sum,
@@ -58,15 +56,17 @@ from gears.meshing import (
     pair_geometry,
     specific_sliding,
 )
-from gears.outline import METHODS, outline_vertices, pair_outlines, pair_placement
+from gears.rating.capacity import Rating, rate_pair
 from gears.report import Finding, Report
+from gears.solid.animate import FORMATS, write_animation
+from gears.solid.mesh import COLOURS, gear_solid, helix_twist, scene, solid_levels, transform
 
 if TYPE_CHECKING:
     import trimesh
     from numpy.typing import ArrayLike
 
-    from gears.cutter import ShaperCutter
-    from gears.materials import Material
+    from gears.cutting.cutter import ShaperCutter
+    from gears.rating.materials import Material
 
 __all__ = ["GearPair", "PathOfContact", "Rack"]
 
@@ -601,7 +601,7 @@ class GearPair:
         speed : float
             Speed of gear 1, rpm (> 0).
         material : str, Material or pair
-            ISO 6336-5 material (:data:`gears.materials.MATERIALS`) of both gears, or a pair.
+            ISO 6336-5 material (:data:`gears.rating.materials.MATERIALS`) of both gears, or a pair.
         life : float
             Required life, hours.
         application_factor : float
@@ -620,15 +620,15 @@ class GearPair:
             b in mm (default: the smaller of the gears' face widths).
         contacts, idler
             Meshes per turn of each gear and idler gears (planets): see
-            :func:`gears.rating.rate_pairs`.
+            :func:`gears.rating.iso6336.rate_pairs`.
         misalignment : float, optional
             F_betax in um, replacing the method C estimate of K_Hbeta.
         root : str
-            How Y_F and Y_S find the root (:data:`gears.capacity.ROOT_ROUTES`; by default
+            How Y_F and Y_S find the root (:data:`gears.rating.capacity.ROOT_ROUTES`; by default
             measured on the real tooth of internal and shaper-cut gears).
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
-            replaces the computed one (:data:`gears.rating.FACTORS`).
+            replaces the computed one (:data:`gears.rating.iso6336.FACTORS`).
 
         Returns
         -------
@@ -662,7 +662,7 @@ class GearPair:
         progress: Callable[[int, int], object] | None = None,
     ) -> tuple[shapely.Polygon, shapely.Polygon]:  # fmt: skip
         """Both outlines in mesh: gear 1 at the origin turned by ``angle`` degrees, gear 2 at the
-        working centre distance (see :func:`gears.outline.pair_outlines`; ``cutter`` is a
+        working centre distance (see :func:`gears.cutting.outline.pair_outlines`; ``cutter`` is a
         shaper cutter for both gears or a pair of them; ``progress(done, total)`` follows a
         simulation of both)."""
         return pair_outlines(self, angle, tolerance, method, backlash, cutter, progress)
@@ -711,7 +711,7 @@ class GearPair:
         """Both gears as a ``trimesh.Scene`` in mesh (nodes ``gear1``, ``gear2``, coloured).
 
         Gear 1 sits at the origin turned by ``angle`` degrees, gear 2 at the working centre
-        distance turned as :meth:`outlines` turns it (:func:`gears.outline.pair_placement`);
+        distance turned as :meth:`outlines` turns it (:func:`gears.cutting.outline.pair_placement`);
         each solid is :meth:`Gear.mesh` of the mounted gear, so a helical pair's hands
         (opposite for external, the same for internal) carry into the twist. ``face_width``
         defaults to each gear's own, else 10 modules; ``progress(done, total)`` follows a
@@ -766,7 +766,7 @@ class GearPair:
         """Write a GIF (or MP4 with ffmpeg) of both outlines in mesh while gear 1 turns by
         ``turn`` degrees (default one mesh cycle, ``360 / z1``), gear 2 placed as
         :meth:`outlines` places it; ``progress(i, n)`` after each frame
-        (:func:`gears.animate.write_animation`). Every argument (the file's folder too) is
+        (:func:`gears.solid.animate.write_animation`). Every argument (the file's folder too) is
         checked and the drawing's size (frames times outline vertices) estimated before any
         work: over the animation budget it is refused with the tolerance that fits."""
         from shapely import affinity
@@ -945,5 +945,5 @@ class GearPair:
 
     def _repr_svg_(self) -> str:
         """Both gears in mesh with the line of action as an SVG picture, what a notebook shows
-        (:func:`gears.drawing.pair_svg`; a text instead when it cannot be drawn)."""
+        (:func:`gears.figures.drawing.pair_svg`; a text instead when it cannot be drawn)."""
         return pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))

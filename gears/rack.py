@@ -49,7 +49,8 @@ class BasicRack:
         Label shown in reports.
     protuberance : float
         Protuberance of the tool flank near its tip, in module units (0 = none). Recorded only:
-        the outlines of :mod:`gears.profile` and :mod:`gears.generate` do not model it yet and
+        the outlines of :mod:`gears.cutting.profile` and :mod:`gears.cutting.generate` do not model
+        it yet and
         refuse a rack with a protuberance rather than draw it without one.
 
     Raises

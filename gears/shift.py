@@ -30,7 +30,8 @@ Each field is a signed margin, positive where the condition holds, zero on the l
 
 Where a gear is undercut (``undercut_*`` < 0) its form circle is taken as the base circle, the
 involute's own limit (the vectorised :func:`gears.geometry.form_diameter`); the exact trochoid
-crossing (:func:`gears.profile.undercut_form_diameter`) is a per-gear root-find and is not needed
+crossing (:func:`gears.cutting.profile.undercut_form_diameter`) is a per-gear root-find and is not
+needed
 to draw the contour, because the undercut limit already excludes that region.
 
 Margins are made dimensionless (divided by the normal module) so a plot at any module is the

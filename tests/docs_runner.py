@@ -66,7 +66,7 @@ def run(block: dict, workdir: str, conn) -> None:
             env = {"__name__": "__main__", "__printed__": printed, "__show__": show}
             exec(compile(tree, f"<{block['id']}>", "exec"), env)
         elif block["lang"] == "bash":
-            from trains.cli import main
+            from trains.cli.app import main
 
             os.symlink(root / "examples", pathlib.Path.cwd() / "examples")
             for line in block["code"].splitlines():

@@ -15,12 +15,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter, pair_geometry
-from gears.export import save
+from gears.cutting.measure import thickness_on
+from gears.cutting.profile import MIN_TOLERANCE
 from gears.geometry import pin_contact_diameter
 from gears.involute import inv
-from gears.measure import thickness_on
 from gears.meshing import center_distance_shift_sum, contact_ratio, line_positions
-from gears.profile import MIN_TOLERANCE
+from gears.solid.export import save
 from trains import Planetary, Train, TrainError, power_flow
 
 SETTINGS = settings(

@@ -1,4 +1,4 @@
-"""The ``geartrain`` CLI: ``pair`` and ``demo`` (issue 2), called through trains.cli.main.
+"""The ``geartrain`` CLI: ``pair`` and ``demo`` (issue 2), called through trains.cli.app.main.
 
 Bad input, exit codes, help and progress (issue 11) are in test_cli_errors.py."""
 
@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from trains.cli import main
+from trains.cli.app import main
 
 
 def _row(out: str, label: str) -> str:
@@ -131,7 +131,7 @@ def test_demo_writes_its_stage_as_a_scene(capsys, tmp_path):
 
 
 def test_demo_sections_are_extensible():
-    from trains.commands import demo
+    from trains.cli import demo
 
     assert all(callable(f) and isinstance(t, str) for t, f in demo.SECTIONS)
 

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from trains.cli import main
+from trains.cli.app import main
 
 
 def _run(capsys, *argv) -> tuple[int, str, str]:

@@ -1,8 +1,8 @@
 """Dask faults get a clear answer (issue 17 item 6): a wrong address, a port where no Dask
 scheduler listens, a cluster that loses its last worker mid-search. From the CLI each is exit 2
 with one line naming what happened, within ``--connect-timeout``; from the API
-(``gears.search.pairs``, ``trains.synthesize_gearbox``, the resolver
-``gears.search.dask_client``) a GearError / TrainError.
+(``gears.search.engine.pairs``, ``trains.synthesize_gearbox``, the resolver
+``gears.search.engine.dask_client``) a GearError / TrainError.
 
 The clusters are in-process ``LocalCluster``s (threads), so each case takes a second or two.
 """
@@ -20,9 +20,9 @@ import pytest
 from distributed import Client, LocalCluster
 
 from gears import GearError
-from gears.search import dask_client, pairs
+from gears.search.engine import dask_client, pairs
 from trains import TrainError, synthesize_gearbox
-from trains.cli import main
+from trains.cli.app import main
 
 SEARCH = ["search", "pairs", "--ratio", "2", "--module", "2", "--teeth", "14", "40"]
 
@@ -152,7 +152,7 @@ def test_a_cluster_without_workers_is_a_train_error():
 
 def test_the_cli_reports_a_lost_worker_as_exit_2(capsys, monkeypatch):
     # the CLI's progress callback is where the test closes the worker, mid-search
-    from trains.commands import search as command
+    from trains.cli.gear_commands import search as command
 
     with _one_worker_cluster() as (cluster, _client):
 
@@ -180,14 +180,14 @@ def test_parquet_without_pyarrow_is_exit_2_before_the_search(capsys, monkeypatch
     # issue 16: the search used to run in full, then exit 2 and throw the table away
     import sys
 
-    import gears.search
+    import gears.search.engine
 
     def no_search(*args, **kwargs):
         raise AssertionError("the search started")
 
     monkeypatch.setitem(sys.modules, "pyarrow", None)  # import pyarrow -> ImportError
     monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
-    monkeypatch.setattr(gears.search, "pairs", no_search)
+    monkeypatch.setattr(gears.search.engine, "pairs", no_search)
     err = _bad_input(capsys, [*SEARCH, "-o", str(tmp_path / "r.parquet")], 10)
     assert "writing Parquet needs pyarrow" in err and "geartrain[parquet]" in err
     assert not (tmp_path / "r.parquet").exists()

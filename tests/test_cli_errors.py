@@ -2,7 +2,7 @@
 
 One class of the issue per section: exit codes; validate first, then print; help; report text;
 progress; the internal pair and PNG fill; a hypothesis sweep of random argv. Everything runs
-through ``trains.cli.main`` (capsys) except the internal-bug case, which needs a real process to
+through ``trains.cli.app.main`` (capsys) except the internal-bug case, which needs a real process to
 show that the traceback reaches the user with exit status 3.
 """
 
@@ -24,8 +24,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from trains import commands
-from trains.cli import build_parser, main
+from trains.cli.app import build_parser, main
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TRAIN_FILE = str(ROOT / "examples" / "train_simple_planetary.toml")
@@ -115,7 +114,7 @@ def test_bad_input_exits_2_with_one_line_naming_it(capsys, argv, named):
     "exc", [ZeroDivisionError("division by zero"), KeyError("involute"), ValueError("numpy")]
 )
 def test_an_internal_bug_shows_its_traceback_and_exits_3(capsys, monkeypatch, exc):
-    from trains.commands import pair
+    from trains.cli.gear_commands import pair
 
     def broken(args):
         print("half a report")
@@ -131,9 +130,9 @@ def test_an_internal_bug_shows_its_traceback_and_exits_3(capsys, monkeypatch, ex
 def test_an_internal_bug_exits_3_from_the_console_process():
     code = (
         "import sys\n"
-        "from trains.commands import pair\n"
+        "from trains.cli.gear_commands import pair\n"
         "pair.build_pair = lambda args: 1 / 0\n"
-        "from trains.cli import main\n"
+        "from trains.cli.app import main\n"
         "sys.exit(main(['pair', '12', '24']))\n"
     )
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
@@ -142,7 +141,7 @@ def test_an_internal_bug_exits_3_from_the_console_process():
 
 
 def test_a_request_too_large_for_memory_is_bad_input_not_a_bug(capsys, monkeypatch):
-    from trains.commands import synthesize
+    from trains.cli.train_commands import synthesize
 
     def huge(args):
         raise MemoryError("Unable to allocate 7.28 TiB for an array")
@@ -156,9 +155,9 @@ def test_a_reader_that_closes_early_is_no_error():
     # `geartrain ... | head -1` with a report larger than the pipe buffer (1 MB here)
     code = (
         "import sys\n"
-        "from trains.commands import pair\n"
+        "from trains.cli.gear_commands import pair\n"
         "pair.run = lambda args: print('x' * 100 + '\\n') or print('y\\n' * 500_000) or 0\n"
-        "from trains.cli import main\n"
+        "from trains.cli.app import main\n"
         "sys.exit(main(['pair', '12', '24']))\n"
     )
     p = subprocess.Popen(
@@ -272,7 +271,7 @@ def test_errors_speak_the_cli_words_not_the_api(capsys, argv, words, api):
 
 def test_an_error_after_the_work_started_prints_no_half_report(capsys, monkeypatch):
     from gears import GearError
-    from trains.commands import pair
+    from trains.cli.gear_commands import pair
 
     real = pair.pair_report
 
@@ -356,7 +355,7 @@ def test_every_help_example_runs(capsys, monkeypatch, tmp_path, where, example):
 
 def test_scheme_help_names_every_scheme():
     # the help text lists the schemes without importing the library; it must not drift
-    from trains.planetary import SCHEMES
+    from trains.planetary.stage import SCHEMES
 
     for name in ("planetary", "synthesize"):
         text = " ".join(_subparsers()[name].format_help().split())
@@ -365,9 +364,9 @@ def test_scheme_help_names_every_scheme():
 
 def test_command_modules_import_the_library_only_inside_run():
     # building the parser (geartrain --help) must not import numpy, scipy or the library: the
-    # command modules' top-level imports are the standard library and trains.commands._common
+    # command modules' top-level imports are the standard library and trains.cli._common
     stdlib = set(sys.stdlib_module_names) | {"__future__"}
-    paths = [*pathlib.Path(commands.__path__[0]).glob("*.py"), ROOT / "trains" / "cli.py"]
+    paths = [*(ROOT / "trains" / "cli").rglob("*.py")]
     assert len(paths) >= 9
     for path in paths:
         tree = ast.parse(path.read_text())
@@ -379,7 +378,7 @@ def test_command_modules_import_the_library_only_inside_run():
             else:
                 continue
             for n in names:
-                ok = n.split(".")[0] in stdlib or n in ("trains", "trains.commands._common")
+                ok = n.split(".")[0] in stdlib or n in ("trains", "trains.cli._common")
                 assert ok, f"{path.name} imports {n} at module level"
 
 
@@ -387,7 +386,7 @@ def test_help_loads_neither_numpy_nor_the_library():
     # the end-to-end form of the rule above, through the lazy trains facade (PEP 562): a fresh
     # interpreter builds every parser and has imported no numpy, scipy, shapely or gears
     code = (
-        "import sys, trains.cli; trains.cli.build_parser(); "
+        "import sys, trains.cli.app; trains.cli.app.build_parser(); "
         "print(sorted(m for m in ('numpy', 'scipy', 'shapely', 'gears') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
@@ -458,7 +457,7 @@ def test_synthesize_reports_progress_per_block():
     )
     assert found
     # z = 17..120 is 104 counts; 10^6 // 104^2 = 92 z1 values a block -> 2 blocks (brute force
-    # of the block rule in trains.synthesis)
+    # of the block rule in trains.design.synthesis)
     assert calls == [(1, 2), (2, 2)]
 
 
@@ -469,7 +468,7 @@ def test_no_progress_bar_when_stderr_is_not_a_terminal(capsys):
 
 
 def test_progress_bar_on_a_terminal(monkeypatch):
-    from trains.commands import _common
+    from trains.cli import _common
 
     class Tty(io.StringIO):
         def isatty(self):
@@ -484,7 +483,7 @@ def test_progress_bar_on_a_terminal(monkeypatch):
 
 
 def test_profile_feeds_the_outline_progress_to_the_bar(capsys, monkeypatch, tmp_path):
-    from trains.commands import profile
+    from trains.cli.gear_commands import profile
 
     calls = []
 
@@ -531,12 +530,13 @@ def test_png_leaves_bores_and_ring_interiors_unfilled(capsys, tmp_path, argv, ho
     import matplotlib.image
 
     png = tmp_path / "gear.png"
-    # the figure is drawn by gears.plot.outlines_figure, which save() uses; its data -> pixel
+    # the figure is drawn by gears.figures.plot.outlines_figure, which save() uses; its data ->
+    # pixel
     # transform locates the hole's centre in the written image
     code, _, _ = _run(capsys, *argv, "--tolerance", "0.05", "-o", png)
     assert code == 0
     from gears import Gear, GearPair
-    from gears.plot import outlines_figure
+    from gears.figures.plot import outlines_figure
 
     z = int(argv[1])
     gear = Gear(z, 2 if "-m" in argv else 1, internal="--internal" in argv)
@@ -659,7 +659,8 @@ def test_random_argv_gets_a_clear_answer(command, data):
 
 
 def test_planetary_frames_beyond_the_bound_name_the_option(capsys, tmp_path):
-    # Planetary.animate refuses more than gears.animate.MAX_FRAMES frames; the CLI says --frames
+    # Planetary.animate refuses more than gears.solid.animate.MAX_FRAMES frames; the CLI says
+    # --frames
     code, out, err = _run(
         capsys, "planetary", "18", "45", "108", "--planets", "3", "--animate",
         str(tmp_path / "a.gif"), "--frames", "100000",

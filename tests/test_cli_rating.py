@@ -9,7 +9,7 @@ import pytest
 
 from gears import Gear, GearPair
 from trains import Planetary
-from trains.cli import main
+from trains.cli.app import main
 
 
 def _run(capsys, *argv) -> tuple[int, str, str]:

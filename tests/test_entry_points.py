@@ -24,7 +24,7 @@ from trains import Planetary, TrainError
 
 trimesh = pytest.importorskip("trimesh")
 
-from gears.mesh import gear_solid  # noqa: E402
+from gears.solid.mesh import gear_solid  # noqa: E402
 
 SECONDS, BYTES = 5.0, 2 * 2**30
 
@@ -291,7 +291,7 @@ def test_the_tolerance_floor_follows_the_module():
 def test_synthesize_candidates_pass_their_own_neighbour_check():
     # issue: a candidate failed its own neighbour check by -1.4e-14. Six planets at clearance 0
     # touch exactly (2 a sin 30 deg = a = the tip diameter, in exact arithmetic); the search and
-    # the stage decide with the one stated tolerance (trains.planetary.NEIGHBOUR_TOLERANCE)
+    # the stage decide with the one stated tolerance (trains.planetary.stage.NEIGHBOUR_TOLERANCE)
     from trains import synthesize
 
     found = synthesize(3, 6, scheme="stepped", clearance=0.0, module=0.3, z_min=17, z_max=100,
@@ -307,7 +307,7 @@ def test_pareto_keeps_module_twins_whose_objectives_tie():
     # front row appears once per module
     import collections
 
-    from gears import search
+    from gears.search import engine as search
 
     r = search.pairs(ratio=2.5, module=(1, 2, 3), teeth=(12, 40), shifts=(-0.5, 1.0, 0.1),
                      objective=("sliding", "-contact_ratio"), top=None)  # fmt: skip
@@ -374,7 +374,7 @@ def test_a_zero_backlash_stage_never_interpenetrates(helix, tol):
     # (the ring's chords cut into the tooth spaces). Exact booleans (manifold3d, float64): no
     # volume in common, yet every mesh engaged (the gap within the tolerance), and a 0.5-degree
     # turn of the sun or ring makes them collide (so the test can fail)
-    from gears.mesh import to_manifold, transform
+    from gears.solid.mesh import to_manifold, transform
 
     p = Planetary(19, 29, 77, n_planets=3, module=1, helix_angle=helix)
     assert p.check().ok

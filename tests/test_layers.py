@@ -1,9 +1,10 @@
-"""The import structure holds to the layer map of docs/architecture.md (issue 9).
+"""The import structure holds to the layer and family map of docs/architecture.md.
 
 Every import of a project module is read from the source (function-level "lazy" imports and
 ``TYPE_CHECKING`` blocks included), and each must point to a strictly lower layer of the same
-package, or from ``trains`` into ``gears``. The package ``__init__`` files are the facades on top
-and may import their own package's modules; no module imports its own package's facade.
+package, or from ``trains`` into ``gears``. The ``__init__`` files are facades: the packages' on
+top may import their own package's modules, the families' import nothing but ``gears.lazy``; no
+module imports a facade of its own package, nor a private (``_name``) module of another family.
 The order below is the one docs/architecture.md states; a test checks the two agree.
 """
 
@@ -17,21 +18,23 @@ import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
-# bottom to top; a module may import only modules of a lower layer of its own package
+# bottom to top; a module may import only modules of a lower layer (of its own package, or
+# trains -> gears). A dotted name is a module of a family subpackage: "cutting.cutter" is
+# gears/cutting/cutter.py, of the family "cutting"; an undotted name belongs to the core.
 LAYERS = {
     "gears": [
-        ["errors", "display"],
-        ["involute", "report", "files", "materials", "arguments", "budget"],
+        ["errors", "display", "lazy"],
+        ["involute", "report", "files", "arguments", "budget", "rating.materials"],
         ["geometry", "meshing"],
-        ["rack", "cutter", "bevel"],
-        ["profile", "measure", "checks", "rating", "spherical"],
-        ["generate", "crown", "sizing"],
-        ["outline", "root"],
-        ["mesh", "animate", "drawing", "bevel_mesh"],
-        ["gear", "capacity", "render"],
+        ["rack", "cutting.cutter", "bevel.cone"],
+        ["checks", "cutting.profile", "cutting.measure", "rating.iso6336", "bevel.spherical"],
+        ["cutting.generate", "bevel.crown", "rating.sizing"],
+        ["cutting.outline", "rating.root"],
+        ["solid.mesh", "solid.animate", "figures.drawing", "bevel.solid"],
+        ["gear", "rating.capacity", "solid.render"],
         ["pair"],
-        ["shift", "plot", "bevel_pair"],
-        ["export", "search"],
+        ["shift", "figures.plot", "bevel.pair"],
+        ["solid.export", "search.engine"],
     ],
     "trains": [
         ["errors"],
@@ -39,15 +42,32 @@ LAYERS = {
         ["willis"],
         ["power", "coaxial"],
         ["capacity"],
-        ["planetary", "catalog", "differential"],
-        ["synthesis", "toml_format", "sizing"],
-        ["gearbox"],
-        ["commands", "commands._common"],
-        ["commands.*"],
-        ["commands.demo"],
-        ["cli"],
+        ["catalog", "differential", "planetary.stage"],
+        ["toml_format", "design.synthesis", "design.sizing"],
+        ["design.gearbox"],
+        ["cli._common"],
+        ["cli.gear_commands.*", "cli.train_commands.*"],
+        ["cli.demo"],
+        ["cli.app"],
     ],
 }
+
+# the family subpackages of each package (docs/architecture.md, "Families"); the rest is the core
+FAMILIES = {
+    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search"],
+    "trains": ["planetary", "design", "cli"],
+}
+
+
+def _family(package: str, module: str) -> str:
+    head = module.split(".", 1)[0]
+    return head if head in FAMILIES[package] else "core"
+
+
+def _is_facade(package: str, module: str) -> bool:
+    """The package itself ("") or one of its subpackages (an ``__init__.py``)."""
+    path = MODULES[package].get(module)
+    return path is not None and path.name == "__init__.py"
 
 
 def _layer(package: str, module: str) -> int | None:
@@ -114,28 +134,62 @@ def _edges():
 
 def test_every_module_has_a_layer():
     missing = [
-        f"{p}.{m}" for p, mods in MODULES.items() for m in mods if m and _layer(p, m) is None
+        f"{p}.{m}"
+        for p, mods in MODULES.items()
+        for m in mods
+        if not _is_facade(p, m) and _layer(p, m) is None
     ]
     assert not missing, f"modules without a layer in docs/architecture.md: {missing}"
 
 
+def test_every_family_is_a_subpackage_and_every_subpackage_a_family():
+    for package, families in FAMILIES.items():
+        found = sorted(d.name for d in (ROOT / package).iterdir() if (d / "__init__.py").is_file())
+        assert found == sorted(families), package
+
+
+def _private(module: str) -> bool:
+    return any(part.startswith("_") for part in module.split("."))
+
+
+def _wrong(package, module, path, target_pkg, target, line) -> str | None:
+    where = f"{path.relative_to(ROOT)}:{line} imports {target_pkg}.{target or '(facade)'}"
+    if target_pkg != package:
+        if not (package == "trains" and target_pkg == "gears"):
+            return f"{where}: gears never imports trains"
+        if _private(target):
+            return f"{where}: a private module of gears"
+        return None
+    if _is_facade(package, module):  # a facade gathers its own subpackage, nothing else
+        inside = not module or target == module or target.startswith(module + ".")
+        return None if inside or target == "lazy" else f"{where}: a facade outside its own family"
+    if _is_facade(package, target):
+        return f"{where}: a module never imports a facade of its own package"
+    if _private(target) and _family(package, target) != _family(package, module):
+        return f"{where}: a private module of the family {_family(package, target)!r}"
+    lo, hi = _layer(package, target), _layer(package, module)
+    if lo is None or hi is None or not lo < hi:
+        return f"{where}: layer {hi} may import only layers below it (this is {lo})"
+    return None
+
+
 def test_imports_point_down():
-    wrong = []
-    for package, module, path, target_pkg, target, line in _edges():
-        where = f"{path.relative_to(ROOT)}:{line} imports {target_pkg}.{target or '(facade)'}"
-        if target_pkg != package:
-            if not (package == "trains" and target_pkg == "gears"):
-                wrong.append(f"{where}: gears never imports trains")
-            continue
-        if module == "":  # the facade may gather its package
-            continue
-        if target == "":
-            wrong.append(f"{where}: a module never imports its own package's facade")
-            continue
-        lo, hi = _layer(package, target), _layer(package, module)
-        if lo is None or hi is None or not lo < hi:
-            wrong.append(f"{where}: layer {hi} may import only layers below it (this is {lo})")
+    wrong = [w for edge in _edges() if (w := _wrong(*edge))]
     assert not wrong, "\n".join(wrong)
+
+
+def test_family_facades_load_nothing():
+    # importing one module of a family runs the family's __init__: it must not load the rest
+    # (imports inside its functions run only when they are called)
+    loud = []
+    for package, families in FAMILIES.items():
+        for family in families:
+            path = MODULES[package][family]
+            eager = {n.lineno for n in ast.parse(path.read_text()).body}
+            for target_pkg, target, line in _imports(path, package, family):
+                if line in eager and (target_pkg, target) != ("gears", "lazy"):
+                    loud.append(f"{path.relative_to(ROOT)}:{line} imports {target_pkg}.{target}")
+    assert not loud, loud
 
 
 def test_no_import_circles():
@@ -169,14 +223,18 @@ def test_architecture_doc_states_the_same_order():
         rows = re.findall(r"^\|\s*(\d+)\s*\|([^|]*)\|", section, flags=re.M)
         stated = [sorted(re.findall(r"`([\w.*]+)`", names)) for _, names in rows]
         assert stated == [sorted(names) for names in layers], package
+        families = re.findall(r"^\|\s*`(\w+)/`\s*\|", section, flags=re.M)
+        assert sorted(families) == sorted(FAMILIES[package]), package
 
 
 @pytest.mark.parametrize("package", sorted(MODULES))
 def test_every_module_opens_with_its_layer(package):
     missing = []
     for module, path in MODULES[package].items():
-        if not module or module.startswith("commands."):
-            continue  # a command's docstring is its --help text; commands/__init__ names the layer
+        if _is_facade(package, module) or module.startswith(
+            ("cli.gear_", "cli.train_", "cli.demo")
+        ):
+            continue  # a command's docstring is its --help text
         doc = ast.get_docstring(ast.parse(path.read_text())) or ""
         found = re.match(r"Layer (\d+)", doc)
         if not found or int(found.group(1)) != _layer(package, module):
@@ -191,3 +249,41 @@ def test_the_checker_sees_a_wrong_way_import(tmp_path):
     ((pkg, target, _),) = _imports(bad, "gears", "geometry")
     assert (pkg, target) == ("gears", "gear")
     assert not _layer("gears", target) < _layer("gears", "geometry")
+
+
+def test_the_checker_sees_a_reach_into_another_family(tmp_path):
+    # a private module of the rating family is not for the cutting family
+    bad = tmp_path / "outline.py"
+    bad.write_text("from gears.rating._factors import x\n")
+    edge = ("gears", "cutting.outline", ROOT / "gears" / "cutting" / "outline.py")
+    ((pkg, target, line),) = _imports(bad, "gears", "cutting.outline")
+    assert "private module of the family 'rating'" in _wrong(*edge, pkg, target, line)
+    assert _wrong(*edge, "gears", "rating", 1).endswith("a facade of its own package")
+
+
+def test_architecture_figure_is_drawn_from_the_tables(tmp_path):
+    # docs/make_architecture_figure.py reads the same tables this test holds the code to
+    pytest.importorskip("matplotlib")
+    import runpy
+
+    mod = runpy.run_path(str(ROOT / "docs" / "make_architecture_figure.py"))
+    tables = mod["layer_tables"]((ROOT / "docs" / "architecture.md").read_text())
+    assert tables == LAYERS
+    (path,) = mod["main"](tmp_path)
+    assert path.name == "architecture.png" and path.stat().st_size > 10_000
+
+
+def test_version_is_the_distribution_version():
+    # gears.__version__ and trains.__version__ come from the installed metadata, which
+    # pyproject.toml's [project] version sets (source: the packaging metadata itself)
+    import importlib.metadata
+    import tomllib
+
+    import gears
+    import trains
+
+    stated = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["version"]
+    installed = importlib.metadata.version("geartrain")
+    assert gears.__version__ == trains.__version__ == installed
+    if installed != stated:
+        pytest.fail(f"installed {installed}, pyproject.toml {stated}: reinstall (pip install -e .)")

@@ -33,8 +33,8 @@ from trains import Planetary, Train, TrainError, power_flow, synthesize, synthes
 
 trimesh = pytest.importorskip("trimesh")
 
-from gears.export import save  # noqa: E402
-from gears.mesh import gear_solid  # noqa: E402
+from gears.solid.export import save  # noqa: E402
+from gears.solid.mesh import gear_solid  # noqa: E402
 
 SCALE = float(os.environ.get("GEARTRAIN_PROPERTY_SCALE", "1"))
 SECONDS = 30.0  # a bound, not a benchmark: the machine is shared (the reproducers: 5 s)
@@ -566,7 +566,7 @@ def _brute_pairs(teeth, shifts, module=2.0):
     ),
 )
 def test_search_pairs_equal_brute_force(teeth, shifts):
-    from gears.search import pairs
+    from gears.search.engine import pairs
 
     r = answer(lambda: pairs(module=2, teeth=teeth, shifts=shifts, top=None, progress=False))
     got = {

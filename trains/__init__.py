@@ -7,7 +7,7 @@
 >>> t.ratio("sun", "arm", fixed=["ring"])
 Fraction(5, 1)
 
-The names below are imported on first use (PEP 562), so that ``import trains.cli`` and
+The names below are imported on first use (PEP 562), so that ``import trains.cli.app`` and
 ``geartrain --help`` do not load numpy, shapely and the whole library (issue 11 §7).
 """
 
@@ -16,15 +16,15 @@ from __future__ import annotations
 import importlib
 
 _WHERE = {
-    "Assembly": "trains.planetary",
-    "Candidate": "trains.synthesis",
-    "Candidates": "trains.synthesis",
-    "Gearbox": "trains.gearbox",
-    "Gearboxes": "trains.gearbox",
+    "Assembly": "trains.planetary.stage",
+    "Candidate": "trains.design.synthesis",
+    "Candidates": "trains.design.synthesis",
+    "Gearbox": "trains.design.gearbox",
+    "Gearboxes": "trains.design.gearbox",
     "IllConditionedTrainWarning": "trains.willis",
     "Motion": "trains.willis",
-    "Placement": "trains.planetary",
-    "Planetary": "trains.planetary",
+    "Placement": "trains.planetary.stage",
+    "Planetary": "trains.planetary.stage",
     "PowerFlow": "trains.power",
     "Relation": "trains.willis",
     "RelationPower": "trains.power",
@@ -51,8 +51,8 @@ _WHERE = {
     "simple_planetary": "trains.catalog",
     "stepped_planetary": "trains.catalog",
     "strain_wave": "trains.catalog",
-    "synthesize": "trains.synthesis",
-    "synthesize_gearbox": "trains.gearbox",
+    "synthesize": "trains.design.synthesis",
+    "synthesize_gearbox": "trains.design.gearbox",
     "wolfrom": "trains.catalog",
 }
 
@@ -60,6 +60,13 @@ __all__ = sorted(_WHERE)
 
 
 def __getattr__(name: str):
+    if name == "__version__":  # pyproject.toml's version, as installed (gears.__version__ too)
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            return version("geartrain")
+        except PackageNotFoundError:  # pragma: no cover - a bare source tree, not installed
+            return "unknown"
     if name in _WHERE:
         value = getattr(importlib.import_module(_WHERE[name]), name)
         globals()[name] = value  # once: later lookups are plain attributes

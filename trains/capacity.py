@@ -84,7 +84,7 @@ def rating(
     speed : float
         Speed of the input member, rpm (> 0).
     material : name, Material, pair or mapping
-        The gears' material (:mod:`gears.materials`), or a mapping mesh name -> material.
+        The gears' material (:mod:`gears.rating.materials`), or a mapping mesh name -> material.
     face_width : float or mapping, optional
         Face width of every mesh (mm) or per mesh name; default the gears' own.
     load_sharing_factor : float or mapping, optional

@@ -3,7 +3,7 @@
 The geometric conditions of a train of real gears, as vectorised numpy functions.
 
 Pure formulas (no classes, no trains): :class:`trains.willis.Train` (``Train.check``) and
-:class:`trains.planetary.Planetary` both evaluate them.
+:class:`trains.planetary.stage.Planetary` both evaluate them.
 
 * assembly number of identical planets between two central gears (lectures §4.3,
   standards.md §4): ``T = |z_b z_c - s_a s_b z_a z_d| / gcd(z_c, z_d)``, s = -1 for an external

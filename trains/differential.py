@@ -33,8 +33,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from gears import BevelPair, GearError, Report
-from gears.bevel_mesh import rotation
-from gears.drawing import bevel_svg
+from gears.bevel.solid import rotation
+from gears.figures.drawing import bevel_svg
 from trains.errors import TrainError
 from trains.willis import Motion, Train
 
@@ -227,7 +227,7 @@ class Differential:
         """
         from gears.arguments import check_tolerance
         from gears.budget import check_budget
-        from gears.mesh import scene
+        from gears.solid.mesh import scene
 
         place = self.placements(angle, left, right)
         try:
@@ -256,12 +256,12 @@ class Differential:
         speeds ``left`` and ``right`` (the outer wheel faster), the faster one turning by
         ``turn`` degrees over the animation (default two pinion pitches, ``720 / z_pinion``),
         every member in proportion (:meth:`placements`), seen from ``elevation`` and ``azimuth``
-        degrees, ``size`` pixels square (:func:`gears.render.write_animation_3d`;
+        degrees, ``size`` pixels square (:func:`gears.solid.render.write_animation_3d`;
         ``progress(i, n)`` after each frame)."""
         from gears.arguments import check_frames, check_tolerance
-        from gears.bevel_pair import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
+        from gears.bevel.pair import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
         from gears.budget import check_budget
-        from gears.render import Camera, write_animation_3d
+        from gears.solid.render import Camera, write_animation_3d
 
         try:
             n = check_frames(frames)
@@ -321,7 +321,7 @@ class Differential:
     def _repr_svg_(self) -> str:
         """What a notebook shows: the differential in the axial section through the axle and
         the first pinion (the side gears left and right, the pinions in that plane above and
-        below), drawn by :func:`gears.drawing.bevel_svg`."""
+        below), drawn by :func:`gears.figures.drawing.bevel_svg`."""
 
         def parts() -> list:
             side, pinion = self.pair.g2, self.pair.g1

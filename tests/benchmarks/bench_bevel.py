@@ -37,7 +37,7 @@ import time
 import numpy as np
 
 from gears import BevelPair
-from gears.spherical import polar
+from gears.bevel.spherical import polar
 from trains import Differential
 
 RESULTS = pathlib.Path(__file__).with_name("results") / "bevel.json"

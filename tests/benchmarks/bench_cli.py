@@ -7,7 +7,8 @@ run: ``python -c pass``, the interpreter's own start-up on this machine. ``--tre
 source tree first on ``PYTHONPATH`` (e.g. an export of an older commit, for before/after).
 
 The target (issue 11): ``geartrain --help`` under 0.3 s. What it costs beyond the interpreter is
-the import of ``trains.cli``; the rows ``import trains`` and ``import numpy`` show how much of it
+the import of ``trains.cli.app``; the rows ``import trains`` and ``import numpy`` show how much of
+it
 is the package facade (now lazy: PEP 562) and numpy. The row "CLI alone" runs ``--help`` with
 that facade replaced by an empty package: the cost of the command line's own modules.
 """
@@ -30,7 +31,7 @@ STUB = (
     "spec = importlib.util.find_spec('trains')\n"
     "pkg = types.ModuleType('trains'); pkg.__path__ = list(spec.submodule_search_locations)\n"
     "sys.modules['trains'] = pkg\n"
-    "from trains.cli import main\n"
+    "from trains.cli.app import main\n"
     "sys.exit(main(['--help']))\n"
 )
 
@@ -38,10 +39,13 @@ COMMANDS = [
     ("python -c pass (baseline)", ["-c", "pass"]),
     ("python -c 'import numpy'", ["-c", "import numpy"]),
     ("python -c 'import trains'", ["-c", "import trains"]),
-    ("python -m trains.cli --help", ["-m", "trains.cli", "--help"]),
+    ("python -m trains.cli.app --help", ["-m", "trains.cli.app", "--help"]),
     ("CLI alone: --help, trains facade not run", ["-c", STUB]),
-    ("python -m trains.cli pair --help", ["-m", "trains.cli", "pair", "--help"]),
-    ("python -m trains.cli pair 12 24 (a report)", ["-m", "trains.cli", "pair", "12", "24"]),
+    ("python -m trains.cli.app pair --help", ["-m", "trains.cli.app", "pair", "--help"]),
+    (
+        "python -m trains.cli.app pair 12 24 (a report)",
+        ["-m", "trains.cli.app", "pair", "12", "24"],
+    ),
 ]
 
 

@@ -2,7 +2,7 @@
 a bevel pair, a stage and a differential, and of the HTML tables of a Report and a Rating.
 
 Each display is timed as the best of N wall times (``time.perf_counter``), beside a baseline
-measured in the same run: the same gear written as :func:`gears.export.to_svg` writes a file
+measured in the same run: the same gear written as :func:`gears.solid.export.to_svg` writes a file
 (the outline at the library's default tolerance, 0.001 mm, 6 decimals), which is what a
 drawing would cost without the display tolerance. The target is under 20 ms for a gear. Prints
 a Markdown table for docs/performance.md, with the machine's load average.

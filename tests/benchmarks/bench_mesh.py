@@ -34,8 +34,8 @@ import trimesh
 from shapely import affinity
 
 from gears import Gear
-from gears.export import save
-from gears.mesh import gear_solid, helix_twist, scene, slice_count
+from gears.solid.export import save
+from gears.solid.mesh import gear_solid, helix_twist, scene, slice_count
 from trains import Planetary
 
 HERE = pathlib.Path(__file__).resolve().parent

@@ -4,7 +4,7 @@ Full outlines (all teeth, shapely Polygon), ISO 53 A, m = 1, tolerances 1e-1 ...
 each method the best-of-N wall time and the *achieved* deviation, measured as the Hausdorff
 distance to the exact outline of the same tool at tolerance / 1000:
 
-* ``analytic``: z = 20, the rack envelope (`gears.profile.outline`); against itself at
+* ``analytic``: z = 20, the rack envelope (`gears.cutting.profile.outline`); against itself at
   tolerance / 1000, so this measures the chord sag;
 * ``rack``: z = 20, the simulated rack cutting (`rack_outline`), against the analytic outline
   (scallops, tool polygon, tip circle);
@@ -29,9 +29,9 @@ import shapely
 
 from gears import Gear
 from gears.arguments import min_tolerance
-from gears.cutter import ShaperCutter
-from gears.generate import rack_outline, shaper_outline
-from gears.profile import outline
+from gears.cutting.cutter import ShaperCutter
+from gears.cutting.generate import rack_outline, shaper_outline
+from gears.cutting.profile import outline
 
 HERE = pathlib.Path(__file__).resolve().parent
 CHART = HERE.parent.parent / "docs" / "images" / "profile_speed_accuracy.png"

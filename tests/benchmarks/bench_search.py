@@ -19,7 +19,7 @@ import platform
 import time
 
 from gears.meshing import default_threads
-from gears.search import pairs
+from gears.search.engine import pairs
 from trains import synthesize_gearbox
 
 REPEAT = 3

@@ -1,4 +1,4 @@
-"""Animations of outlines in mesh (issue 10): gears.animate.write_animation, GearPair.animate,
+"""Animations of outlines in mesh (issue 10): gears.solid.animate.write_animation, GearPair.animate,
 Planetary.animate and the frames they draw (Planetary.outlines over one mesh cycle).
 
 Sources: the Willis relation (w_a - w_H) z_a = -(w_b - w_H) z_b for each mesh, so relative to the
@@ -21,7 +21,7 @@ pytest.importorskip("matplotlib")
 from PIL import Image
 
 from gears import Gear, GearError, GearPair
-from gears.animate import write_animation
+from gears.solid.animate import write_animation
 from trains import Planetary, TrainError
 
 

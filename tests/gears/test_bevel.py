@@ -1,4 +1,5 @@
-"""Straight bevel gear geometry (issue 19): gears.bevel formulas and the BevelPair/BevelGear views.
+"""Straight bevel gear geometry (issue 19): gears.bevel.cone formulas and the BevelPair/BevelGear
+views.
 
 Reference values and their sources:
 - KHK Technical Reference (Kohara Gear Industry, "Gear Technical Reference", §4.3 bevel gears):
@@ -25,14 +26,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from gears import BevelPair, Gear, GearError, GearPair
-from gears.bevel import (
+from gears.bevel.cone import (
     bevel_geometry,
     face_width_margins,
     gleason_coefficients,
     pitch_angles,
     virtual_teeth,
 )
-from gears.bevel_pair import VirtualGear
+from gears.bevel.pair import VirtualGear
 
 
 # ------------------------------------------------------------------------------ cone formulas

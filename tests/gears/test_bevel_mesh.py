@@ -1,5 +1,5 @@
-"""Bevel tooth surfaces, solids and scenes (issue 19): gears.spherical, gears.crown,
-gears.bevel_mesh, BevelGear.mesh and BevelPair.scene.
+"""Bevel tooth surfaces, solids and scenes (issue 19): gears.bevel.spherical, gears.bevel.crown,
+gears.bevel.solid, BevelGear.mesh and BevelPair.scene.
 
 Reference values and their sources:
 - the exact octoid by an independent route: the envelope of the crown gear's flank plane
@@ -8,7 +8,8 @@ Reference values and their sources:
 - the exact spherical involute by its closed form: a great circle rolling on the base cone
   sin(delta_b) = sin(delta) cos(alpha) (Ozols §21-10), polar angle cos(theta) = cos(psi)
   cos(delta_b), azimuth roll - atan2(sin psi, cos psi sin delta_b) (written out here);
-- brute force: the crown gear rolled position by position and united (gears.crown), against the
+- brute force: the crown gear rolled position by position and united (gears.bevel.crown), against
+the
   closed-form envelope;
 - the design tooth thickness on the mean pitch cone (ISO 23509, tested in test_bevel.py), scaled
   with the cone distance (the teeth are conical);
@@ -30,9 +31,9 @@ manifold3d = pytest.importorskip("manifold3d")
 from scipy.spatial import cKDTree  # noqa: E402
 
 from gears import BevelPair, GearError  # noqa: E402
-from gears.crown import crown_space, gnomonic  # noqa: E402
-from gears.mesh import to_manifold  # noqa: E402
-from gears.spherical import direction, polar  # noqa: E402
+from gears.bevel.crown import crown_space, gnomonic  # noqa: E402
+from gears.bevel.spherical import direction, polar  # noqa: E402
+from gears.solid.mesh import to_manifold  # noqa: E402
 
 
 # ------------------------------------------------------------------------------ helpers
@@ -73,7 +74,7 @@ def _sphere_section(mesh, radius: float) -> np.ndarray:
 
 def _fold(u, z: int):
     """(polar, azimuth from the space centre) of unit vectors of a gear whose tooth 0 is centred
-    on azimuth 0, folded onto the half space of gears.spherical (space centre at 0, tooth at
+    on azimuth 0, folded onto the half space of gears.bevel.spherical (space centre at 0, tooth at
     +pi/z)."""
     th, az = polar(u)
     pitch = 2 * math.pi / z

@@ -23,7 +23,7 @@ from gears.checks import (
     tooth_height_margin,
     undercut_form_diameter,
 )
-from gears.profile import undercut_form_diameter as brent_form_diameter
+from gears.cutting.profile import undercut_form_diameter as brent_form_diameter
 
 
 def _brute(z1s, z2s, xs, module=2.0, helix=0.0, internal=False):
@@ -68,7 +68,7 @@ def test_margins_equal_the_pair_check(z1s, z2s, xs, helix, internal):
 
 
 def test_undercut_form_diameter_equals_brent():
-    # independent route: gears.profile.undercut_form_diameter (Brent per gear)
+    # independent route: gears.cutting.profile.undercut_form_diameter (Brent per gear)
     cases = [(z, x) for z in (5, 7, 9, 12, 14) for x in (-0.3, 0.0, 0.2)]
     cases = [(z, x) for z, x in cases if Gear(z, 1.5, profile_shift=x).undercut]
     z = np.array([c[0] for c in cases])

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from gears import Gear, GearError, GearPair, Rack, search
 from gears.display import html_table, message_svg, svg
-from gears.drawing import WIDTH, display_tolerance, gear_svg, shown
+from gears.figures.drawing import WIDTH, display_tolerance, gear_svg, shown
 from gears.report import Finding, Report
 
 NS = "{http://www.w3.org/2000/svg}"
@@ -59,7 +59,8 @@ def is_message(root: ET.Element) -> str:
 
 
 def test_gear_svg_is_its_outline():
-    # source: the outline itself (gears.outline at the display tolerance): the drawn polygon has
+    # source: the outline itself (gears.cutting.outline at the display tolerance): the drawn
+    # polygon has
     # its area to the written digits (2 decimals at this size), the view box holds the tip
     # circle with a 2 % margin, the dashed circle is the reference circle d = z m
     g = Gear(12, 3, profile_shift=0.6)
@@ -124,7 +125,8 @@ def test_pair_svg_draws_the_path_of_contact_between_the_tip_circles(pair):
 
 
 def test_what_cannot_be_drawn_says_why():
-    # z = 4, x = -0.5: the fillets cut the teeth away; the outline is refused by gears.profile
+    # z = 4, x = -0.5: the fillets cut the teeth away; the outline is refused by
+    # gears.cutting.profile
     root = parse(Gear(4, 1, profile_shift=-0.5)._repr_svg_())
     text = is_message(root)
     assert text.startswith("this gear is not drawn") and "undercut" in text
@@ -263,10 +265,11 @@ def test_pair_display_never_raises(z1, z2, m, x1, x2, internal):
 
 
 def test_rating_html_shows_safeties_factors_and_quantities():
-    # the rating's own numbers (gears.capacity.Rating), printed to 4 decimals; the safety rows
+    # the rating's own numbers (gears.rating.capacity.Rating), printed to 4 decimals; the safety
+    # rows
     # are marked exactly when check() (S_Hmin = 1, S_Fmin = 1.4) fails them: at 200 N m this
     # pair holds, at 2000 N m every safety fails (the rating's own check)
-    from gears.rating import FACTORS, QUANTITIES
+    from gears.rating.iso6336 import FACTORS, QUANTITIES
 
     pair = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
     for torque, failing in ((200, []), (2000, ["safety pitting S_H", "safety bending S_F"])):
@@ -287,12 +290,12 @@ def test_rating_html_shows_safeties_factors_and_quantities():
 
 @pytest.mark.parametrize("clearance", ["tapered", "constant"])
 def test_bevel_axial_section_meets_the_blank_dimensions(clearance):
-    # source: KHK Table 4.10 blank dimensions as gears.bevel.bevel_geometry computes them
+    # source: KHK Table 4.10 blank dimensions as gears.bevel.cone.bevel_geometry computes them
     # (outside diameter d_ae, pitch apex to crown X, inner outside diameter
     # d_ai = d_ae - 2 b sin(delta_a) / cos(theta_a)): the section's outer tip is (d_ae/2, X) and
     # its inner tip lies at d_ai/2 from the axis; with tapered clearance every cone meets the
     # pitch apex, so the inner corners are the outer ones scaled by R_i / R_e
-    from gears.bevel import axial_section, bevel_geometry
+    from gears.bevel.cone import axial_section, bevel_geometry
 
     b = 22.0
     g = bevel_geometry(20, 40, 3.0, b, clearance=clearance)

@@ -7,8 +7,8 @@ import pytest
 import shapely
 
 from gears import Gear, GearError, GearPair
-from gears.export import points, save, to_dxf, to_svg
-from trains.cli import main
+from gears.solid.export import points, save, to_dxf, to_svg
+from trains.cli.app import main
 
 
 def _svg_rings(path):
@@ -73,7 +73,7 @@ def test_plots_render(tmp_path):
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from gears.plot import generation_figure, pair_figure, tooth_figure
+    from gears.figures.plot import generation_figure, pair_figure, tooth_figure
 
     for fig in (
         tooth_figure(Gear(8, 1)),
@@ -91,8 +91,8 @@ def test_shaper_generation_figure(tmp_path):
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    from gears.cutter import ShaperCutter
-    from gears.plot import generation_figure
+    from gears.cutting.cutter import ShaperCutter
+    from gears.figures.plot import generation_figure
 
     ring = Gear(40, 1, internal=True, profile_shift=0.3)
     for fig in (
@@ -186,7 +186,7 @@ def test_bad_paths_are_refused_before_any_work(tmp_path, monkeypatch, writer):
     # object is passed, so any work would fail differently)
     import os
 
-    from gears import export
+    from gears.solid import export
 
     fn = getattr(export, writer)
     ext = {"save": ".svg", "save_mesh": ".stl", "to_svg": ".svg", "to_dxf": ".dxf"}[writer]
@@ -228,7 +228,7 @@ def test_tooth_figure_texts_do_not_overlap():
     # issue 16: the circle labels of an undercut pinion (form d_Ff = 7.614 mm and base
     # d_b = 7.518 mm, 0.05 mm apart in radius) were drawn on top of each other; every text of
     # the figure (title, legend, ticks) now has its own place inside the figure
-    from gears.plot import tooth_figure
+    from gears.figures.plot import tooth_figure
 
     fig = tooth_figure(Gear(8, 1))
     fig.canvas.draw()
@@ -256,7 +256,7 @@ def test_an_animation_title_is_never_clipped(tmp_path):
     # edge columns hold no ink in the title band (the top eighth of the picture)
     from PIL import Image
 
-    from gears.animate import write_animation
+    from gears.solid.animate import write_animation
 
     title = "Planetary(sun=26, planet=(70, 21), ring=117, n_planets=3, module=1, scheme='stepped')"
     frames = [[(shapely.box(-1, -1, 1, 1), "tab:blue")]]

@@ -8,9 +8,9 @@ import pytest
 import shapely
 
 from gears import Gear
-from gears.generate import rack_outline, rack_positions
-from gears.measure import thickness_on, undercut_depth
-from gears.profile import ToothProfile, outline
+from gears.cutting.generate import rack_outline, rack_positions
+from gears.cutting.measure import thickness_on, undercut_depth
+from gears.cutting.profile import ToothProfile, outline
 
 
 @pytest.mark.parametrize(

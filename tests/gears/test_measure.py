@@ -7,8 +7,8 @@ import pytest
 import shapely
 
 from gears import Gear
-from gears.measure import form_diameter_on, thickness_on, undercut_depth
-from gears.profile import outline
+from gears.cutting.measure import form_diameter_on, thickness_on, undercut_depth
+from gears.cutting.profile import outline
 
 
 def test_thickness_on_known_shapes():

@@ -1,10 +1,11 @@
-"""3D gear meshes and scenes (issue 10): gears.mesh, Gear.mesh, GearPair.scene, Planetary.scene.
+"""3D gear meshes and scenes (issue 10): gears.solid.mesh, Gear.mesh, GearPair.scene,
+Planetary.scene.
 
 Reference values and their sources:
 - a prism's volume is its section area times its height (exact; spur gears, bores);
 - Cavalieri: every transverse section of a helical or herringbone gear is the same outline
   turned, so its exact volume is also area x face width; the mesh differs from the exact surface
-  by at most the outline tolerance plus the helix chord tolerance (gears.mesh docstring), so
+  by at most the outline tolerance plus the helix chord tolerance (gears.solid.mesh docstring), so
   |V - A b| <= 2 tol x lateral area (derivation);
 - Euler characteristic V - E + F = 2 - 2 g of a closed surface of genus g (a bore or a ring
   is one handle);
@@ -29,8 +30,8 @@ trimesh = pytest.importorskip("trimesh")
 manifold3d = pytest.importorskip("manifold3d")
 
 from gears import Gear, GearError, GearPair  # noqa: E402
-from gears.export import save  # noqa: E402
-from gears.mesh import (  # noqa: E402
+from gears.solid.export import save  # noqa: E402
+from gears.solid.mesh import (  # noqa: E402
     gear_solid,
     helix_twist,
     scene,
@@ -412,7 +413,7 @@ def test_scene_rejects_bad_parts():
 
 # ------------------------------------------------------------------------------ CLI
 def test_cli_mesh(tmp_path, capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     out = tmp_path / "g.stl"
     argv = ["mesh", "20", "--module", "1", "--helix", "20", "--face-width", "10"]
@@ -442,7 +443,7 @@ def test_cli_mesh(tmp_path, capsys):
 
 
 def test_cli_pair_and_planetary_scenes(tmp_path, capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     glb = tmp_path / "pair.glb"
     assert main(["pair", "17", "29", "--helix", "15", "--scene", str(glb),

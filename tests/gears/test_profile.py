@@ -7,8 +7,8 @@ import pytest
 import shapely
 
 from gears import BasicRack, Gear, GearError, GearPair, ShaperCutter
-from gears.measure import thickness_on
-from gears.profile import ToothProfile, outline, undercut_form_diameter
+from gears.cutting.measure import thickness_on
+from gears.cutting.profile import ToothProfile, outline, undercut_form_diameter
 
 GEARS = {
     "z20": Gear(20, 1),
@@ -93,7 +93,8 @@ def _deviations(g, tol):
     return dev, v_dev, len(rho)
 
 
-# the one-sided sampling (gears.profile.one_sided) moves a vertex next to a concave chord into
+# the one-sided sampling (gears.cutting.profile.one_sided) moves a vertex next to a concave chord
+# into
 # the material by 1.25 times that chord's sag, and chords sag about half the tolerance at most;
 # v_dev measures the involute vertices by angle x radius, which overstates the normal distance
 # by 1/cos(alpha_y): within 0.75 tolerances (stated), inside the tolerance itself

@@ -1,4 +1,5 @@
-"""gears.rating, gears.capacity, gears.root, gears.materials: ISO 6336 method B (issue 18).
+"""gears.rating.iso6336, gears.rating.capacity, gears.rating.root, gears.rating.materials: ISO 6336
+method B (issue 18).
 
 Sources: ISO/TR 6336-30:2017 Example 1 as transcribed in rating.md (gfsReboucas/Drivetrain,
 ``MATISO_6336.example_01``); closed forms of ISO 6336-2; the two routes to Y_F and Y_S (the
@@ -14,17 +15,17 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import BasicRack, Gear, GearPair
-from gears.capacity import load_diameters
 from gears.errors import GearError
-from gears.materials import MATERIALS, Material, bending_life_factor, pitting_life_factor
-from gears.rating import (
+from gears.rating.capacity import load_diameters
+from gears.rating.iso6336 import (
     REASONS,
     contact_ratio_factor,
     elasticity_factor,
     rate_pairs,
     zone_factor,
 )
-from gears.root import measure_root
+from gears.rating.materials import MATERIALS, Material, bending_life_factor, pitting_life_factor
+from gears.rating.root import measure_root
 
 
 # --- ISO/TR 6336-30 Example 1 -------------------------------------------------------------------

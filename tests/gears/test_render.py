@@ -1,4 +1,5 @@
-"""3D pictures and animations (gears.render), the frames of docs/bevel.md and the differential.
+"""3D pictures and animations (gears.solid.render), the frames of docs/bevel.md and the
+differential.
 
 Checks are on the files themselves: their format signature, the frame count Pillow reads back,
 and that a picture shows the object (non-background pixels where the part projects); bad input
@@ -14,7 +15,7 @@ pytest.importorskip("matplotlib")
 trimesh = pytest.importorskip("trimesh")
 
 from gears import BevelPair, GearError  # noqa: E402
-from gears.render import Camera, render_image, scene_parts, write_animation_3d  # noqa: E402
+from gears.solid.render import Camera, render_image, scene_parts, write_animation_3d  # noqa: E402
 
 
 def _box():

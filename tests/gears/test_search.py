@@ -1,4 +1,4 @@
-"""gears.search.pairs: the chunked pair search against brute force and textbook pairs.
+"""gears.search.engine.pairs: the chunked pair search against brute force and textbook pairs.
 
 Reference values: brute force (``GearPair(...).check()`` on every candidate, an independent
 route), Joldasbekov §5.4 (12/28, x 0.3/0.2, m = 1: a_w = 20.46253, eps = 1.36264), KHK's
@@ -15,7 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import Gear, GearError, GearPair
-from gears.search import Limits, SearchResult, pairs
+from gears.search.engine import Limits, SearchResult, pairs
 
 
 def _feasible_by_brute_force(teeth, shifts, module=2.0, limits=None):
@@ -275,7 +275,7 @@ def test_random_small_spaces_agree_with_brute_force(teeth, shifts, chunk):
 
 
 def test_command_line(tmp_path, capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     out = tmp_path / "pairs.csv"
     status = main(

@@ -1,8 +1,9 @@
-"""gears.search.pairs under a load (issue 20): rated candidates against brute force.
+"""gears.search.engine.pairs under a load (issue 20): rated candidates against brute force.
 
 Reference values: brute force, an independent route: ``GearPair(...).check()`` and
 ``GearPair(...).rating(...)`` (the one-pair path of ISO 6336 method B) on every candidate of a
-small space; the O(n^2) definition of a Pareto front; ``gears.sizing.pair_volume`` against the
+small space; the O(n^2) definition of a Pareto front; ``gears.rating.sizing.pair_volume`` against
+the
 pitch cylinders by hand.
 """
 
@@ -18,7 +19,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import Gear, GearError, GearPair
-from gears.search import estimate, pairs
+from gears.search.engine import estimate, pairs
 
 TEETH = [14, 17, 21, 26, 33, 41]
 SHIFTS = [-0.2, 0.1, 0.4, 0.7]
@@ -256,7 +257,7 @@ def test_any_load_gives_finite_rows_or_a_named_error(torque, speed, pitting, wid
 
 
 def test_command_line_rated_search_estimate_and_dataset(tmp_path, capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     args = ["search", "pairs", "--ratio", "3", "--module", "2", "--teeth", "14", "60",
             "--shifts", "0", "0.6", "0.2", "--torque", "60", "--speed", "1500",

@@ -10,11 +10,11 @@ import shapely
 from scipy.optimize import brentq
 
 from gears import BasicRack, Gear, GearError, GearPair
-from gears.cutter import ShaperCutter
-from gears.generate import rack_outline, shaper_outline, shaper_positions
-from gears.measure import thickness_on, undercut_depth
-from gears.outline import gear_outline
-from gears.profile import ShaperProfile, outline
+from gears.cutting.cutter import ShaperCutter
+from gears.cutting.generate import rack_outline, shaper_outline, shaper_positions
+from gears.cutting.measure import thickness_on, undercut_depth
+from gears.cutting.outline import gear_outline
+from gears.cutting.profile import ShaperProfile, outline
 
 
 def _inv(a):

@@ -105,7 +105,7 @@ def test_fields_agree_with_gearpair_check_pointwise(bc):
             "tip_interference_2": r["tip_interference_2"].margin,
         }
         if r["g1.undercut"].margin < 0 or r["g2.undercut"].margin < 0:
-            # undercut: Gear.form_diameter finds the trochoid crossing (gears.profile); the
+            # undercut: Gear.form_diameter finds the trochoid crossing (gears.cutting.profile); the
             # vectorised field uses the base circle there (documented in gears.shift)
             del expect["tip_interference_1"], expect["tip_interference_2"]
         for name, value in expect.items():

@@ -76,7 +76,7 @@ def test_assembly_condition_reported_and_refused(side, n, ok):
 
 
 def _overlaps(sc):
-    from gears.mesh import to_manifold
+    from gears.solid.mesh import to_manifold
 
     solids = {n: to_manifold(sc.geometry[sc.graph[n][1]], sc.graph[n][0])
               for n in sc.graph.nodes_geometry}  # fmt: skip

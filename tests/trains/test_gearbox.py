@@ -135,7 +135,7 @@ def test_bad_input(kwargs, match):
 
 
 def test_command_line(capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     assert main(["search", "gearbox", "--ratio", "12", "--z-max", "100", "--top", "3"]) == 0
     out = capsys.readouterr().out

@@ -1,7 +1,8 @@
-"""Gearboxes sized for a load (issue 20): trains.sizing and synthesize_gearbox(torque=...).
+"""Gearboxes sized for a load (issue 20): trains.design.sizing and synthesize_gearbox(torque=...).
 
 Reference values: ``Planetary.rating`` (the power flow of the stage's train and one
-``GearPair.rating`` per mesh, an independent route from the vectorised ``trains.sizing``), the
+``GearPair.rating`` per mesh, an independent route from the vectorised ``trains.design.sizing``),
+the
 ISO 54 series by hand, and a brute force over products of single stages from ``synthesize``
 (each with its own exact target), every order of the stages.
 """
@@ -18,11 +19,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gears.sizing import ISO54, load_case
+from gears.rating.sizing import ISO54, load_case
 from trains import Planetary, TrainError, synthesize, synthesize_gearbox
 from trains.capacity import LOAD_SHARING
-from trains.planetary import stage_ratio
-from trains.sizing import ring_tip_alteration, size_stages, stage_meshes
+from trains.design.sizing import ring_tip_alteration, size_stages, stage_meshes
+from trains.planetary.stage import stage_ratio
 
 STAGES = [
     ("simple", (21, 24, 24, 69), 3),
@@ -50,7 +51,7 @@ def test_each_mesh_rated_as_planetary_rating(scheme, teeth, k):
     num, den = stage_ratio(scheme, *teeth)
     meshes = stage_meshes(scheme, *teeth, k, num, den)
     assert [m["name"] for m in meshes] == list(ref)
-    from gears.sizing import rate
+    from gears.rating.sizing import rate
 
     for m in meshes:
         want = ref[m["name"]]
@@ -193,10 +194,10 @@ def test_best_design_equals_the_brute_force_product(objective):
 def test_local_threads_and_a_cluster_give_the_same_gearboxes(monkeypatch):
     from distributed import Client, LocalCluster, get_task_stream
 
-    import trains.gearbox
+    import trains.design.gearbox
 
     # small combination chunks: several combine tasks, which share one scattered table
-    monkeypatch.setattr(trains.gearbox, "COMBINATIONS", 1)
+    monkeypatch.setattr(trains.design.gearbox, "COMBINATIONS", 1)
     kw = dict(BOX, ratio=12, stages=2, schemes=("simple", "stepped"), z_max=80, top=5)
     one = synthesize_gearbox(**kw, client=False, threads=1)
     two = synthesize_gearbox(**kw, client=False, threads=2)
@@ -290,7 +291,7 @@ def test_any_load_gives_finite_gearboxes_or_a_named_error(torque, speed, width, 
 def test_command_line_sizes_gearboxes_locally_and_on_a_scheduler(tmp_path, capsys):
     from distributed import LocalCluster
 
-    from trains.cli import main
+    from trains.cli.app import main
 
     want = synthesize_gearbox(12, 2, z_max=90, top=2, **BOX)
     args = ["--ratio", "12", "--stages", "2", "--z-max", "90", "--torque", "50", "--speed",
@@ -319,7 +320,7 @@ def test_command_line_sizes_gearboxes_locally_and_on_a_scheduler(tmp_path, capsy
 def test_kept_heap_on_a_worker_restores_itself(monkeypatch):
     # a Dask worker's nanny sets MALLOC_TRIM_THRESHOLD_; the tasks keep their heap while they
     # run (glibc mallopt) and give it back after: nested and repeated blocks balance out
-    from gears import search
+    from gears.search import engine as search
 
     monkeypatch.setenv("MALLOC_TRIM_THRESHOLD_", "65536")
     with search.kept_heap():

@@ -471,7 +471,7 @@ def test_toml_with_gears_round_trips(tmp_path):
 
 
 def test_cli_prints_checks_and_exits_1_when_one_fails(tmp_path, capsys):
-    from trains.cli import main
+    from trains.cli.app import main
 
     good = _reverted_file(tmp_path)
     assert main(["train", str(good)]) == 0

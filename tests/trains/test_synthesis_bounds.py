@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import pytest
 
-from trains import TrainError, synthesis, synthesize, synthesize_gearbox
+from trains import TrainError, synthesize, synthesize_gearbox
+from trains.design import synthesis
 
 
 def _teeth(found):

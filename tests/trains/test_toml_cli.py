@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from trains import TrainError, read_train
-from trains.cli import main
+from trains.cli.app import main
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 

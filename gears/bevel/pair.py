@@ -1,0 +1,871 @@
+"""Layer 10, classes: :class:`BevelPair` and :class:`BevelGear`, straight bevel gears as thin
+views over :mod:`gears.bevel.cone` (the cone formulas, ISO 23509 / DIN 3971).
+
+A bevel gear exists only with its mate (the pitch cones follow from both tooth counts and the
+shaft angle), so :class:`BevelGear` is a view of one member of a :class:`BevelPair`. The checks
+are those of the virtual (Tredgold) spur pair at the mean cone (:attr:`BevelPair.virtual_pair`,
+a :class:`gears.GearPair` of :class:`VirtualGear`) plus the bevel rules (face width, the tip land
+at both ends of the face). ISO 10300 load capacity of bevel gears is not modelled.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import pathlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from gears.arguments import (
+    check_angle,
+    check_flag,
+    check_fps,
+    check_frames,
+    check_module,
+    check_positive,
+    check_tolerance,
+)
+from gears.bevel.cone import (
+    CLEARANCES,
+    BevelGeometry,
+    bevel_geometry,
+    check_shaft_angle,
+    face_width_margins,
+    full_round_radius,
+    gleason_coefficients,
+    max_face_width,
+)
+from gears.bevel.solid import BevelBlank, bevel_placement, bevel_solid, solid_estimate
+from gears.bevel.spherical import SphericalTooth
+from gears.budget import check_budget
+from gears.checks import pointed_tip_margin
+from gears.errors import GearError
+from gears.figures.drawing import bevel_pair_svg
+from gears.gear import Gear
+from gears.geometry import check_real, check_teeth
+from gears.pair import GearPair, Rack
+from gears.rack import BasicRack
+from gears.report import Finding, Report
+from gears.solid.mesh import COLOURS, scene
+
+if TYPE_CHECKING:
+    import trimesh
+
+__all__ = [
+    "ANIMATION_BUDGET_3D",
+    "DRAWN_PER_VERTEX",
+    "PROFILES",
+    "BevelGear",
+    "BevelPair",
+    "VirtualGear",
+]
+
+#: The tooth forms a bevel pair can be drawn with (docs/bevel.md, "Octoid or spherical involute").
+PROFILES = ("octoid", "spherical_involute")
+
+
+@dataclass(frozen=True)
+class VirtualGear(Gear):
+    """The virtual (Tredgold) spur gear of a bevel gear: ``z_v = z / cos delta`` teeth of the
+    mean module, in general not a whole number (Ozols (21.36)).
+
+    It has every formula and check of :class:`gears.Gear` but no outline or mesh (a gear of
+    22.36 teeth does not close); draw the bevel gear itself (:meth:`BevelGear.mesh`).
+
+    Examples
+    --------
+    >>> v = VirtualGear(22.360680, 2.5)
+    >>> round(v.reference_diameter, 4)
+    55.9017
+    """
+
+    @staticmethod
+    def _valid_teeth(z) -> float:
+        return check_real("teeth", z, 0.0)
+
+    def outline(self, *args, **kwargs):
+        raise GearError(
+            f"a virtual gear of z_v = {self.teeth:.4f} teeth has no outline; draw the bevel gear "
+            "(BevelGear.mesh, BevelPair.scene)"
+        )
+
+    def mesh(self, *args, **kwargs):
+        raise GearError(
+            f"a virtual gear of z_v = {self.teeth:.4f} teeth has no mesh; mesh the bevel gear "
+            "(BevelGear.mesh, BevelPair.scene)"
+        )
+
+
+def _number(name: str, value, low=None, high=None, low_open=True) -> float:
+    return check_real(name, value, low, high, low_open=low_open)
+
+
+def _placed(mesh, matrix) -> np.ndarray:
+    """The mesh's vertices moved by a 4x4 placement."""
+    return mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+#: Triangle vertices a 3D animation draws per vertex of its solids and frame (about half the
+#: faces face the camera, two faces a vertex, three vertices a face: measured 2.9 on the pairs).
+DRAWN_PER_VERTEX = 3.0
+#: The work budget of a 3D animation, in triangle vertices drawn over all frames: Pillow fills
+#: about 3 us a vertex on one free core (10 us under a load of 6), so 15 to 50 s at most.
+ANIMATION_BUDGET_3D = 5_000_000
+
+
+def _backlash(backlash, thickness: float) -> float:
+    """The pair's normal backlash at the mean cone, 0 <= j < the tooth's normal thickness."""
+    j = check_real("backlash", backlash, 0.0, low_open=False)
+    if not j < thickness:
+        raise GearError(
+            f"backlash = {j:g} mm; valid is 0 <= backlash < {thickness:.4f} mm (the mean tooth "
+            "thickness: a larger backlash leaves no tooth)"
+        )
+    return j
+
+
+@dataclass(frozen=True, init=False)
+class BevelPair:
+    """A straight bevel gear pair on intersecting axes (ISO 23509 / DIN 3971); immutable.
+
+    Parameters
+    ----------
+    z1, z2 : int
+        Teeth of the pinion (gear 1) and the wheel (gear 2).
+    module : float
+        Outer transverse module m_et, mm (``d_e = m_et z`` at the outer end).
+    face_width : float
+        b, mm, along the pitch cone; ``0 < b < R_e`` (``b <= R_e / 3`` is checked as a
+        finding).
+    shaft_angle : float
+        Sigma in degrees, 0 < Sigma < 180 (90: a right-angle pair).
+    pressure_angle : float
+        alpha of the generating crown gear, degrees (0 < alpha < 45).
+    profile_shift : float
+        x_hm1 of the pinion at the mean cone; the wheel has ``-x_hm1``.
+    thickness_modification : float
+        x_sm1 of the pinion; the wheel has ``-x_sm1``.
+    addendum, dedendum : float
+        k_hap and k_hfp (coefficients of the mean module; 1.0 and 1.25 by default).
+    clearance : {"constant", "tapered"}
+        ``"constant"``: each face cone parallel to the mate's root cone (ISO 23509, Gleason);
+        ``"tapered"``: every cone meets the pitch apex (KHK's standard bevel gears).
+    tool_radius : float or None
+        Tip radius of the generating crown gear's teeth, in mean modules (it forms the root
+        fillet); default the full round of the bottom clearance, ``(k_hfp - k_hap) /
+        (1 - sin alpha)`` (0.38 for the default heights, ISO 53 A's value).
+    profile : {"octoid", "spherical_involute"}
+        The tooth form of the meshes: the octoid that a crown gear with plane flanks cuts (what
+        straight-bevel generators cut) or the spherical involute (docs/bevel.md).
+
+    Raises
+    ------
+    GearError
+        For input no blank can carry, naming the value and the valid range: a face width at or
+        beyond the cone distance, a root cone through the axis, unknown names.
+
+    Examples
+    --------
+    KHK Table 4.10 (standard straight bevel gears):
+
+    >>> p = BevelPair(20, 40, module=3, face_width=22, clearance="tapered")
+    >>> [round(d, 5) for d in p.pitch_angles], round(p.cone_distance, 5)
+    ([26.56505, 63.43495], 67.08204)
+    >>> [round(z, 4) for z in p.virtual_teeth], round(p.contact_ratio, 4)
+    ([22.3607, 89.4427], 1.7122)
+    """
+
+    z1: int
+    z2: int
+    module: float
+    face_width: float
+    shaft_angle: float
+    pressure_angle: float
+    profile_shift: float
+    thickness_modification: float
+    addendum: float
+    dedendum: float
+    clearance: str
+    tool_radius: float
+    profile: str
+
+    def __init__(
+        self, z1: int, z2: int, module: float, face_width: float, shaft_angle: float = 90.0,
+        pressure_angle: float = 20.0, profile_shift: float = 0.0,
+        thickness_modification: float = 0.0, addendum: float = 1.0, dedendum: float = 1.25,
+        clearance: str = "constant", tool_radius: float | None = None, profile: str = "octoid",
+    ) -> None:  # fmt: skip
+        set_ = object.__setattr__
+        set_(self, "_teeth", {})  # SphericalTooth by (gear, backlash): see BevelGear.tooth
+        set_(self, "z1", check_teeth("z1", z1))
+        set_(self, "z2", check_teeth("z2", z2))
+        set_(self, "module", check_module(module))
+        set_(self, "face_width", _number("face_width", face_width, 0.0))
+        set_(self, "shaft_angle", check_shaft_angle(shaft_angle))
+        set_(self, "pressure_angle", _number("pressure_angle", pressure_angle, 0.0, 45.0))
+        set_(self, "profile_shift", _number("profile_shift", profile_shift))
+        set_(self, "thickness_modification",
+             _number("thickness_modification", thickness_modification))  # fmt: skip
+        set_(self, "addendum", _number("addendum", addendum, 0.0))
+        set_(self, "dedendum", _number("dedendum", dedendum, 0.0))
+        if clearance not in CLEARANCES:
+            raise GearError(f"clearance = {clearance!r}; valid are 'constant', 'tapered'")
+        set_(self, "clearance", clearance)
+        if profile not in PROFILES:
+            raise GearError(f"profile = {profile!r}; valid are 'octoid', 'spherical_involute'")
+        set_(self, "profile", profile)
+        if tool_radius is None:
+            full = float(full_round_radius(self.addendum, self.dedendum, self.pressure_angle))
+            # the tool tip land of the rack, less 5 %: the crown tooth on the sphere is a little
+            # narrower at its tip than the planar rack (checked exactly in _validate)
+            fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
+            tool_radius = max(min(full, 0.95 * fits), 0.0)
+        set_(self, "tool_radius", _number("tool_radius", tool_radius, 0.0, low_open=False))
+        fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
+        if self.tool_radius > fits + 1e-12:
+            raise GearError(
+                f"tool_radius = {self.tool_radius:g} (mean modules) does not fit the tip of the "
+                f"generating crown gear's tooth; valid is 0 <= tool_radius <= {fits:.4f} for this "
+                "pressure angle, dedendum and thickness"
+            )
+        self._validate()
+
+    @classmethod
+    def gleason(
+        cls, z1: int, z2: int, module: float, face_width: float, shaft_angle: float = 90.0,
+        pressure_angle: float = 20.0, thickness_modification: float = 0.0, **kwargs,
+    ) -> BevelPair:  # fmt: skip
+        """The Gleason straight-bevel proportions (KHK Table 4.11): working depth 2 m, whole
+        depth 2.188 m, the wheel's outer addendum ``0.54 m + 0.46 m / (z_2 cos delta_1 / (z_1 cos
+        delta_2))``, constant clearance (:func:`gears.bevel.cone.gleason_coefficients`).
+        ``thickness_modification`` is KHK's tooth-thickness factor K (x_sm1 = K).
+
+        >>> p = BevelPair.gleason(20, 40, module=3, face_width=22)
+        >>> [round(h, 3) for h in (p.g1.addendum, p.g2.addendum, p.g1.dedendum, p.g2.dedendum)]
+        [4.035, 1.965, 2.529, 4.599]
+        """
+        z1, z2 = check_teeth("z1", z1), check_teeth("z2", z2)
+        module = _number("module", module, 0.0)
+        face_width = _number("face_width", face_width, 0.0)
+        shaft_angle = check_shaft_angle(shaft_angle)
+        k_a, k_f, x = (float(v) for v in gleason_coefficients(z1, z2, module, face_width,
+                                                              shaft_angle))  # fmt: skip
+        return cls(
+            z1, z2, module, face_width, shaft_angle, pressure_angle, x, thickness_modification,
+            k_a, k_f, "constant", **kwargs,
+        )  # fmt: skip
+
+    # --- validation ------------------------------------------------------------------------------
+    def _validate(self) -> None:
+        r_e = max_face_width(self.z1, self.z2, self.module, self.shaft_angle)
+        if not self.face_width < r_e:
+            raise GearError(
+                f"face_width = {self.face_width:g} mm reaches the pitch apex (the outer cone "
+                f"distance R_e = {r_e:.4f} mm); valid is 0 < face_width < {r_e:.4f} mm, and "
+                f"face_width <= {r_e / 3:.4f} mm (R_e/3) cuts well"
+            )
+        if self.dedendum < self.addendum:
+            raise GearError(
+                f"dedendum = {self.dedendum:g} < addendum = {self.addendum:g}: the bottom "
+                "clearance would be negative (valid: dedendum >= addendum)"
+            )
+        g = self._geometry
+        for i in (0, 1):
+            if not g.root_angle[i] > 0.0:
+                raise GearError(
+                    f"gear {i + 1} (z = {(self.z1, self.z2)[i]}): the root cone angle "
+                    f"delta_f = {g.root_angle[i]:.4f} deg is not > 0 (its dedendum angle "
+                    f"{g.dedendum_angle[i]:.4f} deg exceeds the pitch angle "
+                    f"{g.pitch_angle[i]:.4f} deg); use more teeth or a smaller dedendum"
+                )
+            if not g.face_angle[i] < 180.0:
+                raise GearError(
+                    f"gear {i + 1}: the face cone angle delta_a = {g.face_angle[i]:.4f} deg "
+                    "reaches 180 deg; use a smaller shaft angle or addendum"
+                )
+            if not (g.mean_addendum[i] + g.mean_dedendum[i]) > 0.0:
+                raise GearError(f"gear {i + 1}: no tooth depth is left")
+        self._rack(0)  # the generating tool must fit: a clear error now
+        self._rack(1)
+        _ = self.virtual_pair  # the virtual gears must exist (tips, roots): a clear error now
+        for gear in self.gears:
+            if gear.pitch_angle >= 90.0:
+                continue  # a crown or internal bevel wheel: its teeth are not drawn
+            try:
+                gear.tooth()
+            except GearError as exc:
+                if "tip land" not in str(exc):
+                    raise
+                raise GearError(
+                    f"tool_radius = {self.tool_radius:g} (mean modules): the generating crown "
+                    f"gear's tip rounds of gear {gear.index + 1} do not fit its tip land; valid "
+                    f"is tool_radius <= {gear._largest_tool_radius():.4f}"
+                ) from None
+
+    # --- geometry --------------------------------------------------------------------------------
+    @cached_property
+    def _geometry(self) -> BevelGeometry:
+        return bevel_geometry(
+            self.z1, self.z2, self.module, self.face_width, self.shaft_angle,
+            self.pressure_angle, self.profile_shift, self.thickness_modification, self.addendum,
+            self.dedendum, self.clearance,
+        )  # fmt: skip
+
+    @property
+    def geometry(self) -> BevelGeometry:
+        """Every formula of :func:`gears.bevel.cone.bevel_geometry` for this pair (arrays of 2)."""
+        return self._geometry
+
+    @cached_property
+    def g1(self) -> BevelGear:
+        """The pinion (gear 1)."""
+        return BevelGear(self, 0)
+
+    @cached_property
+    def g2(self) -> BevelGear:
+        """The wheel (gear 2)."""
+        return BevelGear(self, 1)
+
+    @property
+    def gears(self) -> tuple[BevelGear, BevelGear]:
+        return self.g1, self.g2
+
+    @property
+    def pitch_angles(self) -> tuple[float, float]:
+        """Pitch cone angles ``(delta_1, delta_2)`` in degrees; they add up to the shaft angle."""
+        d = self._geometry.pitch_angle
+        return float(d[0]), float(d[1])
+
+    @property
+    def cone_distance(self) -> float:
+        """Outer cone distance R_e, mm."""
+        return float(self._geometry.cone_distance)
+
+    @property
+    def mean_cone_distance(self) -> float:
+        """Mean cone distance R_m = R_e - b/2, mm."""
+        return float(self._geometry.mean_cone_distance)
+
+    @property
+    def mean_module(self) -> float:
+        """Mean module m_m = m_et R_m / R_e, mm."""
+        return float(self._geometry.mean_module)
+
+    @property
+    def ratio(self) -> float:
+        """Gear ratio u = z2 / z1 = sin delta_2 / sin delta_1 (Ozols (21.34))."""
+        return self.z2 / self.z1
+
+    @property
+    def internal(self) -> bool:
+        """False: a bevel mesh is counted like an external one when both speeds are measured
+        about the axes pointing away from the common apex (see docs/bevel.md)."""
+        return False
+
+    @property
+    def virtual_teeth(self) -> tuple[float, float]:
+        """Virtual (Tredgold) tooth numbers ``z / cos delta`` (Ozols (21.36)); negative for an
+        internal bevel gear, infinite for a crown gear."""
+        z = self._geometry.virtual_teeth
+        return float(z[0]), float(z[1])
+
+    @property
+    def tip_diameters(self) -> tuple[float, float]:
+        """Outer tip (outside) diameters d_ae, mm."""
+        d = self._geometry.tip_diameter
+        return float(d[0]), float(d[1])
+
+    def _rack(self, index: int, rho: float | None = None) -> BasicRack:
+        """The basic rack of virtual gear ``index``: this pair's heights written for the
+        thickness-equivalent shift ``x_hm + x_sm / (2 tan alpha)`` (see :attr:`virtual_pair`)."""
+        xs = self.thickness_modification * (-1.0 if index else 1.0)
+        shift = xs / (2.0 * math.tan(math.radians(self.pressure_angle)))
+        rho = self.tool_radius if rho is None else rho
+        try:
+            return BasicRack(
+                self.pressure_angle, self.addendum - shift, self.dedendum + shift, rho,
+                name="bevel crown gear",
+            )  # fmt: skip
+        except GearError as exc:
+            raise GearError(f"the generating crown gear of gear {index + 1}: {exc}") from None
+
+    @cached_property
+    def virtual_pair(self) -> GearPair:
+        """The virtual (Tredgold) spur pair at the mean cone (ISO 10300): ``z_v = z / cos
+        delta`` teeth of the mean module, centre distance ``(d_v1 + d_v2) / 2``.
+
+        Its gears are :class:`VirtualGear` objects whose profile shift is the
+        thickness-equivalent ``x_hm + x_sm / (2 tan alpha)`` and whose rack heights are moved
+        by the same amount, so that their tips, roots, tooth thickness and undercut are the
+        bevel gear's exactly (a thickness modification is the tool moved sideways; a profile
+        shift with its heights compensated draws the same tool). A crown wheel (delta = 90 deg)
+        gives a :class:`gears.Rack`; an internal bevel wheel (delta > 90 deg) a ring (the
+        external gear comes first).
+        """
+        g = self._geometry
+        mm = float(g.mean_module)
+        gears = []
+        for i, x in enumerate((self.profile_shift, -self.profile_shift)):
+            zv = float(g.virtual_teeth[i])
+            rack = self._rack(i)
+            x_eq = x + rack.dedendum - self.dedendum  # x + x_sm / (2 tan alpha)
+            if not math.isfinite(zv):
+                gears.append(Rack(mm, self.pressure_angle, addendum=rack.addendum + x_eq))
+                continue
+            internal = zv < 0
+            try:
+                gears.append(
+                    VirtualGear(
+                        abs(zv), mm, self.pressure_angle, profile_shift=-x_eq if internal else x_eq,
+                        internal=internal, rack=rack,
+                    )
+                )  # fmt: skip
+            except GearError as exc:
+                raise GearError(
+                    f"gear {i + 1} of this bevel pair (its virtual gear): {exc}"
+                ) from None
+        a, b = gears
+        if isinstance(a, Rack) or getattr(a, "internal", False):
+            a, b = b, a
+        try:
+            return GearPair(a, b, tip_shortening=False)
+        except GearError as exc:
+            raise GearError(f"the virtual (Tredgold) pair of this bevel pair: {exc}") from None
+
+    @property
+    def contact_ratio(self) -> float:
+        """Transverse contact ratio of the virtual pair at the mean cone, epsilon_v_alpha (the
+        bevel pair's contact ratio by Tredgold's approximation; ISO 10300)."""
+        return self.virtual_pair.contact_ratio
+
+    def mesh_efficiency(self, friction: float = 0.1) -> float:
+        """Ozols (14.25) on the virtual pair: ``1 - (pi f eps / 2)(1/z_v1 + 1/z_v2)`` (the
+        sliding of a straight bevel mesh is that of its Tredgold pair)."""
+        return self.virtual_pair.mesh_efficiency(friction)
+
+    # --- placement -------------------------------------------------------------------------------
+    def placement(self, angle: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+        """4x4 placements ``(gear 1, gear 2)`` on the common apex when gear 1 has turned by
+        ``angle`` degrees (:func:`gears.bevel.solid.bevel_placement`): gear 1's axis +z, gear 2's
+        ``(sin Sigma, 0, cos Sigma)``, phased so the teeth interleave."""
+        angle = check_real("angle", angle)
+        return bevel_placement(self.z1, self.z2, self.shaft_angle, angle)
+
+    def scene(
+        self, angle: float = 0.0, tolerance: float = 0.01, backlash: float = 0.0,
+        bore: float | None = None, back_cone: bool = True,
+    ) -> trimesh.Scene:  # fmt: skip
+        """Both gears as a ``trimesh.Scene`` (nodes ``gear1``, ``gear2``): a common apex at the
+        origin, the axes at the shaft angle (:meth:`placement`), gear 1 turned by ``angle``
+        degrees and gear 2 rolling with it. At zero ``backlash`` (mm, normal, at the mean
+        cone; each gear takes half) the flanks touch without interpenetrating: the teeth are
+        sampled one-sidedly (:mod:`gears.bevel.spherical`).
+
+        Examples
+        --------
+        >>> sc = BevelPair(20, 40, module=3, face_width=20).scene(tolerance=0.05)
+        >>> sorted(sc.graph.nodes_geometry)
+        ['gear1', 'gear2']
+        """
+        p1, p2 = self.placement(angle)
+        tolerance = check_tolerance(tolerance, module=self.module)
+        check_budget(
+            "mesh", f"the scene of the bevel pair {self.z1}/{self.z2}",
+            lambda t: sum(g._vertices(back_cone)(t) for g in self.gears), tolerance,
+        )  # fmt: skip
+        m1 = self.g1.mesh(tolerance, bore, back_cone, backlash)
+        m2 = self.g2.mesh(tolerance, bore, back_cone, backlash)
+        return scene([("gear1", m1, p1, COLOURS["gear1"]), ("gear2", m2, p2, COLOURS["gear2"])])
+
+    def animate(
+        self, path: str | os.PathLike[str], frames: int = 24, fps: float = 12.0,
+        turn: float | None = None, tolerance: float = 0.05, backlash: float = 0.0,
+        elevation: float = 30.0, azimuth: float = -30.0, size: int = 400,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> pathlib.Path:  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of the pair turning: gear 1 by ``turn`` degrees
+        (default one pitch, ``360 / z1``), gear 2 rolling with it, seen from ``elevation`` and
+        ``azimuth`` degrees, ``size`` pixels square (:func:`gears.solid.render.write_animation_3d`;
+        ``progress(i, n)`` after each frame)."""
+        from gears.solid.render import Camera, write_animation_3d
+
+        n = check_frames(frames)
+        fps = check_fps(fps)
+        turn = 360.0 / self.z1 if turn is None else check_angle("turn", turn)
+        tolerance = check_tolerance(tolerance, module=self.module)
+        check_budget(
+            "animation", f"{n} frames of the bevel pair {self.z1}/{self.z2}",
+            lambda t: n * DRAWN_PER_VERTEX * sum(g._vertices(True)(t) for g in self.gears),
+            tolerance, hint="fewer frames", budget=ANIMATION_BUDGET_3D,
+        )  # fmt: skip
+        m1 = self.g1.mesh(tolerance, backlash=backlash)
+        m2 = self.g2.mesh(tolerance, backlash=backlash)
+        c1, c2 = COLOURS["gear1"], COLOURS["gear2"]
+
+        def frame(i: int) -> list:
+            q1, q2 = self.placement(i * turn / n)
+            return [(_placed(m1, q1), m1.faces, c1), (_placed(m2, q2), m2.faces, c2)]
+
+        return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps, size=size,
+                                  progress=progress)  # fmt: skip
+
+    # --- checks ----------------------------------------------------------------------------------
+    def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
+        """Every finding of the pair, each with its margin; never raises for a bad design.
+
+        * the virtual pair's findings at the mean cone (:meth:`gears.GearPair.check`:
+          ``g1.undercut``, ``g1.pointed_tip``, ``g1.tip_above_base``, ``g1.tooth_height`` and
+          the same for ``g2``, ``contact_ratio``, ``tip_interference``, ``tip_interference_2``);
+        * ``g1.tip_land_ends`` / ``g2.tip_land_ends``: the normal tip land at the outer and the
+          inner end of the face (with constant clearance the relative addendum changes along
+          the face) minus ``min_tip_land`` modules of that end, mm;
+        * ``face_width``: ``R_e / 3 - b`` (mm), the rule of ISO 23509 and KHK;
+        * ``face_width_module``: ``10 m_et - b`` (mm), KHK's second rule.
+        """
+        min_contact_ratio = check_real("min_contact_ratio", min_contact_ratio, 0.0,
+                                       low_open=False)  # fmt: skip
+        min_tip_land = check_real("min_tip_land", min_tip_land, 0.0, low_open=False)
+        note = "virtual (Tredgold) pair at the mean cone: "
+        findings = [
+            Finding(f.name, f.margin, note + f.message, f.unit, f.ok)
+            for f in self.virtual_pair.check(min_contact_ratio, min_tip_land).values()
+        ]
+        for gear in self.gears:
+            findings.append(gear._tip_land_finding(min_tip_land))
+        g = self._geometry
+        third, tenth = (float(v) for v in face_width_margins(self.face_width, g.cone_distance,
+                                                              self.module))  # fmt: skip
+        findings.append(Finding(
+            "face_width", third,
+            f"face width b = {self.face_width:g} mm vs R_e/3 = {g.cone_distance / 3:.4f} mm "
+            "(ISO 23509, KHK: a wider face is hard to cut and weak at its inner end)",
+        ))  # fmt: skip
+        findings.append(Finding(
+            "face_width_module", tenth,
+            f"face width b = {self.face_width:g} mm vs 10 m_et = {10 * self.module:g} mm (KHK)",
+        ))  # fmt: skip
+        return Report(findings)
+
+    def describe(self) -> str:
+        """The geometry of both gears as a table (mm, degrees), like KHK's Tables 4.10/4.11."""
+        g = self._geometry
+        rows = [
+            ("teeth z", (self.z1, self.z2), "d"),
+            ("pitch angle delta, deg", g.pitch_angle, ".5f"),
+            ("outer pitch diameter d_e", g.reference_diameter, ".4f"),
+            ("profile shift x_hm", g.profile_shift, "+.4f"),
+            ("thickness modification x_sm", g.thickness_modification, "+.4f"),
+            ("outer addendum h_ae", g.addendum, ".4f"),
+            ("outer dedendum h_fe", g.dedendum, ".4f"),
+            ("addendum angle theta_a, deg", g.addendum_angle, ".5f"),
+            ("dedendum angle theta_f, deg", g.dedendum_angle, ".5f"),
+            ("face angle delta_a, deg", g.face_angle, ".5f"),
+            ("root angle delta_f, deg", g.root_angle, ".5f"),
+            ("outside diameter d_ae", g.tip_diameter, ".4f"),
+            ("pitch apex to crown", g.crown_to_apex, ".4f"),
+            ("axial face width", g.axial_face_width, ".4f"),
+            ("inner outside diameter d_ai", g.inner_tip_diameter, ".4f"),
+            ("mean thickness s_m (arc)", g.mean_thickness, ".4f"),
+            ("virtual teeth z_v", g.virtual_teeth, ".4f"),
+        ]
+        head = (
+            f"straight bevel pair {self.z1}/{self.z2}, m_et {self.module:g} mm, b "
+            f"{self.face_width:g} mm, shaft angle {self.shaft_angle:g} deg, alpha "
+            f"{self.pressure_angle:g} deg, {self.clearance} clearance, {self.profile} teeth\n"
+            f"cone distance R_e {self.cone_distance:.4f} mm, R_m {self.mean_cone_distance:.4f} "
+            f"mm, mean module {self.mean_module:.4f} mm, contact ratio (virtual) "
+            f"{self.contact_ratio:.4f}"
+        )
+        lines = [head, f"{'':32s}{'pinion':>14s}{'wheel':>14s}"]
+        for label, values, fmt in rows:
+            a, b = (format(float(v) if fmt != "d" else int(v), fmt) for v in values)
+            lines.append(f"{label:32s}{a:>14s}{b:>14s}")
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        return (
+            f"BevelPair({self.z1}, {self.z2}, module={self.module:g}, face_width="
+            f"{self.face_width:g}, shaft_angle={self.shaft_angle:g})"
+        )
+
+    def _repr_svg_(self) -> str:
+        """The pair in axial section as an SVG picture, what a notebook shows
+        (:func:`gears.figures.drawing.bevel_pair_svg`; a text instead when it cannot be drawn)."""
+        return bevel_pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))
+
+
+@dataclass(frozen=True)
+class BevelGear:
+    """One gear of a :class:`BevelPair` (``pair.g1``, ``pair.g2``): a thin view of its row of
+    :func:`gears.bevel.cone.bevel_geometry`. Lengths in mm, angles in degrees; outer values unless
+    the name says mean.
+
+    Examples
+    --------
+    >>> g = BevelPair(20, 40, module=3, face_width=22, clearance="tapered").g2
+    >>> g.teeth, round(g.pitch_angle, 5), round(g.tip_diameter, 4), round(g.root_angle, 5)
+    (40, 63.43495, 122.6833, 60.23535)
+    """
+
+    pair: BevelPair
+    index: int
+
+    def _row(self, field: str) -> float:
+        return float(np.asarray(getattr(self.pair.geometry, field))[self.index])
+
+    @property
+    def mate(self) -> BevelGear:
+        """The other gear of the pair."""
+        return self.pair.g2 if self.index == 0 else self.pair.g1
+
+    @property
+    def teeth(self) -> int:
+        return self.pair.z2 if self.index else self.pair.z1
+
+    @property
+    def z(self) -> int:
+        return self.teeth
+
+    @property
+    def module(self) -> float:
+        """Outer transverse module m_et."""
+        return self.pair.module
+
+    @property
+    def face_width(self) -> float:
+        return self.pair.face_width
+
+    @property
+    def pressure_angle(self) -> float:
+        return self.pair.pressure_angle
+
+    @property
+    def helix_angle(self) -> float:
+        """0: straight teeth."""
+        return 0.0
+
+    @property
+    def internal(self) -> bool:
+        """True for an internal bevel gear (pitch angle above 90 deg)."""
+        return self.pitch_angle > 90.0
+
+    @property
+    def profile_shift(self) -> float:
+        """x_hm (the wheel's is the pinion's negative)."""
+        return self._row("profile_shift")
+
+    @property
+    def thickness_modification(self) -> float:
+        """x_sm (the wheel's is the pinion's negative)."""
+        return self._row("thickness_modification")
+
+    @property
+    def pitch_angle(self) -> float:
+        return self._row("pitch_angle")
+
+    @property
+    def cone_distance(self) -> float:
+        return self.pair.cone_distance
+
+    @property
+    def reference_diameter(self) -> float:
+        """Outer pitch diameter d_e = m_et z."""
+        return self._row("reference_diameter")
+
+    @property
+    def mean_diameter(self) -> float:
+        return self._row("mean_diameter")
+
+    @property
+    def addendum(self) -> float:
+        """Outer addendum h_ae."""
+        return self._row("addendum")
+
+    @property
+    def dedendum(self) -> float:
+        """Outer dedendum h_fe."""
+        return self._row("dedendum")
+
+    @property
+    def addendum_angle(self) -> float:
+        return self._row("addendum_angle")
+
+    @property
+    def dedendum_angle(self) -> float:
+        return self._row("dedendum_angle")
+
+    @property
+    def face_angle(self) -> float:
+        """Face (tip) cone angle delta_a = delta + theta_a."""
+        return self._row("face_angle")
+
+    @property
+    def root_angle(self) -> float:
+        """Root cone angle delta_f = delta - theta_f."""
+        return self._row("root_angle")
+
+    @property
+    def tip_diameter(self) -> float:
+        """Outside diameter d_ae at the outer end."""
+        return self._row("tip_diameter")
+
+    @property
+    def inner_tip_diameter(self) -> float:
+        return self._row("inner_tip_diameter")
+
+    @property
+    def crown_to_apex(self) -> float:
+        """Pitch apex to crown, X = R_e cos delta - h_ae sin delta."""
+        return self._row("crown_to_apex")
+
+    @property
+    def axial_face_width(self) -> float:
+        return self._row("axial_face_width")
+
+    @property
+    def mean_thickness(self) -> float:
+        """Tooth thickness s_m, an arc on the mean pitch cone (ISO 23509)."""
+        return self._row("mean_thickness")
+
+    @property
+    def virtual_teeth(self) -> float:
+        """z_v = z / cos delta."""
+        return self._row("virtual_teeth")
+
+    def _tip_land_finding(self, min_tip_land: float) -> Finding:
+        """The normal tip land at the outer and the inner end (the virtual gear of each end;
+        the thickness scales with the cone distance, the addendum follows the face cone)."""
+        p, g = self.pair, self.pair.geometry
+        i = self.index
+        r_e = float(g.cone_distance)
+        x_eq = self.profile_shift + self.thickness_modification / (
+            2.0 * math.tan(math.radians(p.pressure_angle))
+        )
+        zv = abs(self.virtual_teeth)
+        worst, where = math.inf, ""
+        if not math.isfinite(zv):
+            return Finding(
+                f"g{i + 1}.tip_land_ends", math.inf, "a crown gear: no tip to check", ok=True
+            )
+        for end, r, h_a in (
+            ("outer", r_e, self.addendum),
+            ("inner", r_e - p.face_width, float(g.inner_addendum[i])),
+        ):
+            m = p.module * r / r_e
+            d_va = zv * m + 2.0 * h_a
+            margin = float(pointed_tip_margin(zv, m, x_eq, p.pressure_angle, 0.0, False, d_va,
+                                              min_tip_land))  # fmt: skip
+            if margin < worst:
+                worst, where, at_m = margin, end, m
+        need = min_tip_land * at_m
+        return Finding(
+            f"g{i + 1}.tip_land_ends", worst,
+            f"normal tip land at the {where} end {worst + need:.4f} mm vs required {need:.4f} mm "
+            f"({min_tip_land:g} m of that end; virtual gears of both ends)",
+        )  # fmt: skip
+
+    # --- teeth and solids ----------------------------------------------------------------------
+    def tooth(self, backlash: float = 0.0) -> SphericalTooth:
+        """The exact tooth space on the unit sphere (:class:`gears.bevel.spherical.SphericalTooth`),
+        generated by the pair's crown gear: this gear's half of the normal ``backlash`` (mm, at
+        the mean cone) widens the crown tooth by ``j / (4 cos alpha)`` on each flank."""
+        j = _backlash(backlash, self.mean_thickness)
+        cache = self.pair._teeth  # the tooth's envelope roots are worth keeping (immutable)
+        key = (self.index, j)
+        if key not in cache:
+            if len(cache) > 8:
+                cache.clear()
+            cache[key] = self._tooth(j)
+        return cache[key]
+
+    def _tooth(self, j: float) -> SphericalTooth:
+        p, g = self.pair, self.pair.geometry
+        r_m, m_m = float(g.mean_cone_distance), float(g.mean_module)
+        alpha = math.radians(p.pressure_angle)
+        psi_p = (math.pi * m_m - self.mean_thickness) / (2.0 * r_m) + j / (
+            4.0 * r_m * math.cos(alpha)
+        )
+        return SphericalTooth(
+            self.teeth, math.radians(self.pitch_angle), alpha, psi_p,
+            math.radians(self.dedendum_angle), p.tool_radius * m_m / r_m, p.profile,
+        )  # fmt: skip
+
+    def _largest_tool_radius(self) -> float:
+        """The largest crown-tooth tip radius (mean modules) that leaves a tip land (bisection
+        on the crown tooth's land longitude)."""
+        p, g = self.pair, self.pair.geometry
+        r_m, m_m = float(g.mean_cone_distance), float(g.mean_module)
+        lo, hi = 0.0, max(p.tool_radius, 1e-6)
+        base = dict(
+            teeth=self.teeth, pitch_angle=math.radians(self.pitch_angle),
+            pressure_angle=math.radians(p.pressure_angle),
+            crown_half_thickness=(math.pi * m_m - self.mean_thickness) / (2.0 * r_m),
+            root_angle=math.radians(self.dedendum_angle), kind=p.profile,
+        )  # fmt: skip
+
+        def fits(rho: float) -> bool:
+            try:
+                SphericalTooth(tool_radius=rho * m_m / r_m, **base)
+            except GearError:
+                return False
+            return True
+
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+        return lo
+
+    @property
+    def blank(self) -> BevelBlank:
+        """Cone angles (radians), cone distance, face width and heights for the solid."""
+        return BevelBlank(
+            math.radians(self.pitch_angle), math.radians(self.face_angle), self.cone_distance,
+            self.face_width, self.addendum, self.dedendum, math.radians(self.dedendum_angle),
+            self.module,
+        )  # fmt: skip
+
+    def mesh(
+        self, tolerance: float = 0.01, bore: float | None = None, back_cone: bool = True,
+        backlash: float = 0.0,
+    ) -> trimesh.Trimesh:  # fmt: skip
+        """The gear as a watertight ``trimesh.Trimesh`` (the ``mesh`` extra): axis +z, pitch
+        apex at the origin, tooth 0 centred on +x; the teeth between the cone distances
+        ``R_e - b`` and ``R_e`` (:func:`gears.bevel.solid.bevel_solid`).
+
+        ``tolerance`` (mm) bounds the deviation from the exact octoid (or spherical involute)
+        at the back end; ``bore`` a bore diameter (mm); ``back_cone`` ends the teeth on the
+        back and front cones (True) or on planes normal to the axis (False); ``backlash`` is
+        the pair's normal backlash at the mean cone (this gear takes half).
+
+        Examples
+        --------
+        >>> m = BevelPair(20, 40, module=3, face_width=20).g1.mesh(tolerance=0.05)
+        >>> m.is_watertight, m.is_winding_consistent, bool(m.volume > 0)
+        (True, True, True)
+        """
+        tolerance = check_tolerance(tolerance, module=self.module)
+        if bore is not None:
+            bore = check_positive("bore", bore)
+        back_cone = check_flag("back_cone", back_cone)
+        return bevel_solid(self.tooth(backlash), self.blank, tolerance, bore, back_cone)
+
+    def _vertices(self, back_cone: bool = True):
+        """The solid's vertex count as a function of the tolerance (the budget's estimate)."""
+        return solid_estimate(self.tooth(), self.blank, back_cone, 4)
+
+    def check(self, min_tip_land: float = 0.2) -> Report:
+        """This gear's findings of :meth:`BevelPair.check` (without the ``gN.`` prefix)."""
+        prefix = f"g{self.index + 1}."
+        rep = self.pair.check(min_tip_land=min_tip_land)
+        return Report(
+            Finding(f.name[len(prefix) :], f.margin, f.message, f.unit, f.ok)
+            for f in rep.values()
+            if f.name.startswith(prefix)
+        )
+
+    def __repr__(self) -> str:
+        return f"BevelGear({self.teeth} teeth of {self.pair!r})"

@@ -1,0 +1,25 @@
+"""Figures: the notebook drawings (SVG) of a gear, a pair and a stage, and matplotlib plots.
+
+The names below are imported on first use (:mod:`gears.lazy`): importing one module of the
+family does not load the rest.
+"""
+
+from gears.lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "bevel_pair_svg": "gears.figures.drawing",
+        "bevel_svg": "gears.figures.drawing",
+        "display_tolerance": "gears.figures.drawing",
+        "gear_svg": "gears.figures.drawing",
+        "generation_figure": "gears.figures.plot",
+        "outlines_figure": "gears.figures.plot",
+        "outlines_svg": "gears.figures.drawing",
+        "pair_figure": "gears.figures.plot",
+        "pair_svg": "gears.figures.drawing",
+        "shown": "gears.figures.drawing",
+        "tooth_figure": "gears.figures.plot",
+        "WIDTH": "gears.figures.drawing",
+    },
+)

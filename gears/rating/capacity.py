@@ -1,0 +1,311 @@
+"""Layer 8, classes: :class:`Rating`, the ISO 6336 rating of one mesh as a thin view.
+
+``GearPair.rating(...)`` calls :func:`rate_pair`, which gathers the pair's geometry, measures
+the root of internal and shaper-cut gears on their real outline (:mod:`gears.rating.root`) and calls
+the vectorised :func:`gears.rating.iso6336.rate_pairs` for the one pair; :class:`Rating` shows the
+result: the safety factors, the stresses, every factor with its ISO symbol and clause, and a
+:class:`gears.report.Report` against minimum safeties.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, field
+
+from gears.display import html_table
+from gears.errors import GearError
+from gears.rating.iso6336 import FACTORS, QUANTITIES, PairRatings, load_point, rate_pairs
+from gears.rating.materials import material
+from gears.rating.root import measure_root
+from gears.report import Finding, Report
+
+__all__ = ["ROOT_ROUTES", "Rating", "load_diameters", "rate_pair"]
+
+#: How the root form of each gear is found: ``"auto"`` (the standard's equations for rack-cut
+#: external gears, measured on the exact envelope for internal and shaper-cut gears),
+#: ``"standard"`` (ISO 6336-3's equations; the rack approximation for internal gears),
+#: ``"measured"`` (exact envelopes) or ``"simulated"`` (simulated cuts, spur gears).
+ROOT_ROUTES = ("auto", "standard", "measured", "simulated")
+
+
+def _field(symbol: str) -> str:
+    return symbol.replace("'", "_prime")
+
+
+@dataclass(frozen=True)
+class Rating:
+    """ISO 6336 method B rating of one mesh (gear 1 = the pair's g1).
+
+    Attributes
+    ----------
+    pair : GearPair
+        The rated pair.
+    values : PairRatings
+        Every number of :func:`gears.rating.iso6336.rate_pairs` for this pair.
+    settings : dict
+        The operating conditions and choices (torque, speed, materials, life, ...).
+    roots : (str, str)
+        How each gear's root form was found (``"ISO 6336-3 (rack)"``, ``"measured (exact
+        envelope)"``, ...).
+    """
+
+    pair: object
+    values: PairRatings
+    settings: dict = field(default_factory=dict)
+    roots: tuple[str, str] = ("", "")
+
+    def _get(self, name: str) -> float:
+        return float(getattr(self.values, name))
+
+    @property
+    def safety_pitting(self) -> tuple[float, float]:
+        """``(S_H1, S_H2)``: safety against pitting of gear 1 and gear 2."""
+        return self._get("S_H1"), self._get("S_H2")
+
+    @property
+    def safety_bending(self) -> tuple[float, float]:
+        """``(S_F1, S_F2)``: safety against tooth-root breakage of gear 1 and gear 2."""
+        return self._get("S_F1"), self._get("S_F2")
+
+    @property
+    def stresses(self) -> dict[str, float | tuple[float, float]]:
+        """Stresses in MPa: ``sigma_H0``, ``sigma_H``, ``sigma_HP`` (for S_Hmin = 1),
+        ``sigma_F0``, ``sigma_F``, ``sigma_FP`` (S_Fmin = 1); a pair where per gear."""
+        g = self._get
+        return {
+            "sigma_H0": g("sigma_H0"),
+            "sigma_H": (g("sigma_H1"), g("sigma_H2")),
+            "sigma_HP": (g("sigma_HP1"), g("sigma_HP2")),
+            "sigma_F0": (g("sigma_F01"), g("sigma_F02")),
+            "sigma_F": (g("sigma_F1"), g("sigma_F2")),
+            "sigma_FP": (g("sigma_FP1"), g("sigma_FP2")),
+        }
+
+    def _table(self, rows) -> dict[str, float | tuple[float, float]]:
+        out = {}
+        for symbol, per_gear, *_ in rows:
+            name = _field(symbol)
+            if per_gear:
+                out[symbol] = (self._get(f"{name}1"), self._get(f"{name}2"))
+            else:
+                out[symbol] = self._get(name)
+        return out
+
+    @property
+    def factors(self) -> dict[str, float | tuple[float, float]]:
+        """Every factor by its ISO symbol in ASCII (``"Z_H"``, ``"K_Hbeta"``, ``"c'"``, ...;
+        :data:`gears.rating.iso6336.FACTORS`), a pair ``(gear 1, gear 2)`` where it is per gear."""
+        return self._table(FACTORS)
+
+    @property
+    def quantities(self) -> dict[str, float | tuple[float, float]]:
+        """F_t (N), v (m/s), the resonance ratio N, contact ratios, load cycles N_L and the root
+        form s_Fn, rho_F, h_Fe (mm), alpha_Fen (deg), q_s
+        (:data:`gears.rating.iso6336.QUANTITIES`)."""
+        return self._table(QUANTITIES)
+
+    def check(self, min_pitting: float = 1.0, min_bending: float = 1.4) -> Report:
+        """Findings ``pitting_1``, ``pitting_2``, ``bending_1``, ``bending_2``: each safety
+        against its minimum (margin ``S - S_min``). The minimums are numbers >= 0.
+
+        >>> from gears import Gear, GearPair
+        >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+        >>> p.rating(200, 1500).check().ok
+        True
+        """
+        out = []
+        for name, minimum in (("min_pitting", min_pitting), ("min_bending", min_bending)):
+            if (
+                isinstance(minimum, bool)
+                or not isinstance(minimum, int | float)
+                or not (math.isfinite(minimum) and minimum >= 0)
+            ):
+                raise GearError(f"{name} = {minimum!r}; valid is a number >= 0")
+        stress = self.stresses
+        for kind, safeties, minimum, s, p, what in (
+            ("pitting", self.safety_pitting, min_pitting, "sigma_H", "sigma_HP", "S_H"),
+            ("bending", self.safety_bending, min_bending, "sigma_F", "sigma_FP", "S_F"),
+        ):
+            for i in (0, 1):
+                sf = safeties[i]
+                out.append(
+                    Finding(
+                        f"{kind}_{i + 1}", sf - minimum,
+                        f"{what}{i + 1} = {sf:.3f} vs required {minimum:g} ({s} = "
+                        f"{stress[s][i]:.1f} MPa, {p} = {stress[p][i]:.1f} MPa)", unit="",
+                    )
+                )  # fmt: skip
+        return Report(out)
+
+    def _summary(self) -> list[str]:
+        """The pair, the operating conditions and the root-form routes, one line each."""
+        st = self.settings
+        g1, g2 = self.pair.g1, self.pair.g2
+        kind = "internal" if getattr(g2, "internal", False) else "external"
+        return [
+            f"ISO 6336 method B rating: {g1.teeth}/{g2.teeth} ({kind}), m_n = {g1.module:g} mm, "
+            f"b = {st.get('face_width', float('nan')):g} mm",
+            f"torque {st.get('torque', float('nan')):g} N m on gear 1 at "
+            f"{st.get('speed', float('nan')):g} rpm, life {st.get('life', float('nan')):g} h, "
+            f"materials {st.get('materials', '?')}",
+            f"root form: gear 1 {self.roots[0]}, gear 2 {self.roots[1]}",
+        ]
+
+    def __str__(self) -> str:
+        lines = [
+            *self._summary(),
+            "",
+            f"{'':26s} {'gear 1':>10s} {'gear 2':>10s}",
+            f"{'safety pitting S_H':26s} {self.safety_pitting[0]:10.4f} "
+            f"{self.safety_pitting[1]:10.4f}",
+            f"{'safety bending S_F':26s} {self.safety_bending[0]:10.4f} "
+            f"{self.safety_bending[1]:10.4f}",
+        ]
+        for name, value in self.stresses.items():
+            if isinstance(value, tuple):
+                lines.append(f"{name + ' [MPa]':26s} {value[0]:10.2f} {value[1]:10.2f}")
+            else:
+                lines.append(f"{name + ' [MPa]':26s} {value:10.2f}")
+        lines.append("")
+        lines.append(f"{'factor':13s} {'value':>19s}  {'clause':16s} what")
+        for symbol, _, what, clause in FACTORS:
+            lines.append(f"{symbol:13s} {_fmt(self.factors[symbol]):>19s}  {clause:16s} {what}")
+        lines.append("")
+        for symbol, _, what, unit in QUANTITIES:
+            label = f"{what} [{unit}]" if unit else what
+            lines.append(f"{symbol:13s} {_fmt(self.quantities[symbol]):>19s}  {label}")
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        sh, sf = self.safety_pitting, self.safety_bending
+        return f"Rating(S_H = {sh[0]:.3f} / {sh[1]:.3f}, S_F = {sf[0]:.3f} / {sf[1]:.3f})"
+
+    def _repr_html_(self) -> str:
+        """What a notebook shows: the safeties (a row marked when a safety is below the default
+        minimum of :meth:`check`) and stresses per gear, then every factor with its ISO clause
+        and the quantities, as HTML tables under the pair and its operating conditions."""
+        failed = self.check().failed()
+        rows = [
+            ("safety pitting S_H", *(f"{s:.4f}" for s in self.safety_pitting)),
+            ("safety bending S_F", *(f"{s:.4f}" for s in self.safety_bending)),
+        ]
+        marks = [any(n.startswith("pitting") for n in failed),
+                 any(n.startswith("bending") for n in failed)]  # fmt: skip
+        for name, value in self.stresses.items():
+            both = value if isinstance(value, tuple) else (value, value)
+            rows.append((f"{name} [MPa]", *(f"{v:.2f}" for v in both)))
+            marks.append(False)
+        factors = [(s, _fmt(self.factors[s]), clause, what) for s, _, what, clause in FACTORS]
+        quantities = [(s, _fmt(self.quantities[s]), f"{what} [{unit}]" if unit else what)
+                      for s, _, what, unit in QUANTITIES]  # fmt: skip
+        return "\n".join([
+            html_table(["", "gear 1", "gear 2"], rows, failing=marks,
+                       caption="; ".join(self._summary())),
+            html_table(["factor", "value (gear 1 / gear 2)", "clause", "what"], factors),
+            html_table(["quantity", "value (gear 1 / gear 2)", "what"], quantities),
+        ])  # fmt: skip
+
+
+def _fmt(value) -> str:
+    if isinstance(value, tuple):
+        return " / ".join(_fmt(v) for v in value)
+    if abs(value) >= 1e5 or (value != 0 and abs(value) < 1e-3):
+        return f"{value:.4g}"
+    return f"{value:.5g}"
+
+
+def load_diameters(pair) -> tuple[float, float]:
+    """``(d_en1, d_en2)``: where method B loads each gear of ``pair`` (as mounted), the outer
+    point of single contact on its virtual spur gear (:func:`gears.rating.iso6336.load_point`); NaN
+    where that point lies inside the base circle.
+
+    >>> from gears import Gear, GearPair
+    >>> [round(d, 4) for d in load_diameters(GearPair(Gear(20, 2), Gear(40, 2)))]
+    [40.6096, 80.9323]
+    """
+    eps = pair.contact_ratio
+    out = []
+    for gear in pair.mounted:
+        d_en = load_point(gear.teeth, gear.module, gear.tip_diameter, gear.reference_diameter,
+                          gear.pressure_angle, gear.helix_angle, eps, gear.internal)[0]  # fmt: skip
+        out.append(float(d_en))
+    return out[0], out[1]
+
+
+@functools.lru_cache(maxsize=256)
+def _measured(gear, d_en: float, method: str):
+    """The measured root of ``gear`` (cached: a torque sweep measures each gear once)."""
+    return measure_root(gear, d_en, "exact" if method == "measured" else "simulated")
+
+
+def rate_pair(
+    pair, torque, speed, material_="case-carburized", *, life=20000.0, application_factor=1.0,
+    quality=6, roughness=1.0, oil_viscosity=220.0, tip_relief=None, sigma_Hlim=None,
+    sigma_Flim=None, face_width=None, contacts=(1, 1), idler=(False, False), misalignment=None,
+    root="auto", **factors,
+) -> Rating:  # fmt: skip
+    """The :class:`Rating` of ``pair`` (see :meth:`gears.GearPair.rating` for the parameters).
+
+    ``face_width`` (mm) defaults to the smaller of the gears' face widths; ``root`` is one of
+    :data:`ROOT_ROUTES`; ``contacts`` and ``idler`` are those of
+    :func:`gears.rating.iso6336.rate_pairs` (a planet, a sun meshing several planets).
+    """
+    from gears.rating.iso6336 import _number  # the shared input check
+
+    if getattr(pair, "is_rack", False):
+        raise GearError("a pinion-and-rack pair has no ISO 6336 rating here; rate a gear pair")
+    if root not in ROOT_ROUTES:
+        raise GearError(f"root = {root!r}; valid are {', '.join(map(repr, ROOT_ROUTES))}")
+    g1, g2 = pair.mounted
+    if face_width is None:
+        widths = [w for w in (pair.g1.face_width, pair.g2.face_width) if w]
+        if not widths:
+            raise GearError("face_width = None: give face_width (mm) or set the gears' face widths")
+        face_width = min(widths)
+    b = float(_number("face_width", face_width, 0.0, 1e5))
+    mats = material_ if isinstance(material_, tuple | list) else (material_, material_)
+    if len(mats) != 2:
+        raise GearError(f"material = {material_!r}; give one material or a pair")
+    m1, m2 = (material(m) for m in mats)
+    # the root of each gear: the standard's equations or measured on its real tooth
+    roots, routes = [None, None], ["", ""]
+    for i, gear in enumerate((g1, g2)):
+        shaper = gear.internal or gear.cutter is not None
+        route = root if root != "auto" else ("measured" if shaper else "standard")
+        if route == "standard":
+            routes[i] = "ISO 6336-3 rack approximation" if gear.internal else "ISO 6336-3 (rack)"
+            continue
+        d_en = load_diameters(pair)[i]
+        if not math.isfinite(d_en):
+            raise GearError(
+                f"gear {i + 1}: the outer point of single contact lies inside the base circle of "
+                "the virtual gear: method B's Y_F does not apply"
+            )
+        form = _measured(gear, round(d_en, 9), route)
+        roots[i] = form.standard
+        cutter = "shaper" if shaper else "rack"
+        where = "exact envelope" if route == "measured" else "simulated cut"
+        routes[i] = f"measured on the {where} ({cutter}-cut)"
+    values = rate_pairs(
+        g1.teeth, g2.teeth, g1.module, b, torque, speed, x1=g1.profile_shift,
+        x2=g2.profile_shift, pressure_angle=g1.pressure_angle, helix_angle=g1.helix_angle,
+        internal=g2.internal, material=(m1, m2), sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
+        life=life, application_factor=application_factor, quality=quality, roughness=roughness,
+        oil_viscosity=oil_viscosity, tip_relief=tip_relief, contacts=contacts, idler=idler,
+        misalignment=misalignment, addendum=g1.rack.addendum,
+        dedendum=(g1.rack.dedendum, g2.rack.dedendum),
+        root_radius=(g1.rack.root_radius, g2.rack.root_radius),
+        protuberance=(g1.rack.protuberance, g2.rack.protuberance),
+        tip_shortening=pair.tip_shortening,
+        tip_alteration=(pair.g1.tip_alteration, pair.g2.tip_alteration), root=tuple(roots),
+        factors=factors, errors="raise", threads=1, geometry=pair._geometry,
+    )  # fmt: skip
+    settings = {
+        "torque": float(torque), "speed": float(speed), "life": float(life), "face_width": b,
+        "materials": m1.name if m1 == m2 else f"{m1.name} / {m2.name}",
+        "application_factor": application_factor, "quality": quality, "roughness": roughness,
+        "oil_viscosity": oil_viscosity, "tip_relief": tip_relief, "contacts": contacts,
+        "idler": idler, "given": dict(factors),
+    }  # fmt: skip
+    return Rating(pair, values, settings, (routes[0], routes[1]))

@@ -1,0 +1,2 @@
+"""Layer 9, command line: the gear commands (``pair``, ``profile``, ``mesh``, ``bevel``, ``rate``,
+``search``), one module each; see :mod:`trains.cli.app`."""

@@ -1,0 +1,106 @@
+"""Check a bevel (car) differential built on real straight bevel gears: the side gears and pinions
+as a bevel pair at 90 deg (every check of 'geartrain bevel'), the pinions' assembly (2 z_side /
+pinions an integer) and their neighbour gap, and the speeds when cornering (Ozols (7.9):
+left + right = 2 case); optionally write it in 3D and an animation of it turning through a
+corner (the wheels at --left and --right).
+
+Speeds are counted about the axle for the wheels and the case, and about its own axis for each
+pinion (its spin in the case). The exit status is 1 when a check fails.
+
+Examples:
+    geartrain differential --side 16 --pinion 10 --module 3 --gleason
+    geartrain differential --side 16 --pinion 10 --module 3 --gleason --scene diff.glb
+    geartrain differential --side 15 --pinion 10 --pinions 3 --gleason --pressure-angle 22.5
+"""
+
+from __future__ import annotations
+
+import argparse
+import functools
+
+from trains.cli._common import (
+    BEVEL_NAMES,
+    CHECK_FAILED,
+    DRAWING_NAMES,
+    OK,
+    bevel_arguments,
+    drawing_arguments,
+    finite,
+    integer,
+    refuse_undrawn,
+    write_animation,
+    write_scene,
+)
+
+HELP = "check a bevel differential (side gears, pinions) and its cornering speeds; 3D and GIF"
+
+NAMES = {
+    "side": "--side",
+    "pinion": "--pinion",
+    "n_pinions": "--pinions",
+    **BEVEL_NAMES,
+    **DRAWING_NAMES,
+    "left": "--left",
+    "right": "--right",
+}
+"""The library's names in error messages -> this command's options (see trains.cli.app)."""
+
+#: the defaults of --frames and of --tolerance for --scene (mm)
+FRAMES, SCENE_TOLERANCE = 36, 0.02
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--side", type=integer("--side"), default=16, help="teeth of each side gear"
+    )
+    parser.add_argument(
+        "--pinion", type=integer("--pinion"), default=10, help="teeth of each pinion"
+    )
+    parser.add_argument(
+        "--pinions", "-k", type=integer("--pinions"), default=2,
+        help="equally spaced pinions on the case",
+    )  # fmt: skip
+    bevel_arguments(
+        parser, module=3.0, shaft_angle=False,
+        face_width_help="face width of the bevel gears, mm (default: R_e / 3.5)",
+        shift_help="the pinions' profile shift x_hm (the side gears get its negative)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--gleason", action="store_true",
+        help="the Gleason proportions of KHK Table 4.11 (replaces --shift)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--left", type=finite("--left"), default=90.0, help="speed of the left wheel (any unit)"
+    )
+    parser.add_argument(
+        "--right", type=finite("--right"), default=110.0,
+        help="speed of the right wheel (the same unit)",
+    )  # fmt: skip
+    drawing_arguments(parser, "the differential", "it turning through a corner at --left/--right",
+                      FRAMES, SCENE_TOLERANCE)  # fmt: skip
+
+
+def run(args: argparse.Namespace) -> int:
+    from trains.differential import Differential
+    from trains.errors import TrainError
+
+    refuse_undrawn(args)
+    if args.gleason and args.shift:
+        raise TrainError("--gleason sets the shift: give --shift without --gleason")
+    kw = {} if args.gleason else {"profile_shift": args.shift}
+    d = Differential(args.side, args.pinion, args.pinions, args.module, args.face_width,
+                     args.pressure_angle, args.gleason, **kw)  # fmt: skip
+    m = d.solve(left=args.left, right=args.right)
+    report = d.check()
+    print(f"{d.train.name}, module {d.module:g} mm, face width {d.face_width:g} mm")
+    print(d.pair.describe())
+    spin = float(m.relative("pinion", "case"))
+    print(f"speeds: left {args.left:g}, right {args.right:g}, case {float(m['case']):g} "
+          f"(Ozols (7.9): left + right = 2 case), pinions spin {spin:+g} in the case")  # fmt: skip
+    print(report)
+    write_scene(args, lambda tol: d.scene(tolerance=tol), SCENE_TOLERANCE,
+                lambda _, tol: f"side gears and {d.n_pinions} pinions phased, instanced; "
+                f"tolerance {tol:g} mm")  # fmt: skip
+    turning = functools.partial(d.animate, left=args.left, right=args.right)
+    write_animation(args, turning, FRAMES, " turning through a corner")
+    return OK if report.ok else CHECK_FAILED
