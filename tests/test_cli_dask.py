@@ -2,7 +2,7 @@
 scheduler listens, a cluster that loses its last worker mid-search. From the CLI each is exit 2
 with one line naming what happened, within ``--connect-timeout``; from the API
 (``gears.search.engine.pairs``, ``trains.synthesize_gearbox``, the resolver
-``gears.search.engine.dask_client``) a GearError / TrainError.
+``gears.search.cluster.dask_client``) a GearError / TrainError.
 
 The clusters are in-process ``LocalCluster``s (threads), so each case takes a second or two.
 """
@@ -20,7 +20,8 @@ import pytest
 from distributed import Client, LocalCluster
 
 from gears import GearError
-from gears.search.engine import dask_client, pairs
+from gears.search.cluster import dask_client
+from gears.search.engine import pairs
 from trains import TrainError, synthesize_gearbox
 from trains.cli.app import main
 

@@ -15,7 +15,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import Gear, GearError, GearPair
-from gears.search.engine import Limits, SearchResult, pairs
+from gears.search.candidates import Limits
+from gears.search.engine import pairs
+from gears.search.result import SearchResult
 
 
 def _feasible_by_brute_force(teeth, shifts, module=2.0, limits=None):

@@ -320,7 +320,7 @@ def test_command_line_sizes_gearboxes_locally_and_on_a_scheduler(tmp_path, capsy
 def test_kept_heap_on_a_worker_restores_itself(monkeypatch):
     # a Dask worker's nanny sets MALLOC_TRIM_THRESHOLD_; the tasks keep their heap while they
     # run (glibc mallopt) and give it back after: nested and repeated blocks balance out
-    from gears.search import engine as search
+    from gears.search import cluster as search
 
     monkeypatch.setenv("MALLOC_TRIM_THRESHOLD_", "65536")
     with search.kept_heap():

@@ -666,7 +666,7 @@ def dask_session(args: argparse.Namespace, announce: bool = True) -> Iterator[ob
         return
     import dask
 
-    from gears.search.engine import dask_client
+    from gears.search.cluster import dask_client
 
     seconds = args.connect_timeout or CONNECT_TIMEOUT
     with dask.config.set({"distributed.comm.timeouts.connect": seconds}):

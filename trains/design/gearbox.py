@@ -51,7 +51,7 @@ import numpy as np
 from gears.errors import GearError
 from gears.meshing import default_threads
 from gears.rating.sizing import ISO54, load_case
-from gears.search.engine import dask_client, dask_results, in_kept_heap, progress_callback
+from gears.search.cluster import dask_client, dask_results, in_kept_heap, progress_callback
 from trains.design.sizing import size_stages
 from trains.design.synthesis import (
     BLOCK,

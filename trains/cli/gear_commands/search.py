@@ -192,7 +192,7 @@ def run(args: argparse.Namespace) -> int:
         raise TrainError(f"--output {args.output!r} is a folder: a Parquet dataset of every "
                          "feasible row, with --all; give a .parquet or .csv file")  # fmt: skip
     if args.output is not None and not folder:  # before the search: Parquet needs pyarrow
-        from gears.search.engine import check_table_output
+        from gears.search.tables import check_table_output
 
         check_table_output(args.output)
     load = load_options(args, widths_alone=args.what == "pairs")
@@ -230,7 +230,7 @@ def _search(args: argparse.Namespace, client, load: dict) -> int:
         table = found.to_array()
         print(found.table())
     if args.output is not None:
-        from gears.search.engine import write_table
+        from gears.search.tables import write_table
 
         write_table(table, args.output)
     return OK if len(found) else CHECK_FAILED

@@ -204,7 +204,7 @@ def _gearboxes(args: argparse.Namespace) -> int:
     from trains.design.gearbox import synthesize_gearbox
 
     if args.table is not None:  # before the search: Parquet needs pyarrow
-        from gears.search.engine import check_table_output
+        from gears.search.tables import check_table_output
 
         check_table_output(args.table)
     load = load_options(args)
@@ -220,7 +220,7 @@ def _gearboxes(args: argparse.Namespace) -> int:
         )  # fmt: skip
     print(found.table())
     if args.table is not None and len(found):
-        from gears.search.engine import write_table
+        from gears.search.tables import write_table
 
         write_table(found.to_array(), args.table)
     return OK if len(found) else CHECK_FAILED
