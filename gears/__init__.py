@@ -16,8 +16,9 @@ from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutting.cutter import ShaperCutter
 from gears.errors import GearError
 from gears.gear import Gear
+from gears.mating import Rack
 from gears.meshing import PairGeometry, pair_geometry
-from gears.pair import GearPair, Rack
+from gears.pair import GearPair
 from gears.rack import BasicRack
 from gears.rating.capacity import Rating
 from gears.rating.iso6336 import PairRatings, rate_pairs

@@ -1,4 +1,5 @@
-"""Layer 9, classes: :class:`GearPair` (and :class:`Rack`), one mesh as a thin view.
+"""Layer 9, classes: :class:`GearPair`, one mesh as a thin view (its mates and path of contact
+in :mod:`gears.mating`, its interference findings in :mod:`gears.interference`).
 
 External, internal (gear 2 is the ring) or pinion-and-rack, spur or helical. The formulas are
 the vectorised functions of :mod:`gears.meshing` (its docstring defines the positions on the line
@@ -27,9 +28,7 @@ from gears.arguments import (
     check_fps,
     check_frames,
     check_length,
-    check_module,
     check_positive,
-    check_pressure_angle,
     check_tolerance,
 )
 from gears.budget import check_budget
@@ -38,7 +37,6 @@ from gears.checks import (
     form_lengths,
     proportional_split,
     tip_diameter_limits,
-    tip_interference,
 )
 from gears.cutting.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.errors import GearError
@@ -46,11 +44,12 @@ from gears.figures.drawing import pair_svg
 from gears.files import check_output
 from gears.gear import Gear
 from gears.geometry import check_real
+from gears.interference import interference_findings
 from gears.involute import inv
+from gears.mating import PathOfContact, Rack
 from gears.meshing import (
     PairGeometry,
     center_distance_shift_sum,
-    internal_interference,
     line_positions,
     mesh_efficiency,
     pair_geometry,
@@ -68,84 +67,7 @@ if TYPE_CHECKING:
     from gears.cutting.cutter import ShaperCutter
     from gears.rating.materials import Material
 
-__all__ = ["GearPair", "PathOfContact", "Rack"]
-
-
-@dataclass(frozen=True)
-class Rack:
-    """A gear rack (z -> infinity) to mesh with a pinion.
-
-    Parameters
-    ----------
-    module : float
-        Normal module; must equal the pinion's.
-    pressure_angle : float
-        Normal pressure angle in degrees (defaults to 20).
-    helix_angle : float
-        Helix angle of the rack teeth in degrees; the pinion's is its negative.
-    face_width : float or None
-        For the overlap ratio.
-    addendum : float
-        Rack addendum coefficient h_aP* (1.0 for ISO 53).
-    """
-
-    module: float
-    pressure_angle: float = 20.0
-    helix_angle: float = 0.0
-    face_width: float | None = None
-    addendum: float = 1.0
-
-    def __post_init__(self) -> None:
-        set_ = object.__setattr__
-        set_(self, "module", check_module(self.module, "rack module"))
-        set_(
-            self, "pressure_angle", check_pressure_angle(self.pressure_angle, "rack pressure_angle")
-        )
-        set_(self, "helix_angle", check_real("rack helix_angle", self.helix_angle, -60.0, 60.0))
-        if self.face_width is not None:
-            set_(self, "face_width", check_positive("rack face_width", self.face_width))
-        set_(self, "addendum", check_real("rack addendum", self.addendum, 0.0, 10.0))
-
-
-@dataclass(frozen=True)
-class PathOfContact:
-    """Positions on the line of action, in mm from N1 (gear 1's base-circle tangent point).
-
-    ``start`` (A, gear 2's tip when gear 1 drives), ``end`` (E, gear 1's tip), ``pitch_point``
-    (C), ``n2`` (N2, gear 2's tangent point; for a rack, ``inf``), ``base_pitch`` p_bt, and the
-    single-contact zone ``[single_start, single_end] = [E - p_bt, A + p_bt]`` (empty when the
-    contact ratio reaches 2).
-    """
-
-    start: float
-    end: float
-    pitch_point: float
-    n2: float
-    base_pitch: float
-
-    @property
-    def length(self) -> float:
-        """g_alpha = AE."""
-        return self.end - self.start
-
-    @property
-    def single_start(self) -> float:
-        return self.end - self.base_pitch
-
-    @property
-    def single_end(self) -> float:
-        return self.start + self.base_pitch
-
-    @property
-    def single_contact(self) -> tuple[float, float] | None:
-        """The single-tooth contact zone on the line, or None when two pairs always mesh."""
-        lo, hi = self.single_start, self.single_end
-        return (lo, hi) if hi > lo else None
-
-
-def _form_text(gear: Gear) -> str:
-    form = gear._form
-    return "none (the undercut cuts the flank away)" if math.isnan(form) else f"{form:.4f} mm"
+__all__ = ["GearPair"]
 
 
 def _same(name: str, a: float, b: float) -> None:
@@ -820,7 +742,7 @@ class GearPair:
                 f"transverse contact ratio {eps:.4f} vs required {min_contact_ratio:g}", unit="",
             )
         )  # fmt: skip
-        findings.extend(self._interference_findings())
+        findings.extend(interference_findings(self))
         return Report(findings)
 
     @cached_property
@@ -853,95 +775,6 @@ class GearPair:
         rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
         limit1, limit2 = tip_diameter_limits(rb1, rb2, p.n2, u_f1, l2, self.internal)
         return float(limit1), float(limit2)
-
-    def _interference_findings(self) -> list[Finding]:
-        p = self.path_of_contact
-        g1, g2 = self.mounted
-        # gear 2's tip must meet gear 1's flank at or above gear 1's form circle; gear 1's tip
-        # (external) at least l2 before N2, (internal) within l2 of N2: gears.checks
-        u_f1, l2 = self._form_lengths
-        n2 = 0.0 if self.is_rack else p.n2
-        margin1, margin2 = (
-            float(v) for v in tip_interference(p.start, p.end, n2, u_f1, l2, self.internal)
-        )
-        clear = self.tip_diameter_limits[1]
-        if self.is_rack:
-            remedy = f"a rack addendum of at most {clear:.4f} mm clears it"
-        else:
-            bound = "at least" if self.internal else "at most"
-            remedy = f"a mate tip diameter of {bound} {clear:.4f} mm clears it"
-        out = [
-            Finding(
-                "tip_interference", margin1,
-                f"mate's tip meets gear 1's flank {margin1:+.4f} mm along the line of action from "
-                f"its form circle d_Ff1 = {_form_text(g1)}"
-                + ("" if margin1 >= 0 else f" (it reaches the fillet; {remedy})"),
-            )
-        ]  # fmt: skip
-        if self.is_rack:
-            return out
-        clear1 = self.tip_diameter_limits[0]
-        out.append(
-            Finding(
-                "tip_interference_2", margin2,
-                f"gear 1's tip meets gear 2's flank {margin2:+.4f} mm along the line of action "
-                f"from its form circle d_Ff2 = {_form_text(g2)}"
-                + (
-                    ""
-                    if margin2 >= 0
-                    else f" (it reaches the fillet; a tip diameter of at most {clear1:.4f} mm "
-                    "on gear 1 clears it)"
-                ),
-            )
-        )  # fmt: skip
-        if self.internal:
-            out.extend(self._internal_findings())
-        return out
-
-    def _internal_findings(self) -> list[Finding]:
-        """The KHK internal-gear checks (standards.md §1.8), each as a signed angle margin."""
-        g1, g2 = self.mounted
-        a = self.center_distance
-        ra1, ra2 = g1.tip_diameter / 2, g2.tip_diameter / 2
-        rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
-        z1, z2 = g1.teeth, g2.teeth
-        out = [
-            Finding(
-                "ring_tip_above_base", ra2 - rb2,
-                f"ring tip radius {ra2:.4f} mm vs its base radius {rb2:.4f} mm",
-            )
-        ]  # fmt: skip
-        if ra2 <= rb2 or ra1 <= rb1:
-            return out
-        m = internal_interference(z1, z2, a, ra1, ra2, rb1, rb2, self.working_pressure_angle)
-        limit = z1 / z2 - float(m.involute)  # 1 - tan(alpha_a2) / tan(alpha_wt)
-        out.append(
-            Finding(
-                "involute_interference", float(m.involute),
-                f"z1/z2 = {z1 / z2:.4f} vs 1 - tan(alpha_a2)/tan(alpha_wt) = {limit:.4f} "
-                "(ring tip must not pass N1)", unit="",
-            )
-        )  # fmt: skip
-        if ra2 >= a + ra1:
-            msg = "tip circles do not cross: no trochoid interference possible"
-        elif ra1 >= a + ra2:
-            msg = "the ring's tip circle lies inside the pinion's: the tips foul"
-        else:
-            msg = "tips clear each other while leaving mesh"
-        out.append(
-            Finding(
-                "trochoid_interference", float(m.trochoid), msg + " (margin in rad)", unit="rad"
-            )
-        )
-        msg = (
-            "the pinion's tip circle exceeds the ring's: it cannot be moved in radially"
-            if ra1 > ra2
-            else "pinion can be moved in radially (trimming)"
-        )
-        out.append(
-            Finding("radial_interference", float(m.radial), msg + " (margin in rad)", unit="rad")
-        )
-        return out
 
     def _repr_svg_(self) -> str:
         """Both gears in mesh with the line of action as an SVG picture, what a notebook shows

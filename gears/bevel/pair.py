@@ -47,7 +47,8 @@ from gears.errors import GearError
 from gears.figures.drawing import bevel_pair_svg
 from gears.gear import Gear
 from gears.geometry import check_real, check_teeth
-from gears.pair import GearPair, Rack
+from gears.mating import Rack
+from gears.pair import GearPair
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 from gears.solid.mesh import COLOURS, scene
