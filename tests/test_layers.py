@@ -25,7 +25,7 @@ LAYERS = {
     "gears": [
         ["errors", "display", "lazy"],
         ["involute", "report", "files", "arguments", "budget", "rating.materials"],
-        ["geometry", "meshing", "search.tables"],
+        ["geometry", "meshing", "search.tables", "forces"],
         ["rack", "mating", "cutting.cutter", "bevel.cone", "search.cluster"],
         ["checks", "cutting.profile", "cutting.measure", "rating.iso6336", "bevel.spherical"],
         ["interference", "cutting.generate", "bevel.crown", "rating.sizing"],
