@@ -11,7 +11,8 @@ The public surface (see ``docs/``)::
 
 from importlib.metadata import PackageNotFoundError, version
 
-from gears.bevel.pair import BevelGear, BevelPair
+from gears.bevel.gear import BevelGear
+from gears.bevel.pair import BevelPair
 from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutting.cutter import ShaperCutter
 from gears.errors import GearError

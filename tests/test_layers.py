@@ -32,7 +32,7 @@ LAYERS = {
         ["cutting.outline", "rating.root", "search.candidates"],
         ["solid.mesh", "solid.animate", "figures.drawing", "bevel.solid", "search.reduction"],
         ["gear", "rating.capacity", "solid.render", "search.checks"],
-        ["pair", "search.scheduling"],
+        ["pair", "bevel.gear", "search.scheduling"],
         ["shift", "figures.plot", "bevel.pair", "search.result"],
         ["solid.export", "search.engine"],
     ],

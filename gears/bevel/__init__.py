@@ -16,7 +16,7 @@ __getattr__, __dir__, __all__ = attach(
         "bevel_placement": "gears.bevel.solid",
         "bevel_solid": "gears.bevel.solid",
         "BevelBlank": "gears.bevel.solid",
-        "BevelGear": "gears.bevel.pair",
+        "BevelGear": "gears.bevel.gear",
         "BevelGeometry": "gears.bevel.cone",
         "BevelPair": "gears.bevel.pair",
         "check_shaft_angle": "gears.bevel.cone",
@@ -41,6 +41,6 @@ __getattr__, __dir__, __all__ = attach(
         "spherical_involute": "gears.bevel.spherical",
         "SphericalTooth": "gears.bevel.spherical",
         "virtual_teeth": "gears.bevel.cone",
-        "VirtualGear": "gears.bevel.pair",
+        "VirtualGear": "gears.bevel.gear",
     },
 )

@@ -33,7 +33,7 @@ from gears.bevel.cone import (
     pitch_angles,
     virtual_teeth,
 )
-from gears.bevel.pair import VirtualGear
+from gears.bevel.gear import VirtualGear
 
 
 # ------------------------------------------------------------------------------ cone formulas
