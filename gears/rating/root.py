@@ -8,16 +8,14 @@ the outer point of single pair contact (diameter ``d_en``, along the flank norma
 ``alpha_Fen``) measured from the tangent points. The standard gives closed equations for a
 rack-generated fillet (:func:`gears.rating.iso6336.root_form`) and a rack approximation for internal
 gears (:func:`gears.rating.iso6336.internal_root_form`); here the same lengths are measured on the
-tooth
-the cutter actually leaves:
+tooth the cutter actually leaves:
 
 * ``method="exact"``: on the exact envelope of the rack or shaper cutter
   (:class:`gears.cutting.profile.ToothProfile`, :class:`gears.cutting.profile.ShaperProfile`): the
-  30 (60) deg
-  point by Brent's method on the fillet's tangent angle, rho_F from the curve's derivatives;
+  30 (60) deg point by Brent's method on the fillet's tangent angle, rho_F from the curve's
+  derivatives;
 * ``method="simulated"``: on the polygon of a simulated cut (:mod:`gears.cutting.generate`, spur
-gears):
-  quartics in the arc length fitted to the points within 0.1 m_n of arc around the place where
+  gears): quartics in the arc length fitted to the points within 0.1 m_n of arc around the place where
   the polyline's direction crosses the angle, the tangent point and rho_F taken on them.
 
 Both work on the virtual spur gear of the normal section, as the standard does: a helical gear
