@@ -355,7 +355,7 @@ def test_every_help_example_runs(capsys, monkeypatch, tmp_path, where, example):
 
 def test_scheme_help_names_every_scheme():
     # the help text lists the schemes without importing the library; it must not drift
-    from trains.planetary.stage import SCHEMES
+    from trains.planetary.schemes import SCHEMES
 
     for name in ("planetary", "synthesize"):
         text = " ".join(_subparsers()[name].format_help().split())

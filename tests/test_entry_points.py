@@ -291,7 +291,7 @@ def test_the_tolerance_floor_follows_the_module():
 def test_synthesize_candidates_pass_their_own_neighbour_check():
     # issue: a candidate failed its own neighbour check by -1.4e-14. Six planets at clearance 0
     # touch exactly (2 a sin 30 deg = a = the tip diameter, in exact arithmetic); the search and
-    # the stage decide with the one stated tolerance (trains.planetary.stage.NEIGHBOUR_TOLERANCE)
+    # the stage decide with the one stated tolerance (trains.planetary.checks.NEIGHBOUR_TOLERANCE)
     from trains import synthesize
 
     found = synthesize(3, 6, scheme="stepped", clearance=0.0, module=0.3, z_min=17, z_max=100,

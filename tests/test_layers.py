@@ -39,8 +39,8 @@ LAYERS = {
     "trains": [
         ["errors"],
         ["inertia", "trajectory", "conditions"],
-        ["willis"],
-        ["power", "coaxial"],
+        ["willis", "planetary.schemes"],
+        ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene"],
         ["capacity"],
         ["catalog", "differential", "planetary.stage"],
         ["toml_format", "design.synthesis", "design.sizing"],

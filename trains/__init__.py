@@ -16,14 +16,14 @@ from __future__ import annotations
 import importlib
 
 _WHERE = {
-    "Assembly": "trains.planetary.stage",
+    "Assembly": "trains.planetary.checks",
     "Candidate": "trains.design.synthesis",
     "Candidates": "trains.design.synthesis",
     "Gearbox": "trains.design.gearbox",
     "Gearboxes": "trains.design.gearbox",
     "IllConditionedTrainWarning": "trains.willis",
     "Motion": "trains.willis",
-    "Placement": "trains.planetary.stage",
+    "Placement": "trains.planetary.placement",
     "Planetary": "trains.planetary.stage",
     "PowerFlow": "trains.power",
     "Relation": "trains.willis",

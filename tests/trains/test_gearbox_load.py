@@ -23,7 +23,7 @@ from gears.rating.sizing import ISO54, load_case
 from trains import Planetary, TrainError, synthesize, synthesize_gearbox
 from trains.capacity import LOAD_SHARING
 from trains.design.sizing import ring_tip_alteration, size_stages, stage_meshes
-from trains.planetary.stage import stage_ratio
+from trains.planetary.schemes import stage_ratio
 
 STAGES = [
     ("simple", (21, 24, 24, 69), 3),

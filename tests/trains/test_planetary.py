@@ -10,7 +10,7 @@ import pytest
 
 from gears import Gear, GearPair
 from trains import Planetary, TrainError
-from trains.planetary.stage import assembly_ticks, phasing_class, textbook_assembly
+from trains.planetary.schemes import assembly_ticks, phasing_class, textbook_assembly
 
 
 def brute_force_assembles(za, zb, zc, zd, k, sa, sb):

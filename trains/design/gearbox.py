@@ -64,7 +64,7 @@ from trains.design.synthesis import (
     stage_block,
 )
 from trains.errors import TrainError
-from trains.planetary.stage import SCHEMES, canonical_scheme
+from trains.planetary.schemes import SCHEMES, canonical_scheme
 
 __all__ = ["Gearbox", "Gearboxes", "synthesize_gearbox"]
 

@@ -30,7 +30,7 @@ from gears.meshing import pair_geometry
 from gears.rack import BasicRack
 from gears.rating.sizing import Load, gear_volume, rate
 from trains.capacity import LOAD_SHARING
-from trains.planetary.stage import canonical_scheme
+from trains.planetary.schemes import canonical_scheme
 
 __all__ = ["MODULE_WINDOW", "ring_tip_alteration", "size_stages", "stage_gears", "stage_meshes"]
 

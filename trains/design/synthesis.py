@@ -18,7 +18,7 @@ of an empty result):
 3. ``ratio``: exactly the target, or within the relative ``tolerance``;
 4. ``coaxiality``: by construction for four schemes (the ring follows from the lectures' table);
    for the double-planet scheme the planet triangle must close with ``clearance``;
-5. ``assembly``: the exact gcd form (:func:`trains.planetary.stage.assembly_ticks`);
+5. ``assembly``: the exact gcd form (:func:`trains.planetary.schemes.assembly_ticks`);
 6. ``neighbour``: tip circles of non-meshing planets at least ``clearance`` modules apart;
 7. ``mesh``: transverse contact ratio >= ``min_contact_ratio`` and no involute interference on
    internal meshes (:func:`gears.pair_geometry`, vectorised; skipped with
@@ -47,15 +47,15 @@ from gears.meshing import pair_geometry
 from gears.rack import BasicRack
 from gears.report import format_duration
 from trains.errors import TrainError
-from trains.planetary.stage import (
-    NEIGHBOUR_TOLERANCE,
-    Planetary,
+from trains.planetary.checks import NEIGHBOUR_TOLERANCE
+from trains.planetary.schemes import (
     _default_roles,
     assembly_ticks,
     canonical_scheme,
     coaxial_ring_teeth,
     stage_ratio,
 )
+from trains.planetary.stage import Planetary
 
 __all__ = ["STAGE_FIELDS", "Candidate", "Candidates", "set_count", "stage_block", "synthesize"]
 
