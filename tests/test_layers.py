@@ -38,7 +38,7 @@ LAYERS = {
     ],
     "trains": [
         ["errors"],
-        ["inertia", "trajectory", "conditions"],
+        ["inertia", "trajectory", "conditions", "relations"],
         ["willis", "planetary.schemes"],
         ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene"],
         ["capacity"],

@@ -3,7 +3,9 @@
 The geometric conditions of a train of real gears, as vectorised numpy functions.
 
 Pure formulas (no classes, no trains): :class:`trains.willis.Train` (``Train.check``) and
-:class:`trains.planetary.stage.Planetary` both evaluate them.
+:class:`trains.planetary.stage.Planetary` both evaluate them. Below them, the findings
+``Train.check`` reports from them on a train's relations (coaxial groups, one gear meshing twice,
+identical planets), as functions of the relations and members.
 
 * assembly number of identical planets between two central gears (lectures §4.3,
   standards.md §4): ``T = |z_b z_c - s_a s_b z_a z_d| / gcd(z_c, z_d)``, s = -1 for an external
@@ -26,7 +28,12 @@ Examples
 
 from __future__ import annotations
 
+import math
+from typing import Any
+
 import numpy as np
+
+from gears import BevelPair, Finding, Gear, GearPair
 
 __all__ = ["assembly_number", "bevel_neighbour_gap", "closure_margin", "neighbour_gap"]
 
@@ -102,3 +109,159 @@ def closure_margin(distances, tolerance=0.0):
     else:
         out = d.sum(axis=-1) - 2.0 * d.max(axis=-1)
     return out[()] if np.ndim(out) == 0 else out
+
+
+# ------------------------------------------------------------- the findings of Train.check
+
+
+def coaxiality_finding(group: tuple[str, ...], members, relations, tolerance: float) -> Finding:
+    """The ``coaxiality(a, b, ...)`` finding of :meth:`trains.Train.check` for one coaxial group
+    of ``members``: every chain of real-gear meshes (``relations``) between two of them closes."""
+    name = f"coaxiality({', '.join(group)})"
+    shaft = {m: m for m in members}  # coupled members turn on one shaft: one axis
+
+    def axis(m: str) -> str:
+        while shaft[m] != m:
+            m = shaft[m]
+        return m
+
+    for r in relations:
+        if r.kind == "couple":
+            shaft[axis(r.a)] = axis(r.b)
+    edges: dict[str, list[tuple[str, Any]]] = {}
+    for r in relations:
+        a, b = axis(r.a), axis(r.b)
+        if r.kind == "mesh" and isinstance(r.pair, GearPair) and a != b:
+            edges.setdefault(a, []).append((b, r))
+            edges.setdefault(b, []).append((a, r))
+    axes = list(dict.fromkeys(axis(m) for m in group))
+    inside = set(axes)
+    paths: list[tuple[str, list[Any]]] = []
+    for start in axes:
+        stack = [(start, [start], [])]
+        while stack and len(paths) < 1000:
+            node, seen, rels = stack.pop()
+            for nxt, r in edges.get(node, ()):
+                if nxt in seen or len(rels) >= 8:
+                    continue
+                if nxt in inside:
+                    if axes.index(nxt) > axes.index(start):
+                        paths.append((" - ".join([*seen, nxt]), [*rels, r]))
+                    continue
+                stack.append((nxt, [*seen, nxt], [*rels, r]))
+    if not paths:
+        return Finding(
+            name, 0.0,
+            f"no chain of real-gear meshes joins {', '.join(group)}: coaxiality not checked"
+            " (give the meshes gears=)", ok=True,
+        )  # fmt: skip
+    worst, text = math.inf, []
+    for label, rels in paths:
+        dist = [r.pair.center_distance for r in rels]
+        margin = float(closure_margin(dist, tolerance))
+        worst = min(worst, margin)
+        text.append(f"{label}: a_w {' / '.join(f'{d:.4f}' for d in dist)} mm")
+    rule = f"equal within {tolerance:g} mm; chains of 3+ close as a polygon"
+    return Finding(name, worst, f"{'; '.join(text)} ({rule})")
+
+
+def same_gear_findings(relations) -> list[Finding]:
+    """The ``<member>.same_gear`` findings of :meth:`trains.Train.check`."""
+    seen: dict[tuple[str, int, float], tuple[str, Gear]] = {}
+    out: list[Finding] = []
+    for r in relations:
+        if r.pair is None:
+            continue
+        for member, gear in ((r.a, r.gears[0]), (r.b, r.gears[1])):
+            key = (member, gear.teeth, gear.module)
+            if key not in seen:
+                seen[key] = (r.name, gear)
+                continue
+            first, g0 = seen[key]
+            diffs = []
+            for attr, unit in (("profile_shift", ""), ("helix_angle", " deg"),
+                               ("pressure_angle", " deg"), ("face_width", " mm")):  # fmt: skip
+                x, y = getattr(g0, attr), getattr(gear, attr)
+                if x is not None and y is not None and not math.isclose(x, y, abs_tol=1e-12):
+                    diffs.append((attr, x, y, unit))
+            name = f"{member}.same_gear"
+            if any(f.name == name for f in out):
+                continue
+            if diffs:
+                unit = {"profile_shift": "module"}.get(diffs[0][0], diffs[0][3].strip())
+                d = abs(diffs[0][1] - diffs[0][2])
+                what = ", ".join(f"{a} {x:g}{u} vs {y:g}{u}" for a, x, y, u in diffs)
+                out.append(Finding(
+                    name, -d,
+                    f"{member} meshes in {first} and {r.name} with one gear of {gear.teeth}"
+                    f" teeth, module {gear.module:g}, but the two descriptions differ:"
+                    f" {what} (a stepped gear needs another tooth count or module)",
+                    unit=unit,
+                ))  # fmt: skip
+    return out
+
+
+def planet_findings(planet_meshes, planets, relations, clearance: float) -> list[Finding]:
+    """The ``<planet>.assembly`` and ``<planet>.neighbour`` findings of :meth:`trains.Train.check`
+    for each planet of ``planet_meshes`` (planet, its meshes with central members, carrier) with
+    ``planets[planet]`` copies."""
+    out: list[Finding] = []
+    for planet, central, _carrier in planet_meshes:
+        k = planets[planet]
+        if k < 2:
+            continue
+        real = [r for r in central if r.pair is not None]
+        if not real:
+            continue  # a kinematic-only planet: nothing to check
+        if len(central) == 2:
+            z, internal = [], []
+            for r in central:
+                on_a = r.a == planet
+                z.append((r.teeth[1] if on_a else r.teeth[0], r.teeth[0] if on_a else r.teeth[1]))
+                internal.append(r.internal or r.opposed)
+            (za, zc), (zb, zd) = z
+            t = int(assembly_number(za, zc, zd, zb, internal[0], internal[1]))
+            rem = t % k if t else 0
+            ok = rem == 0
+            names = " and ".join(r.name for r in central)
+            out.append(Finding(
+                f"{planet}.assembly", -float(min(rem, k - rem)) + 0.0,
+                f"{k} equally spaced planets {planet} ({names}): assembly number T = {t}"
+                f" {'is' if ok else 'is not'} a multiple of {k} (lectures §4.3)",
+                unit="teeth", ok=ok,
+            ))  # fmt: skip
+        tips, modules = [], []
+        for r in relations:
+            got = r.gear_of(planet) if r.kind == "mesh" else None
+            if got is not None:
+                tips.append(got[1])
+                modules.append(got[0].module)
+        if isinstance(real[0].pair, BevelPair):
+            out.append(bevel_neighbour_finding(planet, real[0], k, clearance))
+            continue
+        tips_by_gear = max(tips)
+        a = real[0].pair.center_distance
+        gap = float(neighbour_gap(a, tips_by_gear, k))
+        need = clearance * max(modules)
+        out.append(Finding(
+            f"{planet}.neighbour", gap - need,
+            f"{k} planets {planet} at a_w = {a:.4f} mm: gap between tip circles (d_a ="
+            f" {tips_by_gear:.4f} mm) {gap:.4f} mm vs clearance {need:.4f} mm",
+        ))  # fmt: skip
+    return out
+
+
+def bevel_neighbour_finding(planet: str, r, k: int, clearance: float) -> Finding:
+    """``k`` bevel planets on a common apex, their axes 360/k deg apart (a differential's
+    pinions): the gap between their face cones at the outer tips
+    (:func:`trains.conditions.bevel_neighbour_gap`) against ``clearance`` modules."""
+    gear = r.gears[0] if r.a == planet else r.gears[1]
+    reach = math.hypot(gear.cone_distance, gear.addendum)
+    gap = float(bevel_neighbour_gap(gear.face_angle, reach, k))
+    need = clearance * gear.module
+    return Finding(
+        f"{planet}.neighbour", gap - need,
+        f"{k} bevel planets {planet} (face cone {gear.face_angle:.4f} deg, outer tips "
+        f"{reach:.4f} mm from the apex): gap between neighbours {gap:.4f} mm vs clearance "
+        f"{need:.4f} mm",
+    )  # fmt: skip

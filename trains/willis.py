@@ -21,6 +21,9 @@ rows. It is solved by Gauss-Jordan elimination over :class:`fractions.Fraction`,
 counts give exact ratios (a 1/10000 train stays 1/10000; a basic ratio near 1 loses nothing to
 cancellation). The elimination is done once per set of known members and gives the linear map
 from the known speeds to every speed; floats and numpy time series are then one matrix product.
+The relations, the elimination and the :class:`Motion` it gives live in :mod:`trains.relations`;
+the findings of :meth:`Train.check` in :mod:`trains.conditions`. :class:`Train` builds the rows,
+keeps one map per set of known members, and answers.
 
 Examples
 --------
@@ -42,8 +45,7 @@ import math
 import numbers
 import operator
 import warnings
-from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Iterable, Mapping
 from fractions import Fraction
 from typing import Any
 
@@ -51,377 +53,31 @@ import numpy as np
 
 from gears import BevelPair, Finding, Gear, GearError, GearPair, Report
 from trains.conditions import (
-    assembly_number,
-    bevel_neighbour_gap,
-    closure_margin,
-    neighbour_gap,
+    coaxiality_finding,
+    planet_findings,
+    same_gear_findings,
 )
 from trains.errors import TrainError
-
-FRAME = "frame"
-
-#: Above this amplification of the rounding of float inputs, a float result is flagged.
-CONDITION_LIMIT = 1e8
-
-
-class IllConditionedTrainWarning(UserWarning):
-    """A float computation through the train amplifies rounding errors by more than 1e8.
-
-    Give the tooth counts and ratios as integers or :class:`fractions.Fraction` (and the speeds
-    as integers or Fractions) to get the exact answer.
-    """
-
-
-# --------------------------------------------------------------------------------- relations
-
-
-@dataclass(frozen=True)
-class Relation:
-    """One linear relation ``k_a (w_a - w_c) + k_b (w_b - w_c) = 0`` between member speeds.
-
-    Parameters
-    ----------
-    kind : {"mesh", "link", "couple"}
-    name : str
-        Unique name in its train (``"sun-planet"`` by default); used in messages and as the key
-        of per-mesh efficiencies and powers.
-    a, b : str
-        The two members whose relative speeds the relation ties.
-    carrier : str
-        The member holding both axes (``"frame"`` for fixed axes; irrelevant for a coupling).
-    k_a, k_b : int, Fraction or float
-        The coefficients: ``(z_a, z_b)`` for an external mesh, ``(z_a, -z_b)`` internal,
-        ``(1, -ratio)`` for a link, ``(1, -1)`` for a coupling.
-    teeth : tuple of int or None
-        ``(z_a, z_b)`` for a mesh.
-    internal : bool
-        True for an internal mesh.
-    gears : (Gear, Gear) or None
-        The real gears on ``a`` and ``b`` of a mesh built from gears (None: kinematic only).
-    pair : GearPair or BevelPair or None
-        Their :class:`gears.GearPair` (the external gear is its ``g1``) or
-        :class:`gears.BevelPair`.
-    opposed : bool
-        A bevel mesh whose members' speeds are counted about axes of opposite sense relative
-        to the common apex (the sign of ``k_b`` is turned, as for an internal mesh).
-    """
-
-    kind: str
-    name: str
-    a: str
-    b: str
-    carrier: str
-    k_a: Any
-    k_b: Any
-    teeth: tuple[int, int] | None = None
-    internal: bool = False
-    gears: tuple[Gear, Gear] | None = field(default=None, compare=False, repr=False)
-    pair: GearPair | BevelPair | None = field(default=None, compare=False, repr=False)
-    opposed: bool = False
-
-    def gear_of(self, member: str) -> tuple[Gear, float] | None:
-        """The gear on ``member`` in this mesh and its tip diameter as mounted (with the pair's
-        tip shortening), or None for a kinematic-only relation."""
-        if self.pair is None or member not in (self.a, self.b):
-            return None
-        on_a = member == self.a
-        gear = self.gears[0] if on_a else self.gears[1]
-        d1, d2 = self.pair.tip_diameters
-        first = on_a != self.gears[0].internal  # the external gear is the pair's g1
-        return gear, float(d1 if first else d2)
-
-    @property
-    def coefficients(self) -> dict[str, Any]:
-        """Coefficient of each member's speed in the relation (they sum to zero)."""
-        out: dict[str, Any] = {}
-        for member, k in ((self.a, self.k_a), (self.b, self.k_b)):
-            out[member] = out.get(member, 0) + k
-        if self.kind != "couple":
-            out[self.carrier] = out.get(self.carrier, 0) - (self.k_a + self.k_b)
-        return {m: k for m, k in out.items() if k != 0}
-
-    @property
-    def basic_ratio(self) -> Any:
-        """``(w_a - w_c) / (w_b - w_c)`` with the carrier held: ``-k_b / k_a``."""
-        return -_div(self.k_b, self.k_a)
-
-    def __str__(self) -> str:
-        if self.kind == "mesh":
-            kind = "internal mesh" if self.internal else "mesh"
-            where = "" if self.carrier == FRAME else f" on carrier {self.carrier}"
-            return (
-                f"{kind} {self.name!r} ({self.a} {self.teeth[0]} / {self.b} {self.teeth[1]}{where})"
-            )
-        if self.kind == "link":
-            where = "" if self.carrier == FRAME else f" on carrier {self.carrier}"
-            return f"link {self.name!r} ({self.a} = {self.basic_ratio} x {self.b}{where})"
-        return f"coupling {self.name!r} ({self.a} = {self.b})"
-
-
-def _div(x: Any, y: Any) -> Any:
-    if isinstance(x, float) or isinstance(y, float):
-        return x / y
-    return Fraction(x) / Fraction(y)
-
-
-def _exact(x: Any) -> bool:
-    return isinstance(x, numbers.Rational) and not isinstance(x, bool)
-
-
-def _teeth(value: Any, which: str) -> int:
-    if isinstance(value, bool):
-        raise TrainError(f"{which} tooth count must be a positive integer, got {value!r}")
-    try:
-        z = operator.index(value)
-    except TypeError:
-        if isinstance(value, Fraction) and value.denominator == 1:
-            z = int(value)
-        else:
-            raise TrainError(
-                f"{which} tooth count must be a positive integer, got {value!r}"
-                " (for a ratio that is not a tooth count use Train.link)"
-            ) from None
-    if z < 1:
-        raise TrainError(f"{which} tooth count must be a positive integer (>= 1), got {z}")
-    return z
-
-
-def _ratio(value: Any) -> Fraction | float:
-    if isinstance(value, bool):
-        raise TrainError(f"ratio must be a number, got {value!r}")
-    if isinstance(value, str):
-        try:
-            r = Fraction(value)
-        except ValueError:
-            raise TrainError(f"ratio {value!r} is not a number or a fraction like '13/3'") from None
-        except ZeroDivisionError:
-            raise TrainError(f"ratio {value!r} divides by zero; give a finite ratio") from None
-        return r
-    if _exact(value):
-        return Fraction(value)
-    if isinstance(value, numbers.Real):
-        x = float(value)
-        if not math.isfinite(x):
-            raise TrainError(f"ratio must be finite, got {value!r}")
-        return x
-    raise TrainError(f"ratio must be a number, got {value!r}")
-
-
-def _name(value: Any, what: str) -> str:
-    if not isinstance(value, str) or not value:
-        raise TrainError(f"{what} must be a non-empty string (a member name), got {value!r}")
-    return value
-
-
-# --------------------------------------------------------------------------------- elimination
-
-
-@dataclass(frozen=True)
-class _Map:
-    """Result of one elimination for a given set of known members."""
-
-    known: tuple[str, ...]
-    determined: dict[str, tuple[Fraction, ...]]  # member -> coefficients over known
-    free: tuple[str, ...]  # unknown members not fixed by the known ones
-    choices: tuple[str, ...]  # members whose speeds would each remove one freedom
-    missing: int  # how many more independent speeds are needed
-    constraints: tuple[tuple[tuple[Fraction, ...], tuple[int, ...]], ...]  # (c, relation ids)
-    exact: bool  # all coefficients exact
-    amplification: float = 1.0  # relative change of the map per relative change of float data
-
-    def matrix(self) -> np.ndarray:
-        names = list(self.determined)
-        out = np.empty((len(names), len(self.known)))
-        for i, n in enumerate(names):
-            out[i] = [float(c) for c in self.determined[n]]
-        return out
-
-
-def _eliminate(
-    rows: list[dict[str, Any]], unknown: list[str], known: list[str]
-) -> tuple[list[list[Fraction]], list[int]]:
-    """Gauss-Jordan on ``[A_U | A_K | I]`` over Fractions, pivoting on the unknown columns only.
-
-    Returns the reduced rows and the pivot column of each row (-1 for a row with no pivot).
-    """
-    nu, nk, m = len(unknown), len(known), len(rows)
-    col = {n: i for i, n in enumerate(unknown)}
-    col.update({n: nu + i for i, n in enumerate(known)})
-    width = nu + nk + m
-    mat: list[list[Fraction]] = []
-    for r, coeffs in enumerate(rows):
-        row = [Fraction(0)] * width
-        for member, k in coeffs.items():
-            if member in col:  # the frame column is dropped: its speed is 0
-                row[col[member]] += Fraction(k)
-        row[nu + nk + r] = Fraction(1)
-        mat.append(row)
-    pivots = [-1] * m
-    r = 0
-    for c in range(nu):
-        p = next((i for i in range(r, m) if mat[i][c] != 0), None)
-        if p is None:
-            continue
-        mat[r], mat[p] = mat[p], mat[r]
-        piv = mat[r][c]
-        if piv != 1:
-            mat[r] = [x / piv for x in mat[r]]
-        prow = mat[r]
-        nz = [j for j in range(width) if prow[j] != 0]
-        for i in range(m):
-            if i != r and mat[i][c] != 0:
-                f = mat[i][c]
-                row = mat[i]
-                for j in nz:
-                    row[j] -= f * prow[j]
-        pivots[r] = c
-        r += 1
-        if r == m:
-            break
-    return mat, pivots
-
-
-def _replace_amplification(mp: _Map, amplification: float) -> _Map:
-    from dataclasses import replace
-
-    return replace(mp, amplification=amplification)
-
-
-# --------------------------------------------------------------------------------- motion
-
-
-class Motion(Mapping[str, Any]):
-    """The speed of every member of a train: a read-only mapping ``member -> speed``.
-
-    Speeds are :class:`~fractions.Fraction` when everything given was exact, floats for float
-    input, and numpy arrays (one value per time step) for array input. ``"frame"`` is included
-    with speed 0.
-
-    Examples
-    --------
-    >>> from trains import simple_planetary
-    >>> m = simple_planetary(20, 30, 80).solve(sun=1500, ring=0)
-    >>> m["carrier"], m.relative("planet", "carrier"), m.ratio("sun", "carrier")
-    (Fraction(300, 1), Fraction(-800, 1), Fraction(5, 1))
-    """
-
-    def __init__(self, speeds: Mapping[str, Any]) -> None:
-        self._speeds = dict(speeds)
-
-    def __getitem__(self, member: str) -> Any:
-        try:
-            return self._speeds[member]
-        except KeyError:
-            raise TrainError(
-                f"unknown member {member!r}; the members are {', '.join(sorted(self._speeds))}"
-            ) from None
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._speeds)
-
-    def __len__(self) -> int:
-        return len(self._speeds)
-
-    def relative(self, member: str, carrier: str) -> Any:
-        """Speed of ``member`` relative to ``carrier``, ``w_member - w_carrier`` (bearings)."""
-        return self[member] - self[carrier]
-
-    def ratio(self, a: str, b: str) -> Any:
-        """``w_a / w_b`` (Ozols' ``i_ab``, driver over driven).
-
-        Raises
-        ------
-        TrainError
-            If ``b`` stands still.
-        """
-        wa, wb = self[a], self[b]
-        if np.any(np.asarray(wb) == 0):
-            raise TrainError(f"{b} stands still, so the ratio {a}/{b} is infinite")
-        return _div(wa, wb) if np.ndim(wa) == 0 and np.ndim(wb) == 0 else wa / wb
-
-    def integrate(self, t: Any, initial: Mapping[str, Any] | None = None) -> Motion:
-        """Angles over time: the integral of the speeds from ``t[0]`` (or from 0 for scalars).
-
-        Parameters
-        ----------
-        t : number or array
-            Time. For scalar (constant) speeds, ``angle = initial + speed * t``; for array speeds
-            ``t`` is the array of time steps and the integral is the trapezoid rule (exact for
-            speeds linear between steps).
-        initial : mapping, optional
-            Angle of each member at ``t[0]`` (default 0).
-
-        Returns
-        -------
-        Motion
-            A mapping ``member -> angle`` in the unit of speed times time (rad/s x s = rad).
-
-        Examples
-        --------
-        Ozols example 7-6, the summator: turn shaft 1 by +60 degrees and shaft 3 by -60 degrees.
-
-        >>> from trains import stepped_planetary
-        >>> t = stepped_planetary(100, 50, 100, 50, meshes=("external", "external"))
-        >>> t.solve({"1": 60, "3": -60}).integrate(1)["H"]
-        Fraction(100, 1)
-        """
-        initial = dict(initial or {})
-        for name in initial:
-            self[name]  # raises for an unknown member
-        out: dict[str, Any] = {}
-        if all(np.ndim(v) == 0 for v in self._speeds.values()):
-            for n, w in self._speeds.items():
-                out[n] = initial.get(n, 0) + w * t
-            return Motion(out)
-        from scipy.integrate import cumulative_trapezoid
-
-        t = np.asarray(t, dtype=float)
-        for n, w in self._speeds.items():
-            w = np.broadcast_to(np.asarray(w, dtype=float), t.shape)
-            out[n] = initial.get(n, 0.0) + cumulative_trapezoid(w, t, initial=0.0)
-        return Motion(out)
-
-    def __repr__(self) -> str:
-        body = ", ".join(
-            f"{n}={v!s}" if np.ndim(v) == 0 else f"{n}=<array>" for n, v in self.items()
-        )
-        return f"Motion({body})"
-
-
-# --------------------------------------------------------------------------------- structure
-
-
-@dataclass(frozen=True)
-class Structure:
-    """Structural (Chebyshev) count beside the algebraic mobility (Ozols §2.4, (3.12), (2.8)).
-
-    Each moving link has one revolute bearing (``lower_pairs == links``); each mesh or link
-    relation is one higher pair; identical planets are counted ``k`` times with their meshes.
-    ``chebyshev = 3 links - 2 lower_pairs - higher_pairs``; ``redundant`` is the number of
-    redundant (passive) constraints, ``mobility - chebyshev`` (``k - 1`` for ``k`` planets,
-    Ozols §21-13; lectures §2.3 [P] 697).
-    """
-
-    links: int
-    lower_pairs: int
-    higher_pairs: int
-    chebyshev: int
-    redundant: int
-    mobility: int
-
+from trains.relations import (
+    CONDITION_LIMIT,
+    FRAME,
+    IllConditionedTrainWarning,
+    Motion,
+    Relation,
+    Structure,
+    _check_overflow,
+    _exact,
+    _Map,
+    _name,
+    _ratio,
+    _replace_amplification,
+    _teeth,
+    assemble,
+    build_map,
+    check_amplification,
+)
 
 # --------------------------------------------------------------------------------- the train
-
-
-def _check_overflow(res: np.ndarray, names, values) -> None:
-    """Refuse float speeds whose solved speeds leave float64's range (|w| > 1.8e308)."""
-    if not np.all(np.isfinite(res)):
-        given = ", ".join(f"|{n}| up to {np.max(np.abs(np.asarray(v, dtype=float))):.3g}"
-                          for n, v in zip(names, values, strict=True))  # fmt: skip
-        raise TrainError(
-            f"speeds {given} overflow float64 through this train (a solved speed passes"
-            " 1.8e308); scale them down, or give integers or Fractions for exact results"
-        )
 
 
 class Train:
@@ -852,156 +508,11 @@ class Train:
                 rep = r.pair.check(min_contact_ratio, min_tip_land)
                 findings.extend(rep.prefixed(r.name).values())
         for group in self.coaxial_groups:
-            findings.append(self._coaxiality(group, tolerance))
-        findings.extend(self._same_gear())
-        findings.extend(self._planet_findings(clearance))
+            findings.append(coaxiality_finding(group, self._members, self._relations, tolerance))
+        findings.extend(same_gear_findings(self._relations))
+        planets = self._planet_meshes()
+        findings.extend(planet_findings(planets, self._planets, self._relations, clearance))
         return Report(findings)
-
-    def _coaxiality(self, group: tuple[str, ...], tolerance: float) -> Finding:
-        name = f"coaxiality({', '.join(group)})"
-        shaft = {m: m for m in self._members}  # coupled members turn on one shaft: one axis
-
-        def axis(m: str) -> str:
-            while shaft[m] != m:
-                m = shaft[m]
-            return m
-
-        for r in self._relations:
-            if r.kind == "couple":
-                shaft[axis(r.a)] = axis(r.b)
-        edges: dict[str, list[tuple[str, Relation]]] = {}
-        for r in self._relations:
-            a, b = axis(r.a), axis(r.b)
-            if r.kind == "mesh" and isinstance(r.pair, GearPair) and a != b:
-                edges.setdefault(a, []).append((b, r))
-                edges.setdefault(b, []).append((a, r))
-        axes = list(dict.fromkeys(axis(m) for m in group))
-        inside = set(axes)
-        paths: list[tuple[str, list[Relation]]] = []
-        for start in axes:
-            stack = [(start, [start], [])]
-            while stack and len(paths) < 1000:
-                node, seen, rels = stack.pop()
-                for nxt, r in edges.get(node, ()):
-                    if nxt in seen or len(rels) >= 8:
-                        continue
-                    if nxt in inside:
-                        if axes.index(nxt) > axes.index(start):
-                            paths.append((" - ".join([*seen, nxt]), [*rels, r]))
-                        continue
-                    stack.append((nxt, [*seen, nxt], [*rels, r]))
-        if not paths:
-            return Finding(
-                name, 0.0,
-                f"no chain of real-gear meshes joins {', '.join(group)}: coaxiality not checked"
-                " (give the meshes gears=)", ok=True,
-            )  # fmt: skip
-        worst, text = math.inf, []
-        for label, rels in paths:
-            dist = [r.pair.center_distance for r in rels]
-            margin = float(closure_margin(dist, tolerance))
-            worst = min(worst, margin)
-            text.append(f"{label}: a_w {' / '.join(f'{d:.4f}' for d in dist)} mm")
-        rule = f"equal within {tolerance:g} mm; chains of 3+ close as a polygon"
-        return Finding(name, worst, f"{'; '.join(text)} ({rule})")
-
-    def _same_gear(self) -> list[Finding]:
-        seen: dict[tuple[str, int, float], tuple[str, Gear]] = {}
-        out: list[Finding] = []
-        for r in self._relations:
-            if r.pair is None:
-                continue
-            for member, gear in ((r.a, r.gears[0]), (r.b, r.gears[1])):
-                key = (member, gear.teeth, gear.module)
-                if key not in seen:
-                    seen[key] = (r.name, gear)
-                    continue
-                first, g0 = seen[key]
-                diffs = []
-                for attr, unit in (("profile_shift", ""), ("helix_angle", " deg"),
-                                   ("pressure_angle", " deg"), ("face_width", " mm")):  # fmt: skip
-                    x, y = getattr(g0, attr), getattr(gear, attr)
-                    if x is not None and y is not None and not math.isclose(x, y, abs_tol=1e-12):
-                        diffs.append((attr, x, y, unit))
-                name = f"{member}.same_gear"
-                if any(f.name == name for f in out):
-                    continue
-                if diffs:
-                    unit = {"profile_shift": "module"}.get(diffs[0][0], diffs[0][3].strip())
-                    d = abs(diffs[0][1] - diffs[0][2])
-                    what = ", ".join(f"{a} {x:g}{u} vs {y:g}{u}" for a, x, y, u in diffs)
-                    out.append(Finding(
-                        name, -d,
-                        f"{member} meshes in {first} and {r.name} with one gear of {gear.teeth}"
-                        f" teeth, module {gear.module:g}, but the two descriptions differ:"
-                        f" {what} (a stepped gear needs another tooth count or module)",
-                        unit=unit,
-                    ))  # fmt: skip
-        return out
-
-    def _planet_findings(self, clearance: float) -> list[Finding]:
-        out: list[Finding] = []
-        for planet, central, _carrier in self._planet_meshes():
-            k = self._planets[planet]
-            if k < 2:
-                continue
-            real = [r for r in central if r.pair is not None]
-            if not real:
-                continue  # a kinematic-only planet: nothing to check
-            if len(central) == 2:
-                z, internal = [], []
-                for r in central:
-                    on_a = r.a == planet
-                    z.append(
-                        (r.teeth[1] if on_a else r.teeth[0], r.teeth[0] if on_a else r.teeth[1])
-                    )
-                    internal.append(r.internal or r.opposed)
-                (za, zc), (zb, zd) = z
-                t = int(assembly_number(za, zc, zd, zb, internal[0], internal[1]))
-                rem = t % k if t else 0
-                ok = rem == 0
-                names = " and ".join(r.name for r in central)
-                out.append(Finding(
-                    f"{planet}.assembly", -float(min(rem, k - rem)) + 0.0,
-                    f"{k} equally spaced planets {planet} ({names}): assembly number T = {t}"
-                    f" {'is' if ok else 'is not'} a multiple of {k} (lectures §4.3)",
-                    unit="teeth", ok=ok,
-                ))  # fmt: skip
-            tips, modules = [], []
-            for r in self._relations:
-                got = r.gear_of(planet) if r.kind == "mesh" else None
-                if got is not None:
-                    tips.append(got[1])
-                    modules.append(got[0].module)
-            if isinstance(real[0].pair, BevelPair):
-                out.append(self._bevel_neighbour(planet, real[0], k, clearance))
-                continue
-            tips_by_gear = max(tips)
-            a = real[0].pair.center_distance
-            gap = float(neighbour_gap(a, tips_by_gear, k))
-            need = clearance * max(modules)
-            out.append(Finding(
-                f"{planet}.neighbour", gap - need,
-                f"{k} planets {planet} at a_w = {a:.4f} mm: gap between tip circles (d_a ="
-                f" {tips_by_gear:.4f} mm) {gap:.4f} mm vs clearance {need:.4f} mm",
-            ))  # fmt: skip
-        return out
-
-    @staticmethod
-    def _bevel_neighbour(planet: str, r: Relation, k: int, clearance: float) -> Finding:
-        """``k`` bevel planets on a common apex, their axes 360/k deg apart (a differential's
-        pinions): the gap between their face cones at the outer tips
-        (:func:`trains.conditions.bevel_neighbour_gap`) against ``clearance`` modules."""
-        gear = r.gears[0] if r.a == planet else r.gears[1]
-        reach = math.hypot(gear.cone_distance, gear.addendum)
-        gap = float(bevel_neighbour_gap(gear.face_angle, reach, k))
-        need = clearance * gear.module
-        return Finding(
-            f"{planet}.neighbour", gap - need,
-            f"{k} bevel planets {planet} (face cone {gear.face_angle:.4f} deg, outer tips "
-            f"{reach:.4f} mm from the apex): gap between neighbours {gap:.4f} mm vs clearance "
-            f"{need:.4f} mm",
-        )  # fmt: skip
 
     def _known_names(self) -> str:
         return ", ".join(sorted(self._members))
@@ -1018,43 +529,11 @@ class Train:
         if cached is not None:
             return cached
         rows = [r.coefficients for r in self._relations]
-        result = self._build_map(known, rows)
+        result = build_map(self._members, known, rows, self.exact)
         if not result.exact and result.determined:
             result = _replace_amplification(result, self._sensitivity(known, result))
         self._maps[known] = result
         return result
-
-    def _build_map(self, known: tuple[str, ...], rows: list[dict[str, Any]]) -> _Map:
-        unknown = [m for m in self._members if m != FRAME and m not in known]
-        mat, pivots = _eliminate(rows, unknown, list(known))
-        nu, nk = len(unknown), len(known)
-        pivot_cols = {c for c in pivots if c >= 0}
-        free_cols = [c for c in range(nu) if c not in pivot_cols]
-        determined: dict[str, tuple[Fraction, ...]] = {}
-        free = [unknown[c] for c in free_cols]
-        constraints = []
-        for row, c in zip(mat, pivots, strict=True):
-            if c >= 0:
-                if any(row[f] != 0 for f in free_cols):
-                    free.append(unknown[c])
-                else:
-                    determined[unknown[c]] = tuple(-row[nu + j] for j in range(nk))
-            else:
-                cvec = tuple(row[nu : nu + nk])
-                if any(x != 0 for x in cvec):
-                    rel = tuple(i for i, y in enumerate(row[nu + nk :]) if y != 0)
-                    constraints.append((cvec, rel))
-        order = {n: i for i, n in enumerate(self._members)}
-        determined = dict(sorted(determined.items(), key=lambda kv: order[kv[0]]))
-        return _Map(
-            known=known,
-            determined=determined,
-            free=tuple(sorted(free, key=order.__getitem__)),
-            choices=tuple(unknown[c] for c in free_cols),
-            missing=len(free_cols),
-            constraints=tuple(constraints),
-            exact=self.exact,
-        )
 
     def _sensitivity(self, known: tuple[str, ...], base: _Map) -> float:
         """Relative change of the speed map per relative change of the float coefficients.
@@ -1074,7 +553,7 @@ class Train:
                 if not _exact(ka):
                     ka = Fraction(ka) * (1 + delta)
                 rows.append(Relation(r.kind, r.name, r.a, r.b, r.carrier, ka, kb).coefficients)
-            pert = self._build_map(known, rows)
+            pert = build_map(self._members, known, rows, self.exact)
             for name, cs in base.determined.items():
                 cp = pert.determined.get(name)
                 if cp is None:  # a perturbation changes the rank: singular to working precision
@@ -1175,7 +654,7 @@ class Train:
             self._check_constraints(mp, vals, exact=True)
             out = {n: sum((c * w for c, w in zip(cs, vals, strict=True)), Fraction(0))
                    for n, cs in mp.determined.items()}  # fmt: skip
-            return self._assemble(mp, dict(zip(mp.known, vals, strict=True)), out)
+            return assemble(self._members, mp, dict(zip(mp.known, vals, strict=True)), out)
         if not mp.exact and mp.amplification > CONDITION_LIMIT:
             amp = mp.amplification
             digits = "all" if math.isinf(amp) else f"{math.log10(amp):.0f}"
@@ -1197,9 +676,11 @@ class Train:
                 mat = mp.matrix()
                 res = mat @ vals if vals.size else np.zeros(len(mp.determined))
                 _check_overflow(res, mp.known, values)
-                self._check_amplification(mat, vals[:, None], res[:, None])
+                check_amplification(mat, vals[:, None], res[:, None])
             out = {n: float(x) for n, x in zip(mp.determined, res, strict=True)}
-            return self._assemble(mp, dict(zip(mp.known, map(float, vals), strict=True)), out)
+            return assemble(
+                self._members, mp, dict(zip(mp.known, map(float, vals), strict=True)), out
+            )
         try:
             arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
         except (TypeError, ValueError):  # text, ragged lists, shapes that do not broadcast
@@ -1216,32 +697,10 @@ class Train:
             mat = mp.matrix()
             res = mat @ w
             _check_overflow(res, mp.known, values)
-            self._check_amplification(mat, w, res)
+            check_amplification(mat, w, res)
         out = {n: res[i].reshape(shape) for i, n in enumerate(mp.determined)}
         known = {n: a for n, a in zip(mp.known, arrays, strict=True)}
-        return self._assemble(mp, known, out, zero=np.zeros(shape))
-
-    def _assemble(self, mp: _Map, known: dict, out: dict, zero: Any = None) -> dict[str, Any]:
-        if zero is None:
-            exact = all(isinstance(v, Fraction) for v in (*known.values(), *out.values()))
-            zero = Fraction(0) if exact else 0.0
-        speeds: dict[str, Any] = {}
-        for m in self._members:
-            speeds[m] = zero if m == FRAME else known[m] if m in known else out[m]
-        return speeds
-
-    def _check_amplification(self, mat: np.ndarray, w: np.ndarray, res: np.ndarray) -> None:
-        if mat.size == 0 or np.abs(mat).sum(axis=1).max() <= CONDITION_LIMIT * 1e-3:
-            return  # the train cannot amplify rounding much: skip the extra product
-        scale = np.abs(mat) @ np.abs(w)
-        bound = np.maximum(np.abs(res), np.abs(w).max(axis=0, initial=0.0))
-        if np.any(scale > CONDITION_LIMIT * bound):
-            warnings.warn(
-                "float speeds through this train cancel: rounding is amplified by more than"
-                f" {CONDITION_LIMIT:.0e}; give integer or Fraction speeds for exact results",
-                IllConditionedTrainWarning,
-                stacklevel=4,
-            )
+        return assemble(self._members, mp, known, out, zero=np.zeros(shape))
 
     def _check_constraints(self, mp: _Map, w: Any, exact: bool) -> None:
         for cvec, rel in mp.constraints:
