@@ -25,13 +25,20 @@ LAYERS = {
     "gears": [
         ["errors", "display", "lazy"],
         ["involute", "report", "files", "arguments", "budget", "rating.materials"],
-        ["geometry", "meshing", "search.tables", "forces"],
-        ["rack", "mating", "cutting.cutter", "bevel.cone", "search.cluster"],
+        [
+            "geometry",
+            "meshing",
+            "search.tables",
+            "forces",
+            "contact.compliance",
+            "contact.modification",
+        ],
+        ["rack", "mating", "cutting.cutter", "bevel.cone", "search.cluster", "contact.analysis"],
         ["checks", "cutting.profile", "cutting.measure", "rating.iso6336", "bevel.spherical"],
         ["interference", "cutting.generate", "bevel.crown", "rating.sizing"],
         ["cutting.outline", "rating.root", "search.candidates"],
         ["solid.mesh", "solid.animate", "figures.drawing", "bevel.solid", "search.reduction"],
-        ["gear", "rating.capacity", "solid.render", "search.checks"],
+        ["gear", "rating.capacity", "solid.render", "search.checks", "contact.result"],
         ["pair", "bevel.gear", "search.scheduling"],
         ["shift", "figures.plot", "bevel.pair", "search.result"],
         ["solid.export", "search.engine"],
@@ -54,7 +61,7 @@ LAYERS = {
 
 # the family subpackages of each package (docs/architecture.md, "Families"); the rest is the core
 FAMILIES = {
-    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search"],
+    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search", "contact"],
     "trains": ["planetary", "design", "cli"],
 }
 

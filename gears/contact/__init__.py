@@ -1,0 +1,36 @@
+"""Tooth contact analysis: flank modifications (micro-geometry), the single-tooth compliance by
+the potential-energy method, the load shared among the teeth in contact over a mesh cycle
+(transmission error, mesh stiffness, load sharing, contact pattern, K_Hbeta and K_Halpha), and
+the Harris map.
+
+The names below are imported on first use (:mod:`gears.lazy`): importing one module of the
+family does not load the rest.
+"""
+
+from gears.lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "cell_stiffness": "gears.contact.analysis",
+        "contact": "gears.contact.result",
+        "Contact": "gears.contact.result",
+        "contact_factors": "gears.contact.analysis",
+        "contact_geometry": "gears.contact.result",
+        "harris": "gears.contact.result",
+        "harris_map": "gears.contact.analysis",
+        "HarrisMap": "gears.contact.result",
+        "hertz_compliance": "gears.contact.compliance",
+        "KINDS": "gears.contact.modification",
+        "lead_relief": "gears.contact.modification",
+        "loaded_contact": "gears.contact.analysis",
+        "MAX_CELLS": "gears.contact.result",
+        "mesh_cells": "gears.contact.analysis",
+        "mesh_compliance": "gears.contact.compliance",
+        "Modification": "gears.contact.modification",
+        "pair_gaps": "gears.contact.analysis",
+        "profile_relief": "gears.contact.modification",
+        "share_load": "gears.contact.analysis",
+        "tooth_compliance": "gears.contact.compliance",
+    },
+)

@@ -1,0 +1,373 @@
+"""Layer 8, classes: :class:`Contact`, the loaded tooth contact analysis of one pair as a thin
+view, and :class:`HarrisMap`, the transmission error over relief and load.
+
+``GearPair.contact(torque, ...)`` calls :func:`contact`, which reads the pair's geometry and
+its gears' :class:`gears.contact.modification.Modification` and calls the vectorised
+:func:`gears.contact.analysis.loaded_contact`. Transmission error is in um along the line of
+action (positive: gear 2 lags) and in arcseconds of gear 1; stiffness in N/(mm um), per mm of
+face width; loads in N along the transverse line of action (F_bt = T1 / r_b1).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from gears.arguments import check_choice, check_integer, check_positive, check_real
+from gears.contact.analysis import (
+    contact_factors,
+    harris_map,
+    loaded_contact,
+    pair_gaps,
+)
+from gears.contact.modification import KINDS, Modification
+from gears.errors import GearError
+
+__all__ = ["MAX_CELLS", "Contact", "HarrisMap", "contact", "contact_geometry", "harris"]
+
+#: The most cells (positions x tooth pairs x slices, times loads x reliefs for a map) one call
+#: solves: about 100 MB of arrays and a second of work.
+MAX_CELLS = 4_000_000
+
+#: Steel (ISO 6336-5): Young's modulus (MPa) and Poisson's ratio.
+STEEL = (206000.0, 0.3)
+
+ARCSEC = 180.0 / math.pi * 3600.0
+
+
+def contact_geometry(pair, center_distance_error: float = 0.0) -> dict:
+    """The pair as the numbers :func:`gears.contact.analysis.loaded_contact` takes, or a
+    :class:`GearError` for a pair the analysis does not cover (racks, internal gears, no face
+    width, a contact ratio below 1)."""
+    if getattr(pair, "is_rack", False) or getattr(pair, "internal", False):
+        raise GearError(
+            "contact analysis covers external gear pairs; got a "
+            f"{'rack' if pair.is_rack else 'ring (internal gear)'} as gear 2"
+        )
+    g1, g2 = pair.g1, pair.g2
+    widths = [w for w in (g1.face_width, g2.face_width) if w]
+    if not widths:
+        raise GearError("contact analysis needs a face_width on g1 or g2")
+    ra1, ra2 = (d / 2 for d in pair.tip_diameters)
+    rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
+    a = pair.center_distance
+    da = check_real("center_distance_error", center_distance_error, -0.5 * g1.module,
+                    0.5 * g1.module)  # fmt: skip
+    if a + da <= rb1 + rb2:
+        raise GearError(f"center_distance_error = {da:g} mm puts the centres within the base "
+                        "circles' sum: no line of action")  # fmt: skip
+    geometry = {
+        "rb1": rb1, "rb2": rb2, "ra1": ra1, "ra2": ra2, "center_distance": a + da,
+        "base_pitch": g1.base_pitch, "face_width": min(widths),
+        "tan_base_helix": math.tan(math.radians(g1.base_helix_angle)),
+        "gear1": (rb1, g1.base_thickness / g1.base_diameter, g1.root_diameter / 2, None),
+        "gear2": (rb2, g2.base_thickness / g2.base_diameter, g2.root_diameter / 2, None),
+    }  # fmt: skip
+    tan_wt = math.sqrt((a + da) ** 2 / (rb1 + rb2) ** 2 - 1.0)
+    n2 = (rb1 + rb2) * tan_wt
+    path = math.sqrt(ra1**2 - rb1**2) - (n2 - math.sqrt(ra2**2 - rb2**2))
+    total = (path + geometry["face_width"] * abs(geometry["tan_base_helix"])) / g1.base_pitch
+    if total < 1.0:
+        raise GearError(
+            f"total contact ratio {total:.4f} < 1 at centre distance {a + da:.4f} mm: the teeth "
+            "lose contact within each mesh cycle; valid is a pair with eps_gamma >= 1"
+        )
+    geometry["path"] = path
+    return geometry
+
+
+def _modifications(pair):
+    return tuple(getattr(g, "modification", None) for g in (pair.g1, pair.g2))
+
+
+def _lengths(mod, short, face_width):
+    return (0.0, 0.0, 0.0) if mod is None else mod.lengths(short, face_width)
+
+
+def _checked(torque, positions, slices, geometry, extra=1):
+    torque = check_positive("torque", torque, "N m")
+    positions = check_integer("positions", positions, 4, 4096)
+    slices = check_integer("slices", slices, 1, 1000)
+    g = geometry
+    pairs = (g["path"] + g["face_width"] * abs(g["tan_base_helix"])) / g["base_pitch"]
+    cells = positions * slices * (math.ceil(pairs) + 1) * extra
+    if cells > MAX_CELLS:
+        raise GearError(
+            f"positions = {positions} x slices = {slices} (x {extra} loads and reliefs) makes "
+            f"about {cells:.3g} cells; valid is at most {MAX_CELLS:.3g}: fewer positions, "
+            "slices, loads or reliefs"
+        )
+    return torque, positions, slices
+
+
+@dataclass(frozen=True)
+class Contact:
+    """The loaded tooth contact of one pair over one mesh cycle (one base pitch).
+
+    Attributes
+    ----------
+    pair : GearPair
+        The pair analysed.
+    torque : float
+        Torque on gear 1, N m.
+    load : float
+        The transverse load along the line of action F_bt = T1 / r_b1, N.
+    arrays : dict
+        Everything :func:`gears.contact.analysis.loaded_contact` returns, for this pair.
+    settings : dict
+        positions, slices, misalignment, centre-distance error, modulus, Poisson's ratio.
+    """
+
+    pair: object
+    torque: float
+    load: float
+    arrays: dict = field(repr=False)
+    ideal: dict = field(repr=False)
+    settings: dict = field(default_factory=dict)
+
+    @property
+    def face(self) -> np.ndarray:
+        """Face positions of the slices' centres, mm from the face centre."""
+        return self.arrays["y"]
+
+    @property
+    def roll(self) -> np.ndarray:
+        """Each position as the roll distance of tooth pair 0 on the first slice, mm from N1."""
+        return self.arrays["u"][:, 0, 0]
+
+    @property
+    def angle(self) -> np.ndarray:
+        """Each position as gear 1's rotation from the first, degrees."""
+        return np.degrees((self.roll - self.roll[0]) / (self.pair.g1.base_diameter / 2))
+
+    @property
+    def transmission_error(self) -> np.ndarray:
+        """Loaded transmission error at each position, um along the line of action."""
+        return self.arrays["delta"] * 1000.0
+
+    @property
+    def transmission_error_arcsec(self) -> np.ndarray:
+        """Loaded transmission error at each position as gear 1's rotation, arcseconds."""
+        return self.arrays["delta"] / (self.pair.g1.base_diameter / 2) * ARCSEC
+
+    @property
+    def unloaded_transmission_error(self) -> np.ndarray:
+        """The geometric (unloaded) transmission error, um: the smallest gap in contact."""
+        return self.arrays["unloaded"] * 1000.0
+
+    @property
+    def peak_to_peak(self) -> float:
+        """Peak-to-peak loaded transmission error, um."""
+        te = self.transmission_error
+        return float(te.max() - te.min())
+
+    @property
+    def mesh_stiffness(self) -> np.ndarray:
+        """Mesh stiffness at each position: the stiffness of the loaded cells per mm of face
+        width, N/(mm um)."""
+        a = self.arrays
+        loaded = a["forces"] > 0
+        width = self.settings["face_width"]
+        return np.sum(np.where(loaded, a["stiffness"], 0.0), axis=(-1, -2)) / width / 1000.0
+
+    @property
+    def mean_mesh_stiffness(self) -> float:
+        """The mean of :attr:`mesh_stiffness` over the mesh cycle (c_gamma), N/(mm um)."""
+        return float(np.mean(self.mesh_stiffness))
+
+    @property
+    def single_stiffness(self) -> float:
+        """The largest stiffness of one tooth pair per mm of its contact length over the mesh
+        cycle (the analogue of ISO 6336-1's c'), N/(mm um)."""
+        a = self.arrays
+        k = a["stiffness"].sum(axis=-1)
+        length = a["active"].sum(axis=-1) * (self.settings["face_width"] / a["y"].size)
+        per_mm = np.where(length > 0, k / np.maximum(length, 1e-300), 0.0)
+        return float(per_mm.max() / 1000.0)
+
+    @property
+    def load_sharing(self) -> np.ndarray:
+        """Load of each tooth pair (rows; pair k is k base pitches ahead of pair 0) at each
+        position (columns), N; every column sums to :attr:`load`."""
+        return self.arrays["forces"].sum(axis=-1).T
+
+    @cached_property
+    def _pressure(self) -> tuple[np.ndarray, np.ndarray]:
+        a = self.arrays
+        start, end, n2 = a["start"], a["end"], a["n2"]
+        modulus, poisson = self.settings["modulus"], self.settings["poisson"]
+        cos_b = 1.0 / math.sqrt(1.0 + self._tan_base_helix**2)
+        width = self.settings["face_width"] / a["y"].size
+        q = a["forces"] / width  # N/mm along the contact line (F_n / (L / cos beta_b))
+        u = np.clip(a["u"], start, end)
+        radius = u * (n2 - u) / n2 / cos_b  # relative curvature radius, normal section
+        e_star = modulus / (2.0 * (1.0 - poisson**2))
+        p = np.sqrt(q * e_star / (math.pi * np.maximum(radius, 1e-9)))
+        span = (end - start) / self.pair.g1.base_pitch
+        grid = np.linspace(start, end, max(round(span * self.settings["positions"]), 2) + 1)
+        out = np.zeros((a["y"].size, grid.size))
+        for j in range(a["y"].size):
+            live = a["active"][:, :, j]
+            uj, pj = a["u"][:, :, j][live], p[:, :, j][live]
+            order = np.argsort(uj)
+            out[j] = np.interp(grid, uj[order], pj[order], left=0.0, right=0.0)
+        return grid, out
+
+    @property
+    def _tan_base_helix(self) -> float:
+        return math.tan(math.radians(self.pair.g1.base_helix_angle))
+
+    @property
+    def pressure(self) -> np.ndarray:
+        """Hertzian pressure p_0 (MPa) over the flank of gear 1: rows the slices across the
+        face (:attr:`face`), columns the roll positions on the path of contact (:attr:`profile`):
+        the contact pattern."""
+        return self._pressure[1]
+
+    @property
+    def profile(self) -> np.ndarray:
+        """The roll positions of :attr:`pressure`'s columns, mm from N1."""
+        return self._pressure[0]
+
+    @cached_property
+    def _factors(self) -> tuple[float, float]:
+        kb, ka = contact_factors(self.arrays["forces"], self.ideal["forces"],
+                                 self.arrays["y"].size)  # fmt: skip
+        return float(kb), float(ka)
+
+    @property
+    def K_Hbeta(self) -> float:
+        """Face load factor from the load distribution: the largest mean load per unit face
+        width over the mean (ISO 6336-1 clause 7 definition)."""
+        return self._factors[0]
+
+    @property
+    def K_Halpha(self) -> float:
+        """Transverse load factor: the heaviest tooth pair's line load against that of the
+        ideal pair (no modification or misalignment) at the same load."""
+        return self._factors[1]
+
+    def __repr__(self) -> str:
+        return (
+            f"Contact(torque={self.torque:g} N m, peak_to_peak={self.peak_to_peak:.4g} um, "
+            f"mean_mesh_stiffness={self.mean_mesh_stiffness:.4g} N/(mm um), "
+            f"K_Hbeta={self.K_Hbeta:.4g}, K_Halpha={self.K_Halpha:.4g})"
+        )
+
+
+def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 64,
+            slices: int = 30, center_distance_error: float = 0.0,
+            modulus: float = STEEL[0], poisson: float = STEEL[1]) -> Contact:  # fmt: skip
+    """The loaded tooth contact analysis of ``pair`` under ``torque`` (N m on gear 1).
+
+    Parameters
+    ----------
+    pair : GearPair
+        An external pair; each gear's ``modification`` (if any) opens its gaps.
+    torque : float
+        Torque on gear 1, N m > 0.
+    misalignment : float
+        Mesh misalignment in the plane of action, mm over the face width (f_ma + f_sh as the
+        effective F_betax of ISO 6336-1), within +- one module.
+    positions, slices : int
+        Positions over one base pitch (4 ... 4096) and slices across the face (1 ... 1000).
+    center_distance_error : float
+        Delta a, mm (+- half a module): the pair runs at a_w + Delta a.
+    modulus, poisson : float
+        Young's modulus (MPa) and Poisson's ratio of both gears (steel by default).
+
+    Raises
+    ------
+    GearError
+        Bad input, naming it; racks, internal pairs, no face width; more than
+        :data:`MAX_CELLS` cells.
+    """
+    geometry = contact_geometry(pair, center_distance_error)
+    torque, positions, slices = _checked(torque, positions, slices, geometry)
+    misalignment = check_real("misalignment", misalignment, -pair.g1.module, pair.g1.module)
+    modulus = check_real("modulus", modulus, 1.0, 1e7)
+    poisson = check_real("poisson", poisson, 0.0, 0.5, False, True)
+    load = 1000.0 * torque / geometry["rb1"]
+    b = geometry["face_width"]
+    m1, m2 = _modifications(pair)
+
+    def gaps(u, y, start, end):
+        short = max(end - start - geometry["base_pitch"], 0.0)
+        return pair_gaps(u, y, start, end, b, m1, m2, _lengths(m1, short, b),
+                         _lengths(m2, short, b), misalignment)  # fmt: skip
+
+    plain = m1 is None and m2 is None and misalignment == 0.0
+    arrays = loaded_contact(geometry, load, None if plain else gaps, positions, slices,
+                            modulus, poisson)  # fmt: skip
+    ideal = arrays if plain else loaded_contact(geometry, load, None, positions, slices,
+                                                modulus, poisson)  # fmt: skip
+    settings = {
+        "positions": positions, "slices": slices, "misalignment": misalignment,
+        "center_distance_error": center_distance_error, "modulus": modulus,
+        "poisson": poisson, "face_width": b,
+    }  # fmt: skip
+    return Contact(pair, torque, load, arrays, ideal, settings)
+
+
+@dataclass(frozen=True)
+class HarrisMap:
+    """Peak-to-peak transmission error (um) over tip relief (rows, mm) and torque (columns,
+    N m): tip relief of the same amount, length and kind on both gears (Harris 1958)."""
+
+    reliefs: np.ndarray
+    torques: np.ndarray
+    peak_to_peak: np.ndarray
+    relief_length: float
+
+    def best_relief(self) -> np.ndarray:
+        """For each torque, the relief (mm) of the smallest peak-to-peak."""
+        return self.reliefs[np.argmin(self.peak_to_peak, axis=0)]
+
+
+def harris(pair, torques, reliefs, *, relief_length: float | None = None, kind: str = "linear",
+           positions: int = 64, slices: int | None = None) -> HarrisMap:  # fmt: skip
+    """The Harris map of ``pair``: transmission error peak to peak over tip ``reliefs`` (mm,
+    on both gears) and ``torques`` (N m on gear 1), solved at once over arrays.
+
+    ``relief_length`` (mm of roll on the line of action) defaults to the short relief,
+    (eps_alpha - 1) p_bt; ``slices`` to 1 for spur pairs (every slice alike), else 30.
+    """
+    geometry = contact_geometry(pair)
+    torques = _array("torques", torques, 0.0, 1e9)
+    reliefs = _array("reliefs", reliefs, -1e-12, 1.0)
+    if slices is None:
+        slices = 1 if pair.g1.helix_angle == 0 else 30
+    _checked(float(torques.max()), positions, slices, geometry, torques.size * reliefs.size)
+    kind = check_choice("kind", kind, KINDS)
+    if relief_length is not None:
+        relief_length = check_real("relief_length", relief_length, 0.0, 1e6)
+    b = geometry["face_width"]
+
+    def shape(u, y, start, end):
+        short = max(end - start - geometry["base_pitch"], 0.0)
+        length = short if relief_length is None else relief_length
+        unit = Modification(tip_relief=1.0, tip_relief_length=length, kind=kind)
+        lengths = unit.lengths(short, b)
+        return pair_gaps(u, y, start, end, b, unit, unit, lengths, lengths)
+
+    p2p = harris_map(geometry, 1000.0 * torques / geometry["rb1"], reliefs, shape,
+                     int(positions), int(slices))  # fmt: skip
+    short = max(geometry["path"] - geometry["base_pitch"], 0.0)
+    length = short if relief_length is None else relief_length
+    return HarrisMap(reliefs, torques, p2p * 1000.0, float(length))
+
+
+def _array(name, values, low, high) -> np.ndarray:
+    try:
+        arr = np.asarray(values, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise GearError(f"{name} = {values!r}; valid is a sequence of numbers") from None
+    if arr.size == 0 or arr.size > 10_000 or not np.all(np.isfinite(arr)):
+        raise GearError(f"{name} = {values!r}; valid is 1 ... 10000 finite numbers")
+    if np.any(arr <= low) or np.any(arr > high):
+        rel = ">= 0" if low < 0 else f"> {low:g}"
+        raise GearError(f"{name} = {values!r}; valid are numbers {rel} and <= {high:g}")
+    return arr
