@@ -5,6 +5,7 @@ Build: ``python -m sphinx -W -b html docs docs/_build/html`` (the ``docs`` extra
 ``docs/_build/html/index.html``. ``tests/test_site.py`` runs the same build.
 """
 
+import logging
 import os
 import pathlib
 import sys
@@ -37,7 +38,8 @@ nitpicky = False
 
 # Markdown guides: "#section" links resolve to headings up to level 3
 myst_heading_anchors = 3
-myst_enable_extensions = ["dollarmath"]
+# formulas: $...$ inline, $$...$$ displayed, LaTeX environments (amsmath), rendered by MathJax
+myst_enable_extensions = ["dollarmath", "amsmath"]
 
 # API reference
 autosummary_generate = True
@@ -109,3 +111,16 @@ def _elsewhere() -> dict[str, dict[str, str]]:
 
 
 autosummary_context = {"elsewhere": _elsewhere()}
+
+
+class _QuietMyst(logging.Filter):
+    """myst-parser logs its whole configuration (``myst vX: MdParserConfig(...)``, one long line)
+    at the start of every build; drop that line and keep its warnings."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return "MdParserConfig(" not in record.getMessage()
+
+
+def setup(app):
+    # installed before "builder-inited", the event at which myst-parser logs the configuration
+    logging.getLogger("sphinx.myst_parser.sphinx_ext.main").addFilter(_QuietMyst())

@@ -5,7 +5,7 @@
   (the envelope of the crown gear's plane flank), the spherical involute, and the crown gear's
   positions of the simulated cutting (``gears.bevel.crown``) in the gnomonic plane; beside it, the
   octoid minus the spherical involute along the flank of both gears, in micrometres;
-- ``bevel_differential.png`` and ``bevel_differential.gif``: the seeds' differential 16/10 with
+- ``bevel_differential.png`` and ``bevel_differential.gif``: Ozols' car differential 16/10 with
   real teeth (``trains.Differential``), standing and turning through a corner.
 
 Rendered by ``gears.solid.render`` (orthographic, back faces culled, flat shading) and matplotlib.

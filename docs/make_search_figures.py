@@ -1,4 +1,4 @@
-"""Generate the figure of ``docs/search.md``, "Design to a load": safety against volume.
+"""Generate the figure of ``docs/design_search.md``, "Design to a load": safety against volume.
 
 Usage: ``python docs/make_search_figures.py [output_dir]`` (default: ``docs/images``).
 Every pair of a 3.2:1 (+- 2 %) search that carries 60 N m at 1500 rpm for 20 000 h with
@@ -30,7 +30,7 @@ def load_front(path: Path) -> Path:
     import matplotlib.pyplot as plt
 
     every = search.pairs(**SPACE, objective="volume", top=None)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharex=True)
+    fig, axes = plt.subplots(2, 1, figsize=(7, 8), sharex=True)  # readable at page width
     for ax, name, label, low in ((axes[0], "S_H", "pitting", 1.1),
                                  (axes[1], "S_F", "bending", 1.5)):  # fmt: skip
         front = search.pairs(**SPACE, objective=("volume", f"-{name}"), top=None)
@@ -49,8 +49,8 @@ def load_front(path: Path) -> Path:
         ax.set_ylabel(f"smaller safety against {label}, {name}")
         ax.legend(fontsize=8, loc="lower right")
         ax.grid(alpha=0.3)
-    fig.suptitle("3.2:1 pairs for 60 N m at 1500 rpm, 20 000 h (ISO 6336 method B): safety "
-                 "against material", fontsize=10)  # fmt: skip
+    fig.suptitle("3.2:1 pairs for 60 N m at 1500 rpm, 20 000 h (ISO 6336 method B):\n"
+                 "safety against volume", fontsize=11)  # fmt: skip
     fig.tight_layout()
     fig.savefig(path, dpi=100, metadata={"Software": None})
     plt.close(fig)

@@ -1,7 +1,7 @@
 """A differential with real bevel teeth
 ====================================
 
-The seeds' car differential (Ozols Fig 7-11, (7.9)) with real straight bevel teeth.
+The car differential of Ozols (Fig. 7-11, eq. (7.9)) with real straight bevel teeth.
 
 examples/train_bevel_differential.py solves this drive by the Willis formula alone; here every
 mesh is a real straight bevel pair: side gears of 16 teeth, two pinions of 10 (Gleason

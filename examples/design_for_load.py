@@ -1,7 +1,7 @@
 """Design to a load: the smallest pair, the lightest gearbox
 =========================================================
 
-Design to a load (issue 20): the smallest pair for a housing, the lightest gearbox.
+Design to a load: the smallest pair for a housing, the lightest gearbox.
 
 1. A housing holds two shafts 100 mm apart; the pair between them must give 3.2:1 (+- 2 %) and
    carry 60 N m on the pinion at 1500 rpm for 20 000 h with S_H >= 1.1 and S_F >= 1.5

@@ -2,7 +2,7 @@
 ==================================================
 
 Search a gear pair for a housing and a two-stage planetary gearbox, locally and on a Dask
-cluster (issue 13).
+cluster.
 
 Task 1: a pair for a = 100 mm, ratio 3.2 +- 1 %, modules 2 / 2.5 / 3, no undercut, a tip land of
 at least 0.25 m, a contact ratio of at least 1.3, the least specific sliding. The shift sum of

@@ -5,7 +5,7 @@ The public surface (see ``docs/``)::
     from gears import BasicRack, Gear, GearPair, ShaperCutter
     from gears import BevelPair                        # straight bevel gears (docs/bevel.md)
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
-    from gears import search; search.pairs(...)        # design search (docs/search.md)
+    from gears import search; search.pairs(...)        # design search (docs/design_search.md)
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
 """
 

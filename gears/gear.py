@@ -286,8 +286,8 @@ class Gear:
     def pointed_tip_diameter(self) -> float:
         """Diameter where the tooth thickness vanishes.
 
-        External gears: above the reference circle (standards.md §1.4). Internal gears: the teeth
-        thin towards the centre; if they are still positive at the base circle no pointed
+        External gears: above the reference circle (ISO 21771, tooth thickness). Internal gears: the
+        teeth thin towards the centre; if they are still positive at the base circle no pointed
         diameter exists above it and the base diameter is returned.
         """
         if not self.internal:
@@ -352,7 +352,7 @@ class Gear:
 
     @property
     def form_diameter(self) -> float:
-        """Form-circle diameter d_Ff, the start of the usable involute (standards.md §1.7).
+        """Form-circle diameter d_Ff, the start of the usable involute (ISO 21771).
 
         For an undercut external gear the fillet cuts the involute; the exact point comes from
         :func:`gears.checks.undercut_form_diameter`. Raises :class:`GearError` where the fillet
@@ -389,7 +389,7 @@ class Gear:
 
     def over_pins(self, pin_diameter: float) -> float:
         """Dimension over two pins (spur) or balls (helical) of ``pin_diameter`` mm; between
-        pins for an internal gear (standards.md §1.9)."""
+        pins for an internal gear (ISO 21771 / DIN 3960)."""
         dp = check_real("pin_diameter", pin_diameter, 0.0)
         dc = float(
             pin_contact_diameter(
@@ -418,8 +418,8 @@ class Gear:
         )  # fmt: skip
 
     def ideal_pin_diameter(self) -> float:
-        """Pin diameter touching the flanks on the circle d + 2 x m_n (standards.md §1.9; external
-        spur gears)."""
+        """Pin diameter touching the flanks on the circle d + 2 x m_n (KHK Gear Technical Reference;
+        external spur gears)."""
         if self.internal or self.helix_angle:
             raise GearError("ideal_pin_diameter is defined here for external spur gears only")
         a = math.radians(self.pressure_angle)

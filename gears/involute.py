@@ -1,11 +1,11 @@
 """Layer 1, base: the involute function and its inverse (radians), vectorised.
 
 ``inv(alpha) = tan(alpha) - alpha`` is the polar angle of the involute point whose pressure
-angle is ``alpha`` (ISO 21771 eq. for ``inv alpha``; Ozols §21-3; standards.md §2).
+angle is ``alpha`` (ISO 21771 eq. for ``inv alpha``; Ozols §21-3).
 
 All functions accept scalars or numpy arrays and broadcast; scalars in give numpy floats out.
 
-Numerics (standards.md §2):
+Numerics (Cheng 1992; errors measured against mpmath at 40 digits):
 
 * ``inv`` switches to the Taylor series of ``tan x - x`` below 0.25 rad, where ``tan x - x``
   would lose up to ``log10(3 / x**2)`` digits to cancellation.
@@ -62,7 +62,7 @@ _SERIES_SWITCH = 0.25  # rad; below it inv() uses the series
 _TAN_SERIES = _tan_minus_x_coefficients(14)  # term ratio ~ (2x/pi)^2 <= 0.026: error < 1e-20
 _TAN_DESCENDING = tuple(float(c) for c in _TAN_SERIES[::-1])  # Horner order, Python floats
 
-# Cheng's reversion alpha = sum a_k t^(2k+1), t = (3 y)^(1/3) (standards.md §2.1, 10 terms).
+# Cheng's reversion alpha = sum a_k t^(2k+1), t = (3 y)^(1/3) (Cheng 1992, 10 terms).
 _CHENG = np.array(
     [
         1.0,
@@ -193,7 +193,7 @@ def _inv_inverse_fast(y: np.ndarray) -> np.ndarray:
     """Inverse involute for ``0 <= y <= _FAST_MAX`` (alpha <= 55.6 deg): Cheng seed + one Newton.
 
     The 10-term Cheng seed is within 2e-14 (relative) below 30 deg and 2.3e-8 at 55 deg; one
-    Newton step squares that error (below 1e-15, standards.md §2.2). The step uses the direct
+    Newton step squares that error (below 1e-15 against mpmath). The step uses the direct
     residual ``tan a - a - y`` and is applied only above ``_FAST_NEWTON`` rad, where that residual
     loses at most ``log10(3 / a**2)`` < 1.6 digits; below it the seed is already exact to
     rounding. Few temporaries, in-place ufuncs: ~10 ns per value.

@@ -1,7 +1,7 @@
 """Layer 2, formulas: the vectorised formulas of a meshing pair (ISO 21771 / DIN 3960 / KHK).
 
 
-Formulas (standards.md §1.2-1.5, §1.8; ISO 21771 / DIN 3960 / KHK; Ozols §21-3...21-8;
+Formulas (ISO 21771 / DIN 3960 / KHK Gear Technical Reference; Ozols §21-3...21-8;
 Joldasbekov §11). Positions on the line of action are measured in mm from N1, the point where
 the line of action touches gear 1's base circle, towards the pitch point C:
 
@@ -282,8 +282,8 @@ def contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
 def center_distance_shift_sum(
     z1, z2, module, center_distance, pressure_angle=20.0, helix_angle=0.0, internal=False
 ):
-    """Sum of shifts x1 + x2 (internal: x2 - x1) that gives ``center_distance`` (ISO 21771 §5;
-    standards.md §1.2, inverse problem): cos alpha_wt = a_d cos alpha_t / a_w, then
+    """Sum of shifts x1 + x2 (internal: x2 - x1) that gives ``center_distance`` (ISO 21771,
+    the inverse problem): cos alpha_wt = a_d cos alpha_t / a_w, then
     sum x = (z2 +- z1)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n).
 
     Raises
@@ -354,7 +354,7 @@ def mesh_efficiency(z1, z2, contact_ratio, friction=0.1, internal=False):
 
     ``friction`` is the coefficient of sliding friction, 0 <= f < 1.
 
-    >>> round(float(mesh_efficiency(20, 40, 1.6, 0.1)), 6)   # Ozols digest, derived case
+    >>> round(float(mesh_efficiency(20, 40, 1.6, 0.1)), 6)   # Ozols (14.25), derived case
     0.98115
     """
     check_friction(friction)
@@ -371,7 +371,7 @@ class InternalInterference(NamedTuple):
 
 
 def internal_interference(z1, z2, center_distance, ra1, ra2, rb1, rb2, working_pressure_angle):
-    """The KHK internal-gear interference checks (standards.md §1.8) as signed margins.
+    """The internal-gear interference checks of the KHK Gear Technical Reference as signed margins.
 
     Arguments broadcast; radii and the centre distance in mm, ``working_pressure_angle``
     alpha_wt in degrees. Tips must lie outside their base circles (``ra > rb``).
@@ -397,8 +397,9 @@ def internal_interference(z1, z2, center_distance, ra1, ra2, rb1, rb2, working_p
 
     Examples
     --------
-    Standard z1 = 20 pinion (x = 0, m = 1) in rings of z2 = 30 ... 79 teeth; standards.md §1.8
-    scan: the involute check first passes at z2 = 64, the radial one at z2 = 37.
+    Standard z1 = 20 pinion (x = 0, m = 1) in rings of z2 = 30 ... 79 teeth (a scan of
+    the same conditions by an independent script): the involute check first passes at z2 = 64, the
+    radial one at z2 = 37.
 
     >>> z2 = np.arange(30, 80)
     >>> c = np.cos(np.radians(20.0))

@@ -186,7 +186,7 @@ class GearPair:
         * ``"equal_sliding"``: the maximum specific sliding of the two flanks is equal (the
           physically based choice; solved on the line of action);
         * ``"proportional"``: the DIN 3992 / ISO/TR 4467 style suggestion as approximated by
-          Roloff/Matek, x1 = S/2 + (0.5 - S/2) lg(u) / lg(z1 z2 / 100) (standards.md §1.10; a
+          Roloff/Matek, x1 = S/2 + (0.5 - S/2) lg(u) / lg(z1 z2 / 100) (Roloff/Matek; a
           suggestion, not a standard value; external pairs);
         * ``"keep"``: keep g1's shift, gear 2 takes the rest.
 
@@ -256,7 +256,7 @@ class GearPair:
     ) -> tuple[float, float]:
         """The centre distances profile shift can reach, ``(low, high)`` in mm.
 
-        ``low`` is a_d cos(alpha_t) (working pressure angle 0, standards.md §1.2). The DIN 3960
+        ``low`` is a_d cos(alpha_t) (working pressure angle 0, ISO 21771). The DIN 3960
         tip shortening k = y - (x1 + x2) <= 0 of an external pair grows on both sides of a zero
         shift sum; where it would take the whole tooth (k = -(h_a* + h_f*)) no tooth is left,
         which bounds ``high`` (and, for large tooth sums, ``low``). Internal pairs (and pairs
@@ -421,7 +421,7 @@ class GearPair:
         if self.is_rack:
             # The rack's tip line (h_a - x1 m above the pitch line... measured from the
             # pinion's reference line) cuts the line of action at (h_a - x1) m / sin(alpha_t)
-            # before the pitch point (standards.md §1.5, rack formula).
+            # before the pitch point (ISO 21771, the rack's contact ratio).
             h = (self.g2.addendum - g1.profile_shift) * g1.module
             u_c = rb1 * tw
             start = u_c - h / math.sin(at)
@@ -443,7 +443,7 @@ class GearPair:
 
     @property
     def contact_ratio(self) -> float:
-        """Transverse contact ratio epsilon_alpha (Ozols 21.12; standards.md §1.5)."""
+        """Transverse contact ratio epsilon_alpha (Ozols 21.12; ISO 21771)."""
         p = self.path_of_contact
         return max(p.length, 0.0) / p.base_pitch  # tips too short to meet: no contact
 

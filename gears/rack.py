@@ -3,7 +3,7 @@
 All lengths of a :class:`BasicRack` are coefficients of the normal module (``addendum = 1.0``
 means ``h_aP = 1.0 m_n``). The generating tool (rack cutter, hob) is the rack's mirror image: its
 addendum is the rack's dedendum ``h_aP0 = h_fP`` and its tip radius is the rack's root radius
-``rho_aP0 = rho_fP`` (standards.md §1.1).
+``rho_aP0 = rho_fP`` (ISO 53).
 
 Examples
 --------
@@ -162,7 +162,7 @@ class BasicRack:
     def straight_flank_depth(self) -> float:
         """h*_eff = h_aP0* - rho_aP0* (1 - sin alpha): depth below the reference line where the
         tool's straight flank ends. It sets the undercut limit and the form circle
-        (standards.md §1.1)."""
+        (ISO 53: ``h_aP0 - rho_aP0 (1 - sin alpha)``)."""
         return self.dedendum - self.root_radius * (
             1.0 - math.sin(math.radians(self.pressure_angle))
         )
@@ -231,7 +231,8 @@ class RackTool:
 
     def place(self, pts, phi):
         """Tool points ``pts`` (n, 2) rolled to angles ``phi`` (k,) in the gear frame: (k, n, 2)
-        (standards.md §3.1: Q(phi) = Rot(phi) (u + r phi, r + x m + v))."""
+        (rolling without slip on the reference circle: Q(phi) = Rot(phi) (u + r phi, r + x m +
+        v))."""
         phi = np.asarray(phi, float)[:, None]
         c, s_ = np.cos(phi), np.sin(phi)
         x0 = pts[None, :, 0] + self.r * phi

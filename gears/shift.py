@@ -13,10 +13,10 @@ of them hold is the set of usable designs.
 Each field is a signed margin, positive where the condition holds, zero on the limit line:
 
 ``undercut_1``, ``undercut_2``
-    x - x_min (modules): undercut by the rack-type tool (standards.md §1.6, Ozols 21.27).
+    x - x_min (modules): undercut by the rack-type tool (ISO 53 tool, Ozols 21.27).
 ``pointed_tip_1``, ``pointed_tip_2``
     normal tip land s_an / m_n (after tip shortening): the tooth is pointed where it is 0
-    (standards.md §1.4).
+    (ISO 21771, tooth thickness).
 ``tip_land_1``, ``tip_land_2``
     s_an / m_n - ``min_tip_land`` (DIN 3960 / Niemann rule of thumb, 0.2 m_n by default).
 ``contact_ratio``

@@ -15,3 +15,10 @@ def test_readme_starts_with_the_two_commands():
     ]
     ci = (README.parent / ".ci" / "run").read_text()
     assert 'pip install -q -e ".[test]"' in ci and "python3 -m pytest" in ci
+
+
+def test_readme_says_the_tests_take_minutes_and_build_the_site():
+    # a new user who runs the second command waits minutes: the README says so, and why
+    text = README.read_text()
+    intro = text[: text.index("## ")]
+    assert "minutes" in intro and "site" in intro and "test_site.py" in intro

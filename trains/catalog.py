@@ -74,7 +74,8 @@ def stepped_planetary(
 
 
 def double_planet(sun: int, planet1: int, planet2: int, ring: int, n_planets: int = 1) -> Train:
-    """Sun - planet - planet - ring (double-planet, "plus" train; standards.md §4 sign rule).
+    """Sun - planet - planet - ring (double-planet, "plus" train; Willis sign rule, - per external
+    mesh).
 
     Members ``"sun"``, ``"planet1"`` (meshes the sun), ``"planet2"`` (meshes planet1 and the
     ring), ``"ring"``, ``"carrier"``. Basic ratio ``+ring/sun``, so with the ring fixed

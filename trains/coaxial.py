@@ -7,7 +7,7 @@ meshes share the centre distance: ``a_w12 = a_w34`` (Ozols §21-13 for the plane
 lectures §4.2). With one module and different tooth sums the reference centre distances differ,
 and the mesh with the smaller sum is shifted (positive shift sum) to reach the larger one:
 ``cos alpha_w = a cos alpha / a_w`` and ``x_1 + x_2 = (z_1 + z_2)(inv alpha_w - inv alpha) /
-(2 tan alpha)`` (ISO 21771 §5; standards.md §1.2, the inverse problem). Each mesh's sum is split
+(2 tan alpha)`` (ISO 21771, the inverse problem). Each mesh's sum is split
 between its gears by the rule of :meth:`gears.GearPair.at_center_distance`.
 
 This is the general form of what :meth:`trains.Planetary.coaxial` does for a planetary stage

@@ -8,8 +8,9 @@ Pure formulas (no classes, no trains): :class:`trains.willis.Train` (``Train.che
 identical planets), as functions of the relations and members.
 
 * assembly number of identical planets between two central gears (lectures §4.3,
-  standards.md §4): ``T = |z_b z_c - s_a s_b z_a z_d| / gcd(z_c, z_d)``, s = -1 for an external
-  mesh and +1 for an internal one; ``k`` equally spaced planets assemble iff ``T % k == 0``;
+  KHK Gear Technical Reference): ``T = |z_b z_c - s_a s_b z_a z_d| / gcd(z_c, z_d)``, s = -1 for an
+  external mesh and +1 for an internal one; ``k`` equally spaced planets assemble iff
+  ``T % k == 0``;
 * neighbour gap of ``k`` planets in one row: ``2 a_w sin(pi/k) - d_a`` (Ozols §21-13), and of
   ``k`` bevel planets on a common apex (a differential's pinions);
 * closure of a chain of centre distances between two coaxial axes: two distances must be equal

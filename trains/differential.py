@@ -1,6 +1,6 @@
 """Layer 5, stages: the bevel (car) differential built on real straight bevel gears.
 
-The seeds' differential (Ozols Fig 7-11, formula (7.9): ``w_left + w_right = 2 w_case``;
+The car differential (Ozols Fig. 7-11, formula (7.9): ``w_left + w_right = 2 w_case``;
 lectures §4.5) as a thin builder over :class:`trains.willis.Train`: two side gears on the axle and
 ``n`` pinions on the case, every mesh a :class:`gears.BevelPair` at a shaft angle of 90 deg.
 

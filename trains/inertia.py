@@ -34,7 +34,7 @@ def reduced_inertia(
 
     Examples
     --------
-    Ozols example 13-1 (hoist; z3 = 72, the value the printed 0.0045 requires, digest §5):
+    Ozols example 13-1 (hoist; z3 = 72, the value the printed 0.0045 requires):
 
     >>> from trains import Train
     >>> t = Train()

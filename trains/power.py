@@ -5,15 +5,16 @@ Statics and efficiency of gear trains: torques, mesh powers, losses, self-lockin
 Every relation of a :class:`~trains.willis.Train` is a lever: its ideal reaction puts the torques
 ``lambda * (k_a, k_b, -(k_a + k_b))`` on its members ``a``, ``b`` and carrier ``c`` (the
 coefficients of the relation, so the torques balance and do no work in the allowed motion).
-Losses follow the relative-power rule (Kreines; standards.md §4; Ozols §14-5): in the frame of
-the carrier the relation is an ordinary mesh of efficiency ``eta``; the end that supplies power in
-that relative motion (``-tau_a (w_a - w_c) > 0``) drives it, and the torque at the driven end is
+Losses follow the relative-power rule (Kreines; Müller, Epicyclic Drive Trains; Ozols §14-5): in the
+frame of the carrier the relation is an ordinary mesh of efficiency ``eta``; the end that supplies
+power in that relative motion (``-tau_a (w_a - w_c) > 0``) drives it, and the torque at the driven
+end is
 ``eta`` times its ideal value. Which end drives depends on the torques, so the signs are found by
 iteration: start from the ideal torques, take the drivers, solve, repeat until they do not change.
 
 This reproduces Ozols (14.26) with the corrected exponent ``k`` on the planetary efficiency, the
 self-locking range (14.27), the differential formulas (14.28)/(14.29) with the general sign rule
-``h = sign(M_1 (w_1 - w_H))`` (the digest's errata), the Kreines formulas of standards.md §4 and,
+``h = sign(M_1 (w_1 - w_H))`` (a misprint in the book corrected), the Kreines formulas (Müller) and,
 for a fixed-axis train, the product of the mesh efficiencies (Ozols (14.10)).
 
 Examples
@@ -475,7 +476,7 @@ def planetary_efficiency(ratio: Any, basic_efficiency: float, driver: str = "gea
     ``i_1H eta^k = 1 - (1 - i_1H) eta_H^h`` with ``k = +1`` when gear 1 drives (``driver =
     "gear"``) and ``k = -1`` when the carrier drives; ``h = +1`` when gear 1 supplies power in
     the carrier frame (for gear 1 driving: ``i_1H < 0`` or ``i_1H > 1``), else ``-1``. The
-    printed (14.26) has the exponent ``h`` on the left, a misprint (Ozols digest §5): only ``k``
+    printed (14.26) has the exponent ``h`` on the left, a misprint: only ``k``
     follows from the derivation and reproduces example 14-3. A closed form to check
     :func:`power_flow` against.
 

@@ -6,7 +6,7 @@ broadcasts over numpy arrays, so a sweep over 10^6 pairs calls the same code as 
 :class:`gears.BevelPair`. Per-gear results are stacked on a leading axis of length 2 (pinion,
 wheel).
 
-* **Pitch cones** (Ozols (21.34); seed-000 §2, l = 0): ``tan delta_1 = sin Sigma /
+* **Pitch cones** (Ozols (21.34); Joldasbekov, axes crossing at l = 0): ``tan delta_1 = sin Sigma /
   (z_2/z_1 + cos Sigma)``, ``delta_2 = Sigma - delta_1``, for any shaft angle
   ``0 < Sigma < 180``.
 * **Cone distances**: outer ``R_e = m_et z / (2 sin delta)`` (``module`` is the outer transverse
@@ -88,7 +88,7 @@ def pitch_angles(z1, z2, shaft_angle=90.0):
 
     Examples
     --------
-    >>> [round(float(d), 4) for d in pitch_angles(20, 60, 60.0)]   # Ozols digest: i = 3
+    >>> [round(float(d), 4) for d in pitch_angles(20, 60, 60.0)]   # Ozols (21.34): i = 3
     [13.8979, 46.1021]
     """
     s = np.radians(np.asarray(shaft_angle, float))

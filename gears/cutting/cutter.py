@@ -9,13 +9,14 @@ generates an involute"), on the cutting centre distance
     inv alpha_w0 = 2 tan alpha_n (x +- x0) / (z +- z0) + inv alpha_t,
     a0 = m_t (z +- z0) / 2 * cos alpha_t / cos alpha_w0          (+ external, - internal work)
 
-(standards.md §1.2 with the cutter as the mating gear). Hence the shaper-cut root circle
+(ISO 21771's working pressure angle, the cutter as the mating gear). Hence the shaper-cut root
+circle
 ``d_f = 2 (a0 - r_a0)`` (external) or ``2 (a0 + r_a0)`` (internal), which differs from the rack
 formula unless ``x +- x0 = 0`` (``x = -x0`` external, ``x = x0`` internal)
 (:meth:`ShaperCutter.root_diameter`), and the form circle where the cutter's involute ends
 (:meth:`ShaperCutter.form_diameter`).
 
-**Envelope in closed form** (the same meshing condition as for the rack, standards.md §3.1): a
+**Envelope in closed form** (the same meshing condition as for the rack; Litvin & Fuentes): a
 cutter point ``p`` with outward normal ``n`` touches the work when its normal passes through the
 pitch point, i.e. when the point ``Q = p + lambda n`` where the normal meets the cutter's working
 circle (radius ``r_w0``; ``lambda = -p.n + sqrt(r_w0^2 - (p x n)^2)``, the root on the contact's
@@ -192,8 +193,8 @@ class ShaperCutter:
         * ``undercut`` (external gear): the cutter's involute must end before the interference
           point N1 (margin in mm along the cutting line of action);
         * ``trimming`` (internal gear): on its way out of a space the cutter tooth must clear
-          the ring's tips (KHK trochoid-interference condition, standards.md §1.8, with the
-          cutter as the pinion at the cutting centre distance; margin in rad). A failing margin
+          the ring's tips (the KHK Gear Technical Reference's trochoid-interference condition, with
+          the cutter as the pinion at the cutting centre distance; margin in rad). A failing margin
           beyond about -0.005 rad shows as cut-off ring tips in ``method='shaper'``;
         * ``tip_past_n1`` (internal gear): the ring's tip must not pass the cutter's
           interference point N1 (KHK involute-interference condition), else the cutter's

@@ -2,7 +2,7 @@
 
 The cutter rolled over the blank, each position subtracted with shapely.
 
-Two tools (standards.md §3.2; Ozols §21-6: Maag and Fellows methods; Joldasbekov §2.8):
+Two tools (Ozols §21-6: Maag and Fellows methods; Joldasbekov §2.8):
 
 * :func:`rack_outline` - the rack cutter (the basic rack's mirror image: straight flanks, tip
   land, tip rounds) rolled on the reference circle of an external gear;
@@ -13,8 +13,8 @@ One cutter tooth cuts one tooth space (the rolling is symmetric about the centre
 is always included so the root centre is exact); the space is the union of the tool positions,
 patterned z times and subtracted from the blank (tip circle; for a ring, the annulus).
 
-Accuracy comes from ``tolerance`` (mm), split over the three error sources measured in
-standards.md §3.2:
+Accuracy comes from ``tolerance`` (mm), split over the three error sources measured
+here (docs/performance.md):
 
 * the flank scallop between two tool positions, h = rho_y dphi^2 / 8 (rho_y the involute's
   curvature radius where that position cuts) - so dphi is chosen *locally* from the contact
@@ -376,8 +376,8 @@ def shaper_tool_polygon(prof, tolerance: float) -> np.ndarray:
 def shaper_positions(prof, tolerance: float) -> np.ndarray:
     """Work rotations (rad) of the cutter positions: symmetric, including 0, spaced locally.
 
-    Requirements (standards.md §3.2, generalised to a cutter of finite teeth): on the flank the
-    scallop between two positions is dphi^2 rho_w L / (8 rho_t) (rho_w, rho_t the work and
+    Requirements (chord sag rho dphi^2 / 8, generalised to a cutter of finite teeth): on the flank
+    the scallop between two positions is dphi^2 rho_w L / (8 rho_t) (rho_w, rho_t the work and
     cutter involute curvature radii at contact, L = N1 N2; the rack limit rho_t -> inf gives
     rho_w dphi^2 / 8); on the fillet d^2 / (8 rho_a0) with d the generated fillet point's travel
     (it bounds the round's scallop d_C^2 (1/rho_a0 + 1/R_c) / 8, R_c the curvature radius of the

@@ -2,7 +2,7 @@
 tolerance, and the analytic outline built from it (involute flanks, generated root fillet,
 undercut, tip and root arcs).
 
-The outline is what the generating tool leaves (standards.md §3.1; Joldasbekov §2.7-2.8, Ozols
+The outline is what the generating tool leaves (Litvin & Fuentes; Joldasbekov §2.7-2.8, Ozols
 §21-6). The tool is the basic rack's mirror image (:class:`gears.rack.BasicRack`): straight flanks
 at the pressure angle, a tip land and tip rounds of radius rho_aP0. In the transverse section of a
 helical gear the rounds are ellipses (semi-axes rho/cos(beta) along the pitch line, rho across).
@@ -13,11 +13,11 @@ normal passes through the pitch point I = (-r phi, -x m_n) (the meshing equation
 
     phi = ((v + x m_n) N_u / N_v - u) / r,    P = Rot(phi) (u + r phi, r + x m_n + v)
 
-(standards.md §3.1, rack kinematics). Applied to the straight flank it gives the involute; to the
-flat tip land, the root circle; to a circular tip round it gives the offset of the primary trochoid
-traced by the round's centre C(phi): the contact point lies on the line IC, so
+(rack kinematics: the normal passes through the pitch point). Applied to the straight flank it gives
+the involute; to the flat tip land, the root circle; to a circular tip round it gives the offset of
+the primary trochoid traced by the round's centre C(phi): the contact point lies on the line IC, so
 ``E = C + rho (C - I)/|C - I|`` with C' perpendicular to C - I, i.e. the offset curve
-``E = C +- rho J C'/|C'|`` of standards.md §3.1. No sampling or iteration is involved.
+``E = C +- rho J C'/|C'|`` (Litvin & Fuentes). No sampling or iteration is involved.
 
 **Undercut.** When the tool's straight flank reaches below the line-of-action limit point N1
 (x < x_min), the fillet curve cuts the involute; the generated boundary is the outermost of the
@@ -33,9 +33,9 @@ reference circle from the inside. A real shaper of z0 teeth leaves a slightly di
 **Sampling from a tolerance** (chordal deviation in mm): arcs by their sagitta,
 n = ceil(angle / (2 acos(1 - e/R))); the involute by its curvature radius rho = r_b t
 (t = tan alpha_y, the roll angle), chord sag r_b t dt^2 / 8 <= e, i.e. points uniform in
-w = t^(3/2) (standards.md §3.2, table "points per flank"); the fillet by its measured curvature
-(point density sqrt(kappa / 8e) per unit length), then refined by bisection until every chord
-midpoint is within ``e`` of the curve.
+w = t^(3/2) (the chord sag of a curve of radius rho: rho dphi^2 / 8); the fillet by its measured
+curvature (point density sqrt(kappa / 8e) per unit length), then refined by bisection until every
+chord midpoint is within ``e`` of the curve.
 
 **Backlash** is a thickness allowance: ``backlash`` j is the pair's normal (line-of-action)
 backlash; each gear takes half, so every flank is moved j/4 along its normal (the tool is widened
@@ -114,7 +114,8 @@ def _root(f, lo: float, hi: float, failure: str) -> float:
 def involute_rolls(rb: float, t0: float, t1: float, sag: float) -> np.ndarray:
     """Roll angles from t0 to t1 on an involute of base radius ``rb`` whose chords sag at most
     ``sag``: the sag of a roll step dt is r_b t dt^2 / 8 (rho = r_b t), so the points are uniform
-    in w = t^(3/2) with dw = 1.5 sqrt(8 sag / r_b) (standards.md §3.2, "points per flank")."""
+    in w = t^(3/2) with dw = 1.5 sqrt(8 sag / r_b) (a chord of a curve of radius rho over an
+    angle dphi sags rho dphi^2 / 8)."""
     w0, w1 = t0**1.5, t1**1.5
     dw = 1.5 * math.sqrt(8.0 * sag / rb)
     n = max(1, math.ceil(abs(w1 - w0) / dw))
@@ -623,12 +624,12 @@ def undercut_form_diameter(gear) -> float:
 
     For an undercut gear this is where the trochoid offset crosses the involute (found by Brent's
     method, not by sampling); otherwise it is the tangency point, equal to the closed form of
-    standards.md §1.7.
+    ISO 21771's form diameter.
 
     Examples
     --------
     >>> from gears import Gear
-    >>> round(undercut_form_diameter(Gear(20, 2)), 4)   # standards.md §1.7: 37.6401
+    >>> round(undercut_form_diameter(Gear(20, 2)), 4)   # the closed form: 37.6401
     37.6401
     >>> d = undercut_form_diameter(Gear(8, 1))          # undercut: above the base circle
     >>> round(d, 4) > round(Gear(8, 1).base_diameter, 4)

@@ -20,7 +20,7 @@ The family's modules, bottom to top: :mod:`gears.search.tables` (writing a table
 :mod:`gears.search.candidates` (the candidate space from the arguments),
 :mod:`gears.search.reduction` (top-k and Pareto), :mod:`gears.search.checks` (one chunk checked),
 :mod:`gears.search.scheduling` (threads or Dask), :mod:`gears.search.result` (the table) and
-this one. See ``docs/search.md``.
+this one. See ``docs/design_search.md``.
 """
 
 from __future__ import annotations

@@ -141,7 +141,7 @@ def test_margins_are_finite_or_marked(z1, z2, x1, x2, helix):
 
 
 def test_scalar_and_array_inputs_broadcast_in_ok():
-    # docs/search.md: one pinion against 60 wheels; a scalar input left some margins 0-d and
+    # docs/design_search.md: one pinion against 60 wheels; a scalar input left some margins 0-d and
     # ok() raised (issue 16). Independent route: each pair's own ok() from scalar inputs.
     z2 = np.arange(20, 80)
     ok = pair_margins(17, z2, 2.0, 0.3, 0.0).ok()

@@ -294,6 +294,21 @@ def test_figure_script_runs(tmp_path):
     import runpy
 
     root = pathlib.Path(__file__).resolve().parents[2]
+    from matplotlib.figure import Figure
+
+    titles = []
+    save = Figure.savefig
+
+    def savefig(fig, *args, **kwargs):  # what the saved figure says it shows
+        titles.append(fig._suptitle.get_text() if fig._suptitle else "")
+        return save(fig, *args, **kwargs)
+
     mod = runpy.run_path(str(root / "docs" / "make_search_figures.py"))
-    (path,) = mod["main"](tmp_path)
+    Figure.savefig = savefig
+    try:
+        (path,) = mod["main"](tmp_path)
+    finally:
+        Figure.savefig = save
     assert path.name == "search_load_front.png" and path.stat().st_size > 10_000
+    # the axes are safety (y) against volume (x): the title says so (it said "material")
+    assert titles and titles[0].endswith("safety against volume"), titles

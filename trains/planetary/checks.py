@@ -1,13 +1,13 @@
 """Layer 3, planetary: the conditions of a stage, each a finding with a signed margin.
 
 The three textbook conditions are evaluated on the real gears (profile shifts, tip shortening,
-helix), each with a signed margin (Ozols §21-13; lectures §4.3; standards.md §4):
+helix), each with a signed margin (Ozols §21-13; lectures §4.3; KHK Gear Technical Reference):
 
 * coaxiality: the working centre distances of the meshes agree (each a_w from its own working
   pressure angle), or for the double-planet scheme the planet triangle closes with clearance;
 * assembly: the exact gcd form ``N / (k gcd(z_c, z_d)) in Z`` with
   ``N = |z_b z_c - s_a s_b z_a z_d|`` (s = -1 external, +1 internal mesh; lectures §4.3,
-  standards.md §4), and the textbook sufficient form ``(z_a i_aH / k)(1 + k p) in Z`` reported
+  KHK), and the textbook sufficient form ``(z_a i_aH / k)(1 + k p) in Z`` reported
   beside it; both in integer arithmetic;
 * neighbour: the smallest gap between the tip circles of planets that do not mesh, against a
   clearance (``2 a_w sin(pi/k) - d_a`` for one planet row).

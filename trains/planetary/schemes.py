@@ -7,7 +7,7 @@ vectorised over numpy arrays (no floats anywhere), and the mesh tables a
 
 A stage has two central gears, called ``sun`` (central gear *a*, lectures' link 1) and ``ring``
 (central gear *b*, link 3) whatever their kind, a carrier, and ``n_planets`` identical planets
-(or planet pairs). The mesh topology is the ``scheme`` (lectures §4.2 / standards.md §4; the
+(or planet pairs). The mesh topology is the ``scheme`` (lectures §4.2 / Arnaudov & Karaivanov; the
 letters differ between authors, so the code names schemes by topology and keeps the letters as
 aliases):
 
@@ -91,7 +91,7 @@ def basic_ratio(scheme: str, z1, z2, z2p, z3):
 
     Examples
     --------
-    >>> basic_ratio("stepped", 20, 40, 20, 80)   # standards.md §4: -(40 80)/(20 20)
+    >>> basic_ratio("stepped", 20, 40, 20, 80)   # Willis: -(40 80)/(20 20)
     (-3200, 400)
     """
     scheme = canonical_scheme(scheme)
@@ -159,7 +159,7 @@ def _default_roles(fixed: str, input: str | None, output: str | None) -> tuple[s
 def assembly_ticks(scheme: str, z1, z2, z2p, z3):
     """Assembly number T = N / gcd(z_c, z_d): planet positions per turn (tick 2 pi / T).
 
-    ``N = |z_b z_c - s_a s_b z_a z_d|`` (lectures §4.3, standards.md §4); for one row this is
+    ``N = |z_b z_c - s_a s_b z_a z_d|`` (lectures §4.3; KHK); for one row this is
     ``z_s + z_r`` (Ozols §21-13). Identical planets assemble equally spaced iff ``T % k == 0``.
     For the double-planet scheme the rigid cluster behaves as one planet with the sun-side tooth
     count on both sides and a sign reversal, giving ``T = |z_r - z_s|``. Integer arithmetic.
@@ -194,7 +194,7 @@ def phasing_class(z_central: int, k: int) -> str:
     """Mesh phasing of k equally spaced planets on a central gear of ``z_central`` teeth.
 
     ``z mod k`` is 0: in-phase (tooth forces add, radial forces cancel); 1 or k - 1: sequential;
-    otherwise counter-phase (standards.md §4, after drivetrainhub).
+    otherwise counter-phase (drivetrainhub, planetary gear notes).
     """
     r = int(z_central) % int(k)
     if r == 0:

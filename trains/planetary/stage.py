@@ -267,7 +267,7 @@ class Planetary:
         """A stage made coaxial by profile shifts at one working centre distance.
 
         The sun-planet pair gets the shift sum and the planet-ring pair the shift difference
-        (standards.md §4: cos alpha_w = a_d cos alpha / a_w; x_s + x_p and x_r - x_p from the
+        (ISO 21771: cos alpha_w = a_d cos alpha / a_w; x_s + x_p and x_r - x_p from the
         involute function) for the common centre distance ``center_distance``; ``split``
         (:meth:`gears.GearPair.at_center_distance`) shares the sun-planet sum, and the ring takes
         the rest of its pair with the planet's shift kept. Without ``center_distance`` the
@@ -487,12 +487,12 @@ class Planetary:
 
         Solved by :func:`trains.power_flow` on :attr:`train`: in the carrier frame each
         mesh has efficiency ``mesh_efficiency`` (or its GearPair's Ozols (14.25) value with
-        ``friction``), lost at whichever end drives in relative motion (standards.md §4; Ozols
+        ``friction``), lost at whichever end drives in relative motion (Kreines / Müller; Ozols
         (14.26)). A negative value means self-locking in that direction.
 
         Examples
         --------
-        standards.md §4: i0 = -4, eta0 = 0.97 gives eta_1H = 0.976.
+        Müller's relative-power rule: i0 = -4, eta0 = 0.97 gives eta_1H = 0.976.
 
         >>> p = Planetary(20, 30, 80, n_planets=2)
         >>> round(p.efficiency(mesh_efficiency=0.97 ** 0.5), 6)
