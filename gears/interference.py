@@ -70,8 +70,8 @@ def interference_findings(pair) -> list[Finding]:
 
 
 def internal_findings(pair) -> list[Finding]:
-    """The internal-gear checks of the KHK Gear Technical Reference for an internal ``pair``, each as
-    a signed angle margin."""
+    """The internal-gear checks of the KHK Gear Technical Reference for an internal ``pair``,
+    each as a signed angle margin."""
     g1, g2 = pair.mounted
     a = pair.center_distance
     ra1, ra2 = g1.tip_diameter / 2, g2.tip_diameter / 2
