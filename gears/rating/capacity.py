@@ -15,7 +15,9 @@ from dataclasses import dataclass, field
 
 from gears.display import html_table
 from gears.errors import GearError
-from gears.rating.iso6336 import FACTORS, QUANTITIES, PairRatings, load_point, rate_pairs
+from gears.rating._arrays import number
+from gears.rating.bending import load_point
+from gears.rating.iso6336 import FACTORS, QUANTITIES, PairRatings, rate_pairs
 from gears.rating.materials import material
 from gears.rating.root import measure_root
 from gears.report import Finding, Report
@@ -217,7 +219,7 @@ def _fmt(value) -> str:
 
 def load_diameters(pair) -> tuple[float, float]:
     """``(d_en1, d_en2)``: where method B loads each gear of ``pair`` (as mounted), the outer
-    point of single contact on its virtual spur gear (:func:`gears.rating.iso6336.load_point`); NaN
+    point of single contact on its virtual spur gear (:func:`gears.rating.bending.load_point`); NaN
     where that point lies inside the base circle.
 
     >>> from gears import Gear, GearPair
@@ -251,8 +253,6 @@ def rate_pair(
     :data:`ROOT_ROUTES`; ``contacts`` and ``idler`` are those of
     :func:`gears.rating.iso6336.rate_pairs` (a planet, a sun meshing several planets).
     """
-    from gears.rating.iso6336 import _number  # the shared input check
-
     if getattr(pair, "is_rack", False):
         raise GearError("a pinion-and-rack pair has no ISO 6336 rating here; rate a gear pair")
     if root not in ROOT_ROUTES:
@@ -263,7 +263,7 @@ def rate_pair(
         if not widths:
             raise GearError("face_width = None: give face_width (mm) or set the gears' face widths")
         face_width = min(widths)
-    b = float(_number("face_width", face_width, 0.0, 1e5))
+    b = float(number("face_width", face_width, 0.0, 1e5))
     mats = material_ if isinstance(material_, tuple | list) else (material_, material_)
     if len(mats) != 2:
         raise GearError(f"material = {material_!r}; give one material or a pair")

@@ -6,8 +6,8 @@ inclined at 30 deg to the tooth centre line touches the root fillets (60 deg for
 T = pi/6), the fillet radius ``rho_F`` there, and the moment arm ``h_Fe`` of the load applied at
 the outer point of single pair contact (diameter ``d_en``, along the flank normal, angle
 ``alpha_Fen``) measured from the tangent points. The standard gives closed equations for a
-rack-generated fillet (:func:`gears.rating.iso6336.root_form`) and a rack approximation for internal
-gears (:func:`gears.rating.iso6336.internal_root_form`); here the same lengths are measured on the
+rack-generated fillet (:func:`gears.rating.bending.root_form`) and a rack approximation for internal
+gears (:func:`gears.rating.bending.internal_root_form`); here the same lengths are measured on the
 tooth the cutter actually leaves:
 
 * ``method="exact"``: on the exact envelope of the rack or shaper cutter
@@ -36,7 +36,7 @@ from gears.cutting.generate import rack_outline, shaper_outline
 from gears.cutting.profile import ShaperProfile, ToothProfile, check_tolerance
 from gears.errors import GearError
 from gears.geometry import tooth_thickness
-from gears.rating.iso6336 import form_factors
+from gears.rating.bending import form_factors
 
 __all__ = ["RootForm", "measure_root", "virtual_gear"]
 
@@ -64,7 +64,7 @@ class RootForm(NamedTuple):
         return self.s_Fn, self.rho_F, self.h_Fe, self.alpha_Fen
 
     def factors(self, module: float, pressure_angle: float = 20.0):
-        """``(Y_F, Y_S, q_s)`` of this root (:func:`gears.rating.iso6336.form_factors`)."""
+        """``(Y_F, Y_S, q_s)`` of this root (:func:`gears.rating.bending.form_factors`)."""
         yf, ys, qs = form_factors(self.s_Fn, self.rho_F, self.h_Fe, self.alpha_Fen, module,
                                   pressure_angle)  # fmt: skip
         return float(yf), float(ys), float(qs)
@@ -173,7 +173,7 @@ def measure_root(gear, d_en: float, method: str = "exact", cutter=None, toleranc
         :meth:`gears.cutting.cutter.ShaperCutter.default_for`).
     d_en : float
         Diameter of the load point on the virtual spur gear, mm
-        (:func:`gears.rating.iso6336.load_point`).
+        (:func:`gears.rating.bending.load_point`).
     method : {"exact", "simulated"}
         Measure on the exact envelope or on a simulated cut (spur gears).
     cutter : ShaperCutter, optional
@@ -198,7 +198,7 @@ def measure_root(gear, d_en: float, method: str = "exact", cutter=None, toleranc
     ISO 6336-3's closed form and the measurement agree on a rack-cut gear:
 
     >>> from gears import Gear
-    >>> from gears.rating.iso6336 import root_form, load_point
+    >>> from gears.rating.bending import root_form, load_point
     >>> g = Gear(20, 2, profile_shift=0.2)
     >>> d_en = 2 * 20.5 + 1.5   # a load point on the flank
     >>> r = measure_root(g, d_en)

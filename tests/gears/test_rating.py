@@ -17,14 +17,10 @@ from hypothesis import strategies as st
 from gears import BasicRack, Gear, GearPair
 from gears.errors import GearError
 from gears.rating.capacity import load_diameters
-from gears.rating.iso6336 import (
-    REASONS,
-    contact_ratio_factor,
-    elasticity_factor,
-    rate_pairs,
-    zone_factor,
-)
-from gears.rating.materials import MATERIALS, Material, bending_life_factor, pitting_life_factor
+from gears.rating.iso6336 import REASONS, rate_pairs
+from gears.rating.life import bending_life_factor, pitting_life_factor
+from gears.rating.materials import MATERIALS, Material
+from gears.rating.pitting import contact_ratio_factor, elasticity_factor, zone_factor
 from gears.rating.root import measure_root
 
 

@@ -1,0 +1,322 @@
+"""Layer 3, load capacity: every formula of ISO 6336 method B on one block of pairs.
+
+Private to the rating family: :func:`gears.rating.iso6336.rate_pairs` checks its arguments into
+a dict of (broadcastable) arrays and calls :func:`rate_block` on blocks of it. The calculation
+runs in the order of the standard, one function per part: the pair (diameters, contact ratios,
+loads), the load factors of ISO 6336-1, pitting (ISO 6336-2), bending (ISO 6336-3) and the
+validity of each method (the ``reason`` codes of :data:`gears.rating.iso6336.REASONS`). Each
+part reads and writes the dict ``q`` of quantities, keyed by the names of
+:class:`gears.rating.iso6336.PairRatings` where they are reported.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from gears.geometry import root_diameter, tip_diameter, tooth_thickness
+from gears.meshing import contact_ratio
+from gears.rating._arrays import where as _where
+from gears.rating.bending import (
+    deep_tooth_factor,
+    form_factors,
+    helix_factor_root,
+    internal_root_form,
+    load_point,
+    notch_sensitivity_factor,
+    root_form,
+    root_size_factor,
+    root_surface_factor,
+)
+from gears.rating.life import bending_life_factor, pitting_life_factor
+from gears.rating.load_factors import (
+    dynamic_factor,
+    face_load_factor,
+    face_load_factor_root,
+    helix_running_in,
+    mesh_stiffness,
+    profile_running_in,
+    single_stiffness,
+    tolerances,
+    transverse_load_factors,
+)
+from gears.rating.pitting import (
+    contact_ratio_factor,
+    elasticity_factor,
+    lubrication_factors,
+    roughness_factor,
+    single_pair_factors,
+    work_hardening_factors,
+    zone_factor,
+)
+
+_ROOT = ("s_Fn", "rho_F", "h_Fe", "alpha_Fen")
+
+
+def rate_block(a, mats, fields):
+    """Every formula of ISO 6336 method B on one block: ``a`` the checked arguments (overrides
+    as ``o_<name>``), ``mats`` the two :class:`gears.rating.materials.Material`; returns the dict
+    of every quantity, the ``fields`` broadcast to the block and masked by ``valid`` (zero
+    safeties, NaN elsewhere). Rows outside a method's validity may produce NaN or inf on the
+    way."""
+    o = {k[2:]: v for k, v in a.items() if k.startswith("o_")}
+
+    def given(name, value):
+        return o[name] if name in o else value
+
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        q = _pair(a, given)
+        _load_factors(q, a, mats, given)
+        _pitting(q, a, mats, given)
+        _root_forms(q, a)
+        _bending(q, a, mats, given)
+        return _results(q, a, fields)
+
+
+def _pair(a, given):
+    """Diameters, contact ratios, the nominal load, speed and line load of the pairs."""
+    z1, z2, m, x1, x2 = a["z1"], a["z2"], a["m"], a["x1"], a["x2"]
+    internal = a["internal"]
+    s = _where(internal, -1.0, 1.0)
+    b, T, n = a["b"], a["T"], a["n"]
+    an = np.radians(a["pa"])
+    beta = np.radians(np.abs(a["helix"]))
+    cos_b = np.cos(beta)
+    at = np.arctan(np.tan(an) / cos_b)
+    cos_at = np.cos(at)
+    bb = np.arctan(np.tan(beta) * cos_at)
+    cbb2 = np.cos(bb) ** 2
+    tan_wt = np.tan(np.radians(a["alpha_wt"]))
+    d1 = z1 * m / cos_b
+    d2 = z2 * m / cos_b
+    db1, db2 = d1 * cos_at, d2 * cos_at
+    ha, k = a["ha"], a["k"]
+    da1 = tip_diameter(z1, m, x1, a["helix"], ha, False, k + a["k1"])
+    da2 = tip_diameter(z2, m, x2, a["helix"], ha, internal, _where(internal, 0.0, k) + a["k2"])
+    df1 = root_diameter(z1, m, x1, a["helix"], a["hf1"], False)
+    df2 = root_diameter(z2, m, x2, a["helix"], a["hf2"], internal)
+    p_bt = np.pi * m / cos_b * cos_at
+    ea = contact_ratio(da1 / 2, da2 / 2, db1 / 2, db2 / 2, tan_wt, s, p_bt)
+    eb = b * np.sin(beta) / (np.pi * m)
+    K_A = given("K_A", a["K_A"])
+    K_g = given("K_gamma", a["K_gamma"])
+    F_t = 2000.0 * T / d1
+    return {
+        "z1": z1, "z2": z2, "m": m, "x1": x1, "x2": x2, "internal": internal, "s": s, "b": b,
+        "n": n, "beta": beta, "cos_b": cos_b, "at": at, "cos_at": cos_at, "bb": bb,
+        "cbb2": cbb2, "tan_wt": tan_wt, "d1": d1, "d2": d2, "db1": db1, "db2": db2, "da1": da1,
+        "da2": da2, "df1": df1, "df2": df2, "eps_alpha": ea, "eps_beta": eb,
+        "eps_gamma": ea + eb, "u": z2 / z1, "K_A": K_A, "K_gamma": K_g, "F_t": F_t,
+        "v": np.pi * d1 * n / 60000.0, "w": F_t * K_g * K_A / b,  # w: line load, N/mm
+        "zn1": z1 / (cbb2 * cos_b), "zn2": z2 / (cbb2 * cos_b),
+    }  # fmt: skip
+
+
+def _load_factors(q, a, mats, given):
+    """Stiffness, deviations, K_v, K_Hbeta, K_Fbeta, Z_eps, K_Halpha, K_Falpha (ISO 6336-1)."""
+    m1, m2 = mats
+    code1, code2 = m1.code, m2.code
+    m, b, d1, ea, eg, w, v = q["m"], q["b"], q["d1"], q["eps_alpha"], q["eps_gamma"], q["w"], q["v"]
+
+    # stiffness (ISO 6336-1 §9); C_B is linear in h_fP: the mean of both gears' C_B is C_B of
+    # the mean dedendum
+    c_p = single_stiffness(q["zn1"], q["zn2"], q["x1"], q["x2"], a["helix"],
+                           (a["hf1"] + a["hf2"]) / 2, a["pa"], q["internal"], w)  # fmt: skip
+    c_p = given("c_prime", c_p)
+    c_ga, c_gb = mesh_stiffness(c_p, ea)
+    c_ga = given("c_gamma_alpha", c_ga)
+    c_gb = given("c_gamma_beta", c_gb)
+
+    # deviations and running-in (ISO 1328-1; ISO 6336-1 §8.3.3)
+    fpt1, ff1, fh1 = tolerances(m, d1, b, a["Q"])
+    fpt2, ff2, fh2 = tolerances(m, q["d2"], b, a["Q"])
+    f_pb = np.maximum(fpt1, fpt2) * q["cos_at"]
+    f_f = np.maximum(ff1, ff2)
+    f_hb = np.maximum(fh1, fh2)
+    sH1, sH2 = a["sH1"], a["sH2"]
+    y_a = 0.5 * (profile_running_in(f_pb, code1, sH1, v) + profile_running_in(f_pb, code2, sH2, v))
+    y_f = 0.5 * (profile_running_in(f_f, code1, sH1, v) + profile_running_in(f_f, code2, sH2, v))
+    if "C_a" in a:
+        c_a = a["C_a"]
+    else:  # running-in tip relief C_ay (ISO 6336-1 Table 8), mean of both gears
+        c_a = 0.5 * sum((sh / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for sh in (sH1, sH2))
+
+    # K_v, method B (ISO 6336-1 §6.5): solid gears, the ring's mass infinite
+    dm1, dm2 = (q["da1"] + q["df1"]) / 2, (q["da2"] + q["df2"]) / 2
+    mass1 = np.pi / 8 * m1.density * dm1**4 / q["db1"] ** 2 / a["c1"]
+    mass2 = np.pi / 8 * m2.density * dm2**4 / q["db2"] ** 2 / a["c2"]
+    m_red = _where(q["internal"], mass1, mass1 * mass2 / (mass1 + mass2))
+    n_e1 = 30000.0 / (np.pi * q["z1"]) * np.sqrt(c_ga / m_red)
+    N = q["n"] / n_e1
+    K_v = given("K_v", dynamic_factor(N, w, c_p, f_pb - y_a, f_f - y_f, c_a, eg))
+
+    # K_Hbeta method C, K_Fbeta (ISO 6336-1 §7.6, §7.8)
+    fmb = w * K_v
+    if "F_bx" in a:
+        f_bx = a["F_bx"]
+    else:
+        f_sh = fmb * 0.023 * (b / d1) ** 2
+        f_bx = np.maximum(1.33 * f_sh + f_hb, np.maximum(0.005 * fmb, 0.5 * f_hb))
+    y_b = 0.5 * (helix_running_in(f_bx, code1, sH1, v) + helix_running_in(f_bx, code2, sH2, v))
+    K_Hb = given("K_Hbeta", face_load_factor(np.maximum(f_bx - y_b, 0.0), c_gb, fmb))
+    h1 = (q["da1"] - q["df1"]) / 2
+    h2 = np.abs(q["da2"] - q["df2"]) / 2
+    K_Fb = given("K_Fbeta", face_load_factor_root(K_Hb, b, np.maximum(h1, h2)))
+
+    # transverse load factors (ISO 6336-1 §8.3)
+    Z_eps = given("Z_eps", contact_ratio_factor(ea, q["eps_beta"]))
+    K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, fmb * K_Hb, ea, eg, Z_eps)
+    q.update({
+        "c_prime": c_p, "c_gamma_alpha": c_ga, "c_gamma_beta": c_gb, "N": N, "K_v": K_v,
+        "K_Hbeta": K_Hb, "K_Fbeta": K_Fb, "Z_eps": Z_eps, "K_Halpha": given("K_Halpha", K_Ha),
+        "K_Falpha": given("K_Falpha", K_Fa),
+    })  # fmt: skip
+
+
+def _pitting(q, a, mats, given):
+    """sigma_H0, sigma_H, sigma_HP and the Z factors (ISO 6336-2)."""
+    m1, m2 = mats
+    code1, code2 = m1.code, m2.code
+    ea, eb, v, n, u, s = q["eps_alpha"], q["eps_beta"], q["v"], q["n"], q["u"], q["s"]
+    sH1, sH2 = a["sH1"], a["sH2"]
+    Z_H = given("Z_H", zone_factor(np.degrees(q["at"]), a["alpha_wt"], np.degrees(q["bb"])))
+    Z_E = given("Z_E", elasticity_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus,
+                                         m2.poisson))  # fmt: skip
+    Z_beta = given("Z_beta", 1.0 / np.sqrt(q["cos_b"]))
+    Z_B, Z_D = single_pair_factors(q["z1"], q["z2"], q["da1"], q["da2"], q["db1"], q["db2"],
+                                   a["alpha_wt"], ea, eb, q["internal"])  # fmt: skip
+    q["interferes"] = (np.isnan(Z_B) & ("o_Z_B" not in a)) | (np.isnan(Z_D) & ("o_Z_D" not in a))
+    Z_B = given("Z_B", _where(np.isnan(Z_B), 1.0, Z_B))
+    Z_D = given("Z_D", _where(np.isnan(Z_D), 1.0, Z_D))
+    s_min = np.minimum(sH1, sH2)
+    Z_L, Z_v = lubrication_factors(s_min, a["nu40"], v)
+    Z_L, Z_v = given("Z_L", Z_L), given("Z_v", Z_v)
+    rho1 = q["db1"] / 2 * q["tan_wt"]
+    rho2 = q["db2"] / 2 * q["tan_wt"]
+    rho_red = rho1 * rho2 / (rho2 + s * rho1)
+    rz = 6.0 * a["Ra"]
+    Z_R = given("Z_R", roughness_factor(s_min, rz, rho_red))
+    Z_W1, Z_W2 = work_hardening_factors(code1, code2, m1.hardness, m2.hardness, rz, rho_red,
+                                        a["nu40"], v)  # fmt: skip
+    Z_W1, Z_W2 = given("Z_W1", Z_W1), given("Z_W2", Z_W2)
+    Z_X = given("Z_X", np.ones_like(q["F_t"]))
+    N_L1 = 60.0 * a["life"] * n * a["c1"]
+    N_L2 = 60.0 * a["life"] * n / u * a["c2"]
+    Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
+    Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
+    us = s * u
+    sigma_H0 = (
+        Z_H * Z_E * q["Z_eps"] * Z_beta * np.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
+    )
+    load = np.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
+    common = Z_L * Z_v * Z_R * Z_X
+    q.update({
+        "Z_H": Z_H, "Z_E": Z_E, "Z_beta": Z_beta, "Z_B": Z_B, "Z_D": Z_D, "Z_L": Z_L,
+        "Z_v": Z_v, "Z_R": Z_R, "Z_W1": Z_W1, "Z_W2": Z_W2, "Z_X": Z_X, "N_L1": N_L1,
+        "N_L2": N_L2, "Z_NT1": Z_NT1, "Z_NT2": Z_NT2, "u": us, "sigma_H0": sigma_H0,
+        "sigma_H1": Z_B * sigma_H0 * load, "sigma_H2": Z_D * sigma_H0 * load,
+        "sigma_HP1": sH1 * Z_NT1 * common * Z_W1, "sigma_HP2": sH2 * Z_NT2 * common * Z_W2,
+    })  # fmt: skip
+
+
+def _root_forms(q, a):
+    """The load points and the root form of each gear (ISO 6336-3 §6.2), standard or given."""
+    m, pa, ea, internal = q["m"], a["pa"], q["eps_alpha"], q["internal"]
+    den1, aen1, _, _ = load_point(q["z1"], m, q["da1"], q["d1"], pa, a["helix"], ea, False)
+    den2, aen2, _, _ = load_point(q["z2"], m, q["da2"], q["d2"], pa, a["helix"], ea, internal)
+    rack1 = a["hf1"], a["rho1"], a["spr1"]
+    rack2 = a["hf2"], a["rho2"], a["spr2"]
+    form1 = root_form(q["zn1"], m, q["x1"], pa, den1, aen1, *rack1)
+    if not np.any(internal):
+        form2 = root_form(q["zn2"], m, q["x2"], pa, den2, aen2, *rack2)
+    else:
+        dfn2 = q["zn2"] * m + np.abs(q["df2"] - q["d2"])  # the ring's root on its virtual gear
+        form2 = internal_root_form(m, pa, den2, dfn2, *rack2)
+        if not np.all(internal):
+            external = root_form(q["zn2"], m, q["x2"], pa, den2, aen2, *rack2)
+            form2 = tuple(_where(internal, i, e) for e, i in zip(external, form2, strict=True))
+    q["d_en1"], q["d_en2"] = den1, den2
+    for i, form in ((1, form1), (2, form2)):
+        if f"root_s_Fn{i}" in a:
+            form = tuple(a[f"root_{key}{i}"] for key in _ROOT)
+        for key, value in zip(_ROOT, form, strict=True):
+            q[f"{key}{i}"] = value
+
+
+def _bending(q, a, mats, given):
+    """sigma_F0, sigma_F, sigma_FP and the Y factors (ISO 6336-3)."""
+    m1, m2 = mats
+    m, pa = q["m"], a["pa"]
+    for i, mat in ((1, m1), (2, m2)):
+        Y_F, Y_S, q[f"q_s{i}"] = form_factors(q[f"s_Fn{i}"], q[f"rho_F{i}"], q[f"h_Fe{i}"],
+                                              q[f"alpha_Fen{i}"], m, pa)  # fmt: skip
+        q[f"Y_F{i}"], q[f"Y_S{i}"] = given(f"Y_F{i}", Y_F), given(f"Y_S{i}", Y_S)
+        q[f"Y_B{i}"] = given(f"Y_B{i}", np.ones_like(q["F_t"]))
+        q[f"Y_NT{i}"] = given(f"Y_NT{i}", bending_life_factor(q[f"N_L{i}"], mat.code))
+        delta = notch_sensitivity_factor(q[f"q_s{i}"], mat.slip_layer)
+        q[f"Y_deltarelT{i}"] = given(f"Y_deltarelT{i}", delta)
+        q[f"Y_RrelT{i}"] = given(f"Y_RrelT{i}", root_surface_factor(6.0 * a["Ra_root"], mat.code))
+        q[f"Y_X{i}"] = given(f"Y_X{i}", root_size_factor(m, mat.code))
+        q[f"Y_M{i}"] = given(f"Y_M{i}", _where(a[f"idler{i}"], 0.7, 1.0))
+    q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], np.degrees(q["beta"])))
+    q["Y_DT"] = given("Y_DT", deep_tooth_factor(a["Q"], q["eps_alpha"] / q["cbb2"]))
+    q["Y_ST"] = given("Y_ST", np.full_like(q["F_t"], 2.0))
+    nominal = q["F_t"] / (q["b"] * m) * q["Y_beta"] * q["Y_DT"]
+    kf = q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Fbeta"] * q["K_Falpha"]
+    for i in (1, 2):
+        q[f"sigma_F0{i}"] = nominal * q[f"Y_F{i}"] * q[f"Y_S{i}"] * q[f"Y_B{i}"]
+        q[f"sigma_F{i}"] = q[f"sigma_F0{i}"] * kf
+        allowable = a[f"sF{i}"] * q["Y_ST"] * q[f"Y_NT{i}"] * q[f"Y_deltarelT{i}"]
+        q[f"sigma_FP{i}"] = allowable * q[f"Y_RrelT{i}"] * q[f"Y_X{i}"] * q[f"Y_M{i}"]
+
+
+def _validity(q, a, shape):
+    """``(valid, reason)``: the first failed check in the order of REASONS (0 = rated)."""
+    m, pa, internal = q["m"], a["pa"], q["internal"]
+    da1, da2, db1, db2 = q["da1"], q["da2"], q["db1"], q["db2"]
+    pointed = np.zeros(shape, bool)
+    for z, x, da, db, inside in ((q["z1"], q["x1"], da1, db1, False),
+                                 (q["z2"], q["x2"], da2, db2, internal)):  # fmt: skip
+        thick = tooth_thickness(np.maximum(da, db), z, m, x, pa, a["helix"], inside, signed=True)
+        pointed |= (da >= db) & ~(thick > 0)
+    below_base = ~((da1 >= db1) & (da2 >= db2))
+    root_ok = np.ones(shape, bool)
+    qs_ok = np.ones(shape, bool)
+    for i in (1, 2):
+        root_ok &= (q[f"s_Fn{i}"] > 0) & (q[f"h_Fe{i}"] > 0) & (q[f"rho_F{i}"] > 0)
+        if f"o_Y_S{i}" not in a:
+            qs_ok &= (q[f"q_s{i}"] >= 1.0) & (q[f"q_s{i}"] < 8.0)
+    checks = [
+        q["eps_alpha"] >= 1.0,
+        ~below_base,
+        ~pointed,
+        np.isfinite(q["d_en1"]) & np.isfinite(q["d_en2"]),
+        root_ok,
+        qs_ok,
+        ~q["interferes"],
+    ]
+    reason = np.zeros(shape, int)
+    for code, ok in reversed(list(enumerate(checks, 1))):
+        reason = _where(ok, reason, code)
+    return reason == 0, reason
+
+
+def _results(q, a, fields):
+    """The safeties, then ``fields`` broadcast to the block and masked by ``valid``."""
+    shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
+    valid, reason = _validity(q, a, shape)
+    for i in (1, 2):
+        q[f"S_H{i}"] = q[f"sigma_HP{i}"] / q[f"sigma_H{i}"]
+        q[f"S_F{i}"] = q[f"sigma_FP{i}"] / q[f"sigma_F{i}"]
+    q["alpha_Fen1"] = np.degrees(q["alpha_Fen1"])
+    q["alpha_Fen2"] = np.degrees(q["alpha_Fen2"])
+    everywhere = bool(np.all(valid))
+    for key in fields:
+        value = q[key]
+        if np.shape(value) != shape:
+            value = np.broadcast_to(value, shape)
+        if not everywhere:
+            value = _where(valid, value, 0.0 if key.startswith("S_") else np.nan)
+        q[key] = value
+    q["valid"] = valid
+    q["reason"] = reason
+    return q
