@@ -15,8 +15,8 @@ tooth the cutter actually leaves:
   30 (60) deg point by Brent's method on the fillet's tangent angle, rho_F from the curve's
   derivatives;
 * ``method="simulated"``: on the polygon of a simulated cut (:mod:`gears.cutting.generate`, spur
-  gears): quartics in the arc length fitted to the points within 0.1 m_n of arc around the place where
-  the polyline's direction crosses the angle, the tangent point and rho_F taken on them.
+  gears): quartics in the arc length fitted to the points within 0.1 m_n of arc around the place
+  where the polyline's direction crosses the angle, the tangent point and rho_F taken on them.
 
 Both work on the virtual spur gear of the normal section, as the standard does: a helical gear
 is measured on its exact virtual spur gear (``z_n = z / (cos^2 beta_b cos beta)`` teeth, shifts
