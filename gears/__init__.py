@@ -4,6 +4,7 @@ The public surface (see ``docs/``)::
 
     from gears import BasicRack, Gear, GearPair, ShaperCutter
     from gears import BevelPair                        # straight bevel gears (docs/bevel.md)
+    from gears import WormPair                         # worm gears (docs/worm.md)
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/design_search.md)
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
@@ -25,6 +26,7 @@ from gears.rating.capacity import Rating
 from gears.rating.iso6336 import PairRatings, rate_pairs
 from gears.rating.materials import MATERIALS, Material
 from gears.report import Finding, Report
+from gears.worm.pair import WormPair
 
 try:
     __version__ = version("geartrain")  # pyproject.toml's version, as installed
@@ -49,6 +51,7 @@ __all__ = [
     "Rating",
     "Report",
     "ShaperCutter",
+    "WormPair",
     "gear_margins",
     "pair_geometry",
     "pair_margins",

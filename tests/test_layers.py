@@ -44,6 +44,7 @@ LAYERS = {
             "forces",
             "contact.compliance",
             "contact.modification",
+            "worm.crossed",
         ],
         [
             "rack",
@@ -53,14 +54,22 @@ LAYERS = {
             "rating._block",
             "search.cluster",
             "contact.analysis",
+            "worm.geometry",
         ],
-        ["checks", "cutting.profile", "cutting.measure", "rating.iso6336", "bevel.spherical"],
-        ["interference", "cutting.generate", "bevel.crown", "rating.sizing"],
+        [
+            "checks",
+            "cutting.profile",
+            "cutting.measure",
+            "rating.iso6336",
+            "bevel.spherical",
+            "worm.flank",
+        ],
+        ["interference", "cutting.generate", "bevel.crown", "rating.sizing", "worm.checks"],
         ["cutting.outline", "rating.root", "search.candidates"],
         ["solid.mesh", "solid.animate", "figures.drawing", "bevel.solid", "search.reduction"],
         ["gear", "rating.capacity", "solid.render", "search.checks", "contact.result"],
         ["pair", "bevel.gear", "search.scheduling"],
-        ["shift", "figures.plot", "bevel.pair", "search.result"],
+        ["shift", "figures.plot", "bevel.pair", "search.result", "worm.pair"],
         ["solid.export", "search.engine"],
     ],
     "trains": [
@@ -81,7 +90,7 @@ LAYERS = {
 
 # the family subpackages of each package (docs/architecture.md, "Families"); the rest is the core
 FAMILIES = {
-    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search", "contact"],
+    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search", "contact", "worm"],
     "trains": ["planetary", "design", "cli"],
 }
 
