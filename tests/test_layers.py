@@ -77,7 +77,7 @@ LAYERS = {
         ["inertia", "trajectory", "conditions", "relations"],
         ["willis", "planetary.schemes"],
         ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene"],
-        ["capacity"],
+        ["capacity", "loading"],
         ["catalog", "differential", "planetary.stage"],
         ["toml_format", "design.synthesis", "design.sizing"],
         ["design.gearbox"],

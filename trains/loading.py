@@ -1,0 +1,700 @@
+"""Layer 4, statics: the force of every mesh and the load on every bearing of a train.
+
+:func:`loads` runs :func:`trains.power.power_flow` (torques with losses, the direction of power)
+and turns each member's mesh torques into forces (:func:`gears.forces.mesh_forces`: Ozols
+(11.8), ISO 6336-1 (1)): every mesh of parallel axes gets its tangential, radial and axial
+force, and every member the resultant on its bearings as a vector, so that its forces and
+torques balance: an idler's bearing carries ``2 R cos alpha`` (Ozols (11.9)), a two-stage shaft
+carries ``R_12`` and ``R_23 = R_12 r_2 / r_2'`` (Ozols (11.10)), a planet's pin the sum of its two
+mesh forces, the carrier the pins of all planets (Ozols (11.11)).
+
+The drawing plane: members lie in one plane of parallel axes (z out of it). Coaxial members
+(couplings, :meth:`~trains.Train.coaxial`, the central members of a carrier and the carrier
+itself) share an axis; each mesh sets the distance of its two axes (its working centre
+distance). The first member sits at the origin; a member reached by one mesh lies in the
+direction ``angles[mesh]`` (degrees, default 0: the textbooks' collinear trains) from its mate,
+one reached by two meshes where both distances put it (the planet triangle of a double-planet
+stage). A mesh's direction is then the direction from its external gear's axis to the pitch
+point. Planets declared with :meth:`~trains.Train.set_planets` are spread evenly about their
+carrier's axis (``360 k / n`` degrees), each carrying ``1/n`` of the mesh's torque, times a
+load-sharing factor per mesh when given.
+
+With losses (``mesh_efficiency`` or ``friction``) the two gears of a mesh carry different
+torques; each gear's force follows from its own torque, so every member balances exactly and
+the two forces of one mesh differ by the loss (Newton's third law holds to ``1 - eta``).
+
+Meshes of kinematic-only relations (tooth counts, no gears) get their diameters from
+``module=`` (``d = m z``, the pressure angle ``pressure_angle``, spur); links (bevel pairs by
+the arrow rule, chains, worms) carry torque and no force here. Bevel meshes built from
+:class:`gears.BevelPair` are not in the plane: their forces are reported per mesh (in the
+pair's frame, :meth:`gears.BevelPair.forces`) and left out of the members' resultants.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from gears import BevelPair, GearError
+from gears.display import html_table
+from gears.forces import bearing_reactions, bevel_pair_forces, mesh_forces
+from trains.errors import TrainError
+from trains.power import PowerFlow, power_flow
+from trains.willis import FRAME, Relation, Train
+
+__all__ = ["MemberLoad", "MeshLoad", "TrainLoads", "loads"]
+
+
+@dataclass(frozen=True)
+class MeshLoad:
+    """The forces of one mesh (N), per planet copy.
+
+    Attributes
+    ----------
+    name : str
+    members : (str, str)
+        The relation's members ``(a, b)``.
+    kind : str
+        ``"spur"``, ``"helical"``, ``"internal"``, ``"bevel"`` or ``"link"`` (no force).
+    copies : int
+        How many copies carry it (the planet count), each at ``angles[k]`` degrees.
+    tangential, radial, axial, normal : (float, float)
+        Magnitudes on the gear of ``a`` and of ``b``, per copy.
+    forces : dict
+        Member -> the force on its gear, shape ``(copies, 3)``, in the drawing's frame.
+    points : dict
+        Member -> where the force acts (the pitch point), shape ``(copies, 3)``, mm.
+    angles : tuple of float
+        The direction of each copy's line of centres (from the external gear's axis), degrees.
+    """
+
+    name: str
+    members: tuple[str, str]
+    kind: str
+    copies: int
+    tangential: tuple[float, float]
+    radial: tuple[float, float]
+    axial: tuple[float, float]
+    normal: tuple[float, float]
+    forces: dict[str, np.ndarray] = field(repr=False)
+    points: dict[str, np.ndarray] = field(repr=False)
+    angles: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class MemberLoad:
+    """The loads on one member (N, N m, mm).
+
+    Attributes
+    ----------
+    name : str
+    torque : float
+        The external torque on it from the power flow (input, output, holding; 0 for an idler
+        or a planet).
+    force : ndarray, shape (3,)
+        The resultant of the mesh forces on it (a planet: on one copy, with its centrifugal
+        force when given; a carrier: the pins of all its planets).
+    bearing : ndarray, shape (3,)
+        The force of its bearings on it: ``-force`` (a planet: its pin's).
+    moment : float
+        The moment of those forces about its axis, N m: ``moment + torque = 0``.
+    position : ndarray, shape (3,)
+        Its axis in the drawing (a planet: copy 0's).
+    copies : int
+    carried_by : str
+        Where its bearings sit: ``"frame"``, or the carrier of a planet.
+    reactions : ndarray or None
+        With ``bearings=``: the force of each of its two bearings, shape (2, 3).
+    """
+
+    name: str
+    torque: float
+    force: np.ndarray
+    bearing: np.ndarray
+    moment: float
+    position: np.ndarray
+    copies: int = 1
+    carried_by: str = FRAME
+    reactions: np.ndarray | None = None
+
+    @property
+    def radial_load(self) -> float:
+        """|bearing| in the plane of the drawing (the radial bearing load), N."""
+        return float(math.hypot(self.bearing[0], self.bearing[1]))
+
+
+@dataclass(frozen=True)
+class TrainLoads:
+    """What :func:`loads` returns: the power flow, every mesh's forces, every member's loads."""
+
+    flow: PowerFlow
+    meshes: dict[str, MeshLoad]
+    members: dict[str, MemberLoad]
+
+    def rows(self) -> tuple[list[tuple], list[tuple]]:
+        """Text rows of the two tables: meshes, then members."""
+        meshes = [
+            (
+                m.name,
+                m.kind,
+                m.copies,
+                *(f"{v[0]:.2f}" for v in (m.tangential, m.radial, m.axial, m.normal)),
+            )
+            for m in self.meshes.values()
+        ]
+        members = [
+            (
+                b.name,
+                f"{b.torque:.4f}",
+                f"{b.radial_load:.2f}",
+                f"{abs(b.bearing[2]):.2f}",
+                f"{b.moment:.4f}",
+                b.carried_by if b.copies == 1 else f"{b.carried_by} x{b.copies}",
+            )
+            for b in self.members.values()
+        ]
+        return meshes, members
+
+    MESH_COLUMNS = ("mesh", "kind", "copies", "F_t [N]", "F_r [N]", "F_a [N]", "F_n [N]")
+    MEMBER_COLUMNS = (
+        "member",
+        "torque [N m]",
+        "radial [N]",
+        "axial [N]",
+        "moment [N m]",
+        "bearing on",
+    )
+
+    def __str__(self) -> str:
+        meshes, members = self.rows()
+        out = []
+        for cols, rows in ((self.MESH_COLUMNS, meshes), (self.MEMBER_COLUMNS, members)):
+            width = [max(len(str(c)), *(len(str(r[i])) for r in rows)) for i, c in enumerate(cols)]
+            out.append("  ".join(f"{c:>{w}s}" for c, w in zip(cols, width, strict=True)))
+            out += ["  ".join(f"{v!s:>{w}s}" for v, w in zip(r, width, strict=True)) for r in rows]
+            out.append("")
+        return "\n".join(out[:-1])
+
+    def _repr_html_(self) -> str:
+        meshes, members = self.rows()
+        return (
+            html_table(self.MESH_COLUMNS, meshes, caption="mesh forces (per planet copy)")
+            + "\n"
+            + html_table(self.MEMBER_COLUMNS, members, caption="bearing loads")
+        )
+
+
+# --------------------------------------------------------------------------- geometry of a mesh
+
+
+@dataclass(frozen=True)
+class _Mesh:
+    """One mesh's plane geometry: its external gear's member ``g1`` and the other ``g2``."""
+
+    relation: Relation
+    g1: str
+    g2: str
+    d1: float  # working pitch diameters, mm
+    d2: float
+    alpha: float  # working transverse pressure angle, deg
+    beta: float  # gear 1's helix angle, deg
+    alpha_n: float
+    internal: bool
+    distance: float  # centre distance, mm
+
+
+def _geometry(r: Relation, modules: Mapping[str, float], pressure_angle: float) -> _Mesh | None:
+    """The plane geometry of a mesh relation, or None for a link, coupling or bevel mesh."""
+    if r.kind != "mesh" or isinstance(r.pair, BevelPair):
+        return None
+    if r.pair is not None:
+        p = r.pair
+        first_on_a = not r.gears[0].internal  # the external gear is the pair's g1
+        g1, g2 = (r.a, r.b) if first_on_a else (r.b, r.a)
+        d1, d2 = p.working_diameters
+        return _Mesh(
+            r,
+            g1,
+            g2,
+            d1,
+            d2,
+            p.working_pressure_angle,
+            p.g1.helix_angle,
+            p.g1.pressure_angle,
+            p.internal,
+            p.center_distance,
+        )
+    if r.name not in modules:
+        raise TrainError(
+            f"mesh {r.name!r} has tooth counts but no gears: give module= (mm, or a mapping "
+            "mesh name -> mm) for its pitch diameters m z, or build it from gears "
+            "(Train.mesh(..., gears=...))"
+        )
+    module = modules[r.name]
+    za, zb = r.teeth
+    ring_is_a = r.internal and za > zb  # a ring has more teeth than its pinion
+    g1, g2 = (r.b, r.a) if ring_is_a else (r.a, r.b)
+    z1, z2 = (zb, za) if ring_is_a else (za, zb)
+    d1, d2 = module * z1, module * z2
+    dist = abs(d2 - d1) / 2 if r.internal else (d1 + d2) / 2
+    return _Mesh(r, g1, g2, d1, d2, pressure_angle, 0.0, pressure_angle, r.internal, dist)
+
+
+# ------------------------------------------------------------------------------------ placement
+
+
+class _Axes:
+    """Union of members that share an axis."""
+
+    def __init__(self, members: Iterable[str]) -> None:
+        self.parent = {m: m for m in members}
+
+    def find(self, m: str) -> str:
+        while self.parent[m] != m:
+            self.parent[m] = self.parent[self.parent[m]]
+            m = self.parent[m]
+        return m
+
+    def join(self, a: str, b: str) -> None:
+        self.parent[self.find(a)] = self.find(b)
+
+
+def _planets(train: Train, flow: PowerFlow) -> dict[str, tuple[str, int]]:
+    """Planet member -> (its carrier, copies): those declared with ``set_planets``, else the
+    members that mesh only on one moving carrier and carry no external torque."""
+    declared = dict(getattr(train, "_planets", {}))
+    out: dict[str, tuple[str, int]] = {}
+    for m in train.members:
+        rels = [r for r in train.relations if m in (r.a, r.b)]
+        carriers = {r.carrier for r in rels if r.kind == "mesh"}
+        on_carrier = rels and all(r.kind == "mesh" for r in rels) and len(carriers) == 1
+        c = next(iter(carriers)) if carriers else FRAME
+        if m in declared and c != FRAME:
+            out[m] = (c, int(declared[m]))
+        elif on_carrier and c != FRAME and abs(flow.torques.get(m, 0.0)) == 0.0:
+            out[m] = (c, 1)
+    return out
+
+
+def _axes(train: Train, planets: Mapping[str, tuple[str, int]]) -> _Axes:
+    axes = _Axes(train.members)
+    for r in train.relations:
+        if r.kind == "couple" and r.a not in planets and r.b not in planets:
+            axes.join(r.a, r.b)  # a shaft through two stages (a planet's coupling is parallel)
+        elif r.carrier != FRAME:
+            for m in (r.a, r.b):
+                if m not in planets:
+                    axes.join(m, r.carrier)  # a central member turns about the carrier's axis
+    for group in train.coaxial_groups:
+        for m in group[1:]:
+            axes.join(group[0], m)
+    return axes
+
+
+def _place(
+    train: Train, meshes: Sequence[_Mesh], axes: _Axes, angles: Mapping[str, float]
+) -> dict[str, np.ndarray]:
+    """Axis position (x, y) of every axis group: the first at the origin, then by meshes."""
+    links = [(axes.find(m.g1), axes.find(m.g2), m) for m in meshes]
+    groups = list(dict.fromkeys(axes.find(m) for m in train.members if m != FRAME))
+    pos: dict[str, np.ndarray] = {}
+    pending = [g for g in groups if any(g in (a, b) for a, b, _ in links)]
+    while pending:
+        if not pos:
+            pos[pending.pop(0)] = np.zeros(2)
+            continue
+        placed = False
+        for g in pending:  # two placed mates fix a member (a planet triangle)
+            known = [
+                (b if a == g else a, m)
+                for a, b, m in links
+                if g in (a, b) and (b if a == g else a) in pos
+            ]
+            if len({k for k, _ in known}) >= 2:
+                (p, m1), (q, m2) = known[0], next(k for k in known if k[0] != known[0][0])
+                pos[g] = _triangle(pos[p], m1.distance, pos[q], m2.distance)
+                pending.remove(g)
+                placed = True
+                break
+        if placed:
+            continue
+        for g in pending:
+            known = [(a, b, m) for a, b, m in links if g in (a, b) and (b if a == g else a) in pos]
+            if known:
+                a, b, m = known[0]
+                th = math.radians(float(angles.get(m.relation.name, 0.0)))
+                step = m.distance * np.array([math.cos(th), math.sin(th)])
+                # external: g2's axis at +a from g1's; internal: the ring's at -a from the pinion's
+                step = -step if m.internal else step
+                pos[g] = pos[a] + step if g == b else pos[b] - step
+                pending.remove(g)
+                break
+        else:  # a group no mesh reaches from the placed ones: start it at the origin
+            pos[pending.pop(0)] = np.zeros(2)
+    for g in groups:
+        pos.setdefault(g, np.zeros(2))
+    for a, b, m in links:
+        gap = float(np.linalg.norm(pos[a] - pos[b]))
+        if a != b and abs(gap - m.distance) > 1e-9 * max(1.0, m.distance):
+            raise TrainError(
+                f"mesh {m.relation.name!r}: its centre distance is {m.distance:.6g} mm but the "
+                f"other meshes put its axes {gap:.6g} mm apart: the train does not close (give "
+                "module= per mesh, or gears whose centre distances agree)"
+            )
+    return pos
+
+
+def _triangle(p: np.ndarray, rp: float, q: np.ndarray, rq: float) -> np.ndarray:
+    """The point at distance rp from p and rq from q, to the left of p -> q (or on the line)."""
+    d = float(np.linalg.norm(q - p))
+    if d == 0.0:
+        return p + np.array([rp, 0.0])
+    x = (d * d + rp * rp - rq * rq) / (2 * d)
+    h = math.sqrt(max(rp * rp - x * x, 0.0))
+    e = (q - p) / d
+    return p + x * e + h * np.array([-e[1], e[0]])
+
+
+# --------------------------------------------------------------------------------- the loads
+
+
+def _mapping(name: str, value: Any, keys: Iterable[str], what: str) -> dict[str, Any]:
+    if value is None:
+        return {}
+    if not isinstance(value, Mapping):
+        raise TrainError(f"{name} = {value!r}; valid is a mapping {what}")
+    keys = set(keys)
+    for k in value:
+        if k not in keys:
+            raise TrainError(f"{name} names {k!r}; valid names are {', '.join(sorted(keys))}")
+    return dict(value)
+
+
+def _real(name: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TrainError(f"{name} = {value!r}; valid is a finite number")
+    v = float(value)
+    if not math.isfinite(v):
+        raise TrainError(f"{name} = {value!r}; valid is a finite number")
+    return v
+
+
+def _direction(m: _Mesh, pos: Mapping[str, np.ndarray], axes: _Axes, angle: float) -> np.ndarray:
+    """Unit vector from the external gear's axis towards the pitch point."""
+    p1, p2 = pos[axes.find(m.g1)], pos[axes.find(m.g2)]
+    v = (p1 - p2) if m.internal else (p2 - p1)
+    n = float(np.linalg.norm(v))
+    if n > 1e-9 * max(1.0, m.distance):
+        return v / n
+    th = math.radians(angle)
+    return np.array([math.cos(th), math.sin(th)])
+
+
+def _turn(v: np.ndarray, th: float) -> np.ndarray:
+    c, s = math.cos(th), math.sin(th)
+    return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+
+def loads(
+    train: Train,
+    input: str | Sequence[str],
+    output: str,
+    fixed: Iterable[str] = (),
+    torque: float = 1.0,
+    speed: float | Mapping[str, float] = 1.0,
+    mesh_efficiency: float | Mapping[str, float] | None = None,
+    friction: float | None = None,
+    module: float | None = None,
+    pressure_angle: float = 20.0,
+    angles: Mapping[str, float] | None = None,
+    axial: Mapping[str, float] | None = None,
+    bearings: Mapping[str, tuple[float, float]] | None = None,
+    centrifugal: Mapping[str, float] | None = None,
+) -> TrainLoads:
+    """The force of every mesh and the load on every member's bearings (module docstring).
+
+    Parameters
+    ----------
+    train, input, output, fixed, mesh_efficiency, friction
+        As for :func:`trains.power_flow`.
+    torque : float
+        Torque on the (first) input member, N m.
+    speed : float or mapping
+        Speed of the input(s) (any unit: the forces do not depend on it).
+    module : float or mapping, optional
+        Module (mm) of meshes given by tooth counts only (pitch diameters ``m z``), or a
+        mapping mesh name -> module (a stepped planet's two meshes close at different modules).
+    pressure_angle : float
+        Their pressure angle, degrees (default 20).
+    angles : mapping, optional
+        Mesh name -> direction (degrees) in which it places the member it reaches (default 0).
+    axial : mapping, optional
+        Mesh name -> axial position (mm) of its mid-plane, for ``bearings`` (default 0).
+    bearings : mapping, optional
+        Member -> ``(z_A, z_B)``: the axial positions (mm) of its two bearings; A locates
+        axially. Fills :attr:`MemberLoad.reactions` (:func:`gears.forces.bearing_reactions`).
+    centrifugal : mapping, optional
+        Planet member -> its centrifugal force, N (outwards from its carrier's axis; the pin
+        carries it).
+
+    Returns
+    -------
+    TrainLoads
+
+    Raises
+    ------
+    TrainError
+        What :func:`trains.power_flow` refuses, a kinematic mesh without ``module``, unknown
+        names in the mappings, bad numbers.
+
+    Examples
+    --------
+    Ozols section 11-2 (11.9): an idler between two gears, all centres on one line,
+    M_1 = 100 N m, r_1 = 50 mm, alpha = 20 deg: the idler's bearing carries 2 R cos alpha.
+
+    >>> t = Train()
+    >>> t.mesh("1", "2", teeth=(20, 30)); t.mesh("2", "3", teeth=(30, 40))
+    >>> ld = loads(t, "1", "3", torque=100, module=5)
+    >>> round(ld.members["2"].radial_load, 6)
+    4000.0
+    """
+    torque = _real("torque", torque)
+    pressure_angle = _real("pressure_angle", pressure_angle)
+    if not 0.0 < pressure_angle < 90.0:
+        raise TrainError(f"pressure_angle = {pressure_angle:g}; valid is 0 < pressure_angle < 90")
+    names = [r.name for r in train.relations]
+    if isinstance(module, Mapping):
+        modules = _mapping("module", module, names, "mesh name -> mm")
+    else:
+        modules = {} if module is None else dict.fromkeys(names, module)
+    for k, v in modules.items():
+        if not _real(f"module[{k!r}]", v) > 0:
+            raise TrainError(f"module = {v!r} for mesh {k!r}; valid is a number > 0 (mm)")
+    angles = {
+        k: _real(f"angles[{k!r}]", v)
+        for k, v in _mapping("angles", angles, names, "mesh name -> degrees").items()
+    }
+    axial = {
+        k: _real(f"axial[{k!r}]", v)
+        for k, v in _mapping("axial", axial, names, "mesh name -> mm").items()
+    }
+    bearings = _mapping("bearings", bearings, train.members, "member -> (z_A, z_B)")
+    flow = power_flow(train, input, output, fixed, mesh_efficiency, torque, speed, friction)
+    planets = _planets(train, flow)
+    centrifugal = {
+        k: _real(f"centrifugal[{k!r}]", v)
+        for k, v in _mapping("centrifugal", centrifugal, planets, "planet -> N").items()
+    }
+    geo = [g for r in train.relations if (g := _geometry(r, modules, pressure_angle)) is not None]
+    for r in train.relations:
+        if r.kind == "mesh" and r.carrier in planets:
+            raise TrainError(
+                f"mesh {r.name!r} rides on {r.carrier!r}, itself a planet of "
+                f"{planets[r.carrier][0]!r}: "
+                "loads does not place carriers on carriers (a biplanetary train); its torques "
+                "are in trains.power_flow"
+            )
+    axes = _axes(train, planets)
+    pos = _place(train, geo, axes, angles)
+    meshes = {}
+    on: dict[str, list[tuple[int, np.ndarray, np.ndarray]]] = {m: [] for m in train.members}
+    for m in geo:
+        meshes[m.relation.name] = _mesh_load(m, flow, planets, pos, axes, angles, axial, on)
+    for r in train.relations:
+        if r.name not in meshes:
+            meshes[r.name] = _link_load(r, flow, planets)
+    members = _members(
+        train, flow, planets, pos, axes, on, bearings, centrifugal, {m.relation.name for m in geo}
+    )
+    return TrainLoads(flow, meshes, members)
+
+
+def _frame(v: np.ndarray, e: np.ndarray) -> np.ndarray:
+    """A force ``v`` of a mesh's frame (x along ``e``) in the drawing's frame."""
+    return np.array([v[0] * e[0] - v[1] * e[1], v[0] * e[1] + v[1] * e[0], v[2]])
+
+
+def _mesh_load(
+    m: _Mesh, flow: PowerFlow, planets, pos, axes: _Axes, angles, axial, on: dict[str, list]
+) -> MeshLoad:
+    """The forces of one mesh of parallel axes on each copy; records them per member in
+    ``on[member]`` as ``(copy, force, point from the member's axis, pitch point)``."""
+    r = m.relation
+    rp = flow.relations[r.name]
+    copies = max(planets.get(x, (FRAME, 1))[1] for x in (m.g1, m.g2))
+    centre = pos[axes.find(r.carrier)] if r.carrier != FRAME else np.zeros(2)
+    e0 = _direction(m, pos, axes, angles.get(r.name, 0.0))
+    s_a = -m.distance if m.internal else m.distance  # gear 2's axis at (s_a, 0)
+    tau1 = 1000.0 * rp.torques.get(m.g1, 0.0) / copies  # N mm, the mesh's torques
+    tau2 = 1000.0 * rp.torques.get(m.g2, 0.0) / copies
+    # one force along the line of action: its tangential part from both torques, its line
+    # through x = tau1 / F_y (the pitch point without losses; shifted by the loss)
+    fy = (tau1 + tau2) / s_a if s_a else 0.0
+    try:
+        ideal = mesh_forces(-fy * m.d1 / 2000.0, m.d1, m.alpha, m.beta, m.alpha_n)
+    except GearError as exc:
+        raise TrainError(f"mesh {r.name!r}: {exc}") from None
+    v1 = np.asarray(ideal.vector, float)
+    x = tau1 / fy if abs(fy) > 1e-300 else m.d1 / 2
+    z = 0.0 if m.relation.name not in axial else axial[m.relation.name]
+    forces: dict[str, list] = {m.g1: [], m.g2: []}
+    points: dict[str, list] = {m.g1: [], m.g2: []}
+    angles_out = []
+    for k in range(copies):
+        th = 2 * math.pi * k / copies
+        e = _turn(e0, th)
+        o1 = centre + _turn(pos[axes.find(m.g1)] - centre, th)
+        point = np.array([*(o1 + x * e), z])
+        f = _frame(v1, e)
+        for member, v, rel in ((m.g1, f, x * e), (m.g2, -f, (x - s_a) * e)):
+            forces[member].append(v + 0.0)
+            points[member].append(point)
+            on[member].append((k, v + 0.0, np.array([*rel, z]), point))
+        angles_out.append(math.degrees(math.atan2(e[1], e[0])))
+    pick = (lambda t: t) if m.g1 == r.a else (lambda t: (t[1], t[0]))
+    mags = [(float(ideal[i]), float(ideal[i])) for i in range(4)]
+    return MeshLoad(
+        r.name,
+        (r.a, r.b),
+        "internal" if m.internal else ("helical" if m.beta else "spur"),
+        copies,
+        *(pick(x) for x in mags),
+        {k: np.array(v) for k, v in forces.items()},
+        {k: np.array(v) for k, v in points.items()},
+        tuple(angles_out),
+    )
+
+
+def _link_load(r: Relation, flow: PowerFlow, planets) -> MeshLoad:
+    """A relation with no force in the plane: a link, a coupling, or a bevel mesh (its forces
+    per copy from :func:`gears.forces.bevel_pair_forces`, in the pair's own frame)."""
+    zero = (0.0, 0.0)
+    if r.kind == "mesh" and isinstance(r.pair, BevelPair):
+        copies = max(planets.get(x, (FRAME, 1))[1] for x in (r.a, r.b))
+        t1 = -flow.relations[r.name].torques.get(r.a, 0.0) / copies
+        if t1 != 0.0:
+            f = bevel_pair_forces(r.pair, t1)
+            return MeshLoad(
+                r.name,
+                (r.a, r.b),
+                "bevel",
+                copies,
+                f.tangential,
+                f.radial,
+                f.axial,
+                f.normal,
+                {},
+                {},
+            )
+        return MeshLoad(r.name, (r.a, r.b), "bevel", copies, zero, zero, zero, zero, {}, {})
+    kind = "link" if r.kind == "mesh" else r.kind
+    return MeshLoad(r.name, (r.a, r.b), kind, 1, zero, zero, zero, zero, {}, {})
+
+
+def _members(
+    train: Train,
+    flow: PowerFlow,
+    planets,
+    pos,
+    axes: _Axes,
+    on,
+    bearings,
+    centrifugal,
+    geometric: set[str],
+) -> dict[str, MemberLoad]:
+    """Every member's resultant, bearing force and moment (module docstring)."""
+    # torques no force in the drawing carries: links, couplings, bevel meshes, and the carrier's
+    # share of a mesh on a moving carrier that holds no planet (a strain-wave generator)
+    forceless = [r for r in train.relations if r.name not in geometric]
+    pinless = {
+        r.name: r.carrier
+        for r in train.relations
+        if r.name in geometric and r.carrier != FRAME and r.a not in planets and r.b not in planets
+    }
+    out = {}
+    for name in train.members:
+        if name == FRAME:
+            continue
+        carrier, n = planets.get(name, (FRAME, 1))
+        recs = [x for x in on[name] if x[0] == 0] if name in planets else on[name]
+        forces = [f for _, f, _, _ in recs]
+        points = [p for _, _, p, _ in recs]
+        here = pos[axes.find(name)]
+        if name in planets and name in centrifugal:
+            out_dir = here - (pos[axes.find(carrier)])
+            norm = float(np.linalg.norm(out_dir))
+            unit = out_dir / norm if norm > 0 else np.array([1.0, 0.0])
+            forces.append(np.array([*(centrifugal[name] * unit), 0.0]))
+            points.append(np.array([0.0, 0.0, _mid(points)]))
+        for planet, (c, copies) in planets.items():
+            if c == name:
+                _pins(
+                    planet,
+                    copies,
+                    here,
+                    pos[axes.find(planet)],
+                    on[planet],
+                    centrifugal.get(planet, 0.0),
+                    forces,
+                    points,
+                )
+        f = np.sum(forces, axis=0) if forces else np.zeros(3)
+        moment = sum(float(np.cross(p, v)[2]) for p, v in zip(points, forces, strict=True))
+        other = (
+            flow.torques.get(name, 0.0)
+            + sum(flow.relations[r.name].torques.get(name, 0.0) for r in forceless)
+            + sum(flow.relations[k].torques.get(name, 0.0) for k, c in pinless.items() if c == name)
+        )
+        reactions = None
+        if name in bearings:
+            try:
+                reactions, _ = bearing_reactions(
+                    np.reshape(forces, (-1, 3)), np.reshape(points, (-1, 3)), bearings[name]
+                )
+            except GearError as exc:
+                raise TrainError(f"bearings[{name!r}]: {exc}") from None
+        out[name] = MemberLoad(
+            name,
+            other / n,
+            f + 0.0,
+            -f + 0.0,
+            moment / 1000.0 + 0.0,
+            np.array([*here, 0.0]),
+            n,
+            carrier,
+            reactions,
+        )
+    return out
+
+
+def _mid(points: list[np.ndarray]) -> float:
+    return float(np.mean([p[2] for p in points])) if points else 0.0
+
+
+def _pins(
+    planet: str,
+    copies: int,
+    centre: np.ndarray,
+    at: np.ndarray,
+    recs: list,
+    centrifugal: float,
+    forces: list,
+    points: list,
+) -> None:
+    """Append the pin force of every copy of ``planet`` (its mesh forces and centrifugal force)
+    to a carrier's ``forces`` at its ``points`` (from the carrier's axis)."""
+    for k in range(copies):
+        th = 2 * math.pi * k / copies
+        rel = _turn(at - centre, th)
+        mine = [(f, p) for j, f, p, _ in recs if j == k]
+        pin = np.sum([f for f, _ in mine], axis=0) if mine else np.zeros(3)
+        norm = float(np.linalg.norm(rel))
+        if centrifugal and norm > 0:
+            pin = pin + np.array([*(centrifugal * rel / norm), 0.0])
+        forces.append(pin)
+        points.append(np.array([*rel, _mid([p for _, p in mine])]))
