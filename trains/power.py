@@ -261,6 +261,24 @@ def power_flow(
     >>> round(power_flow(t, "H", "1", fixed=["3"], mesh_efficiency=eta).efficiency, 6)
     0.004976
     """
+    inputs, fixed, speeds, tq = _flow_request(train, input, output, fixed, input_speed,
+                                              input_torque)  # fmt: skip
+    given = {**speeds, **{f: 0 for f in fixed if f != FRAME}}
+    motion = train.solve(given)
+    w = {m: float(motion[m]) for m in train.members}
+    if not all(math.isfinite(x) for x in w.values()):
+        raise TrainError("speeds must be finite")
+    etas = _efficiencies(train, mesh_efficiency, friction)
+    balance = _Balance(train, inputs, output, fixed, w, etas, tq)
+    x, levers, drivers, iteration = balance.settle()
+    return balance.flow(x, levers, drivers, iteration)
+
+
+def _flow_request(
+    train: Train, input: Any, output: str, fixed: Any, input_speed: Any, input_torque: Any
+) -> tuple[list[str], list[str], dict[str, Any], float]:
+    """:func:`power_flow`'s members, input speeds and torque checked: ``(inputs, fixed,
+    speeds, input torque)``."""
     inputs = [input] if isinstance(input, str) else list(input)
     if not inputs:
         raise TrainError("give at least one input member")
@@ -287,52 +305,56 @@ def power_flow(
     tq = float(input_torque)
     if not math.isfinite(tq) or tq == 0:
         raise TrainError(f"input_torque must be finite and non-zero, got {input_torque!r}")
+    return inputs, fixed, speeds, tq
 
-    given = {**speeds, **{f: 0 for f in fixed if f != FRAME}}
-    motion = train.solve(given)
-    w = {m: float(motion[m]) for m in train.members}
-    if not all(math.isfinite(x) for x in w.values()):
-        raise TrainError("speeds must be finite")
-    etas = _efficiencies(train, mesh_efficiency, friction)
 
-    members = list(train.members)
-    row = {m: i for i, m in enumerate(members)}
-    rels = train.relations
-    nr = len(rels)
-    # unknown external torques: output, fixed members, frame, the inputs after the first
-    reacting = [output, *[f for f in fixed if f != FRAME], FRAME, *inputs[1:]]
-    ncol = nr + len(reacting)
-    rhs = np.zeros(len(members))
-    rhs[row[inputs[0]]] = -tq  # member balance: T_i + sum_j B_ji lambda_j = 0
+class _Balance:
+    """The torque balance of every member of a train at its speeds ``w``: one unknown per
+    relation (its force) and per reacting member (output, fixed members, frame, the inputs after
+    the first), each relation's loss charged at the end that drives it in relative motion."""
 
-    rel_u = []
-    for r in rels:
-        if r.kind == "couple":
-            rel_u.append((0.0, 0.0))
-        else:
-            rel_u.append((w[r.a] - w[r.carrier], w[r.b] - w[r.carrier]))
+    def __init__(self, train: Train, inputs: list[str], output: str, fixed: list[str],
+                 w: dict[str, float], etas: list[float], tq: float) -> None:  # fmt: skip
+        self.inputs, self.output, self.fixed = inputs, output, fixed
+        self.w, self.etas, self.tq = w, etas, tq
+        self.members = list(train.members)
+        self.row = {m: i for i, m in enumerate(self.members)}
+        self.rels = train.relations
+        self.nr = len(self.rels)
+        # unknown external torques: output, fixed members, frame, the inputs after the first
+        self.reacting = [output, *[f for f in fixed if f != FRAME], FRAME, *inputs[1:]]
+        self.ncol = self.nr + len(self.reacting)
+        self.rhs = np.zeros(len(self.members))
+        self.rhs[self.row[inputs[0]]] = -tq  # member balance: T_i + sum_j B_ji lambda_j = 0
+        self.rel_u = []
+        for r in self.rels:
+            if r.kind == "couple":
+                self.rel_u.append((0.0, 0.0))
+            else:
+                self.rel_u.append((w[r.a] - w[r.carrier], w[r.b] - w[r.carrier]))
 
-    def lever(j: int, driver: str | None) -> dict[str, float]:
-        r = rels[j]
+    def lever(self, j: int, driver: str | None) -> dict[str, float]:
+        r = self.rels[j]
         ka, kb = float(r.k_a), float(r.k_b)
         if driver == r.a:
-            kb *= etas[j]
+            kb *= self.etas[j]
         elif driver == r.b:
-            ka *= etas[j]
+            ka *= self.etas[j]
         if r.kind == "couple":
             return {r.a: ka, r.b: kb}
         out = {r.a: ka, r.b: kb}
         out[r.carrier] = out.get(r.carrier, 0.0) - (ka + kb)
         return out
 
-    def solve(drivers: list[str | None]) -> tuple[np.ndarray, list[dict[str, float]]]:
-        a = np.zeros((len(members), ncol))
-        levers = [lever(j, d) for j, d in enumerate(drivers)]
+    def solve(self, drivers: list[str | None]) -> tuple[np.ndarray, list[dict[str, float]]]:
+        a = np.zeros((len(self.members), self.ncol))
+        levers = [self.lever(j, d) for j, d in enumerate(drivers)]
         for j, lev in enumerate(levers):
             for m, k in lev.items():
-                a[row[m], j] += k
-        for i, m in enumerate(reacting):
-            a[row[m], nr + i] = 1.0
+                a[self.row[m], j] += k
+        for i, m in enumerate(self.reacting):
+            a[self.row[m], self.nr + i] = 1.0
+        rhs, tq = self.rhs, self.tq
         x, *_ = np.linalg.lstsq(a, rhs, rcond=None)
         resid = np.abs(a @ x - rhs).max() if len(rhs) else 0.0
         if not np.all(np.isfinite(x)) or resid > 1e-9 * max(1.0, abs(tq)) * max(
@@ -340,84 +362,97 @@ def power_flow(
         ):
             raise TrainError(
                 "the torques cannot balance: the train is not statically determined by the"
-                f" input {inputs}, output {output!r} and fixed members {fixed}"
+                f" input {self.inputs}, output {self.output!r} and fixed members {self.fixed}"
             )
         return x, levers
 
-    def drivers_of(x: np.ndarray, levers: list[dict[str, float]]) -> list[str | None]:
+    def drivers_of(self, x: np.ndarray, levers: list[dict[str, float]]) -> list[str | None]:
         out: list[str | None] = []
-        scale = abs(tq) * max(1.0, max(abs(v) for v in w.values()))
-        for j, r in enumerate(rels):
+        scale = abs(self.tq) * max(1.0, max(abs(v) for v in self.w.values()))
+        for j, r in enumerate(self.rels):
             if r.kind == "couple":
                 out.append(None)
                 continue
-            ua, ub = rel_u[j]
+            ua, ub = self.rel_u[j]
             pa = -x[j] * levers[j][r.a] * ua  # relative power into the relation at end a
             pb = -x[j] * levers[j][r.b] * ub
             tol = 1e-13 * scale
             out.append(r.a if pa > tol else r.b if pb > tol else None)
         return out
 
-    drivers: list[str | None] = [None] * nr
-    x, levers = solve(drivers)
-    seen = []
-    iteration = 1
-    for iteration in range(1, 4 * nr + 8):  # noqa: B007 - reported below
-        new = drivers_of(x, levers)
-        if new == drivers:
-            break
-        if new in seen:
-            raise TrainError(
-                f"the loss signs do not settle (relations {[r.name for r in rels]} alternate"
-                " drivers): the power flow is ambiguous at this operating point"
-            )
-        seen.append(drivers)
-        drivers = new
-        x, levers = solve(drivers)
-    else:  # pragma: no cover - bounded by the number of sign patterns tried
-        raise TrainError("the loss signs did not settle")
+    def settle(self) -> tuple[np.ndarray, list[dict[str, float]], list[str | None], int]:
+        """Solve, charge each loss at its relation's driving end, and solve again until the
+        drivers repeat: ``(x, levers, drivers, iterations)``."""
+        nr, rels = self.nr, self.rels
+        drivers: list[str | None] = [None] * nr
+        x, levers = self.solve(drivers)
+        seen = []
+        iteration = 1
+        for iteration in range(1, 4 * nr + 8):  # noqa: B007 - reported below
+            new = self.drivers_of(x, levers)
+            if new == drivers:
+                break
+            if new in seen:
+                raise TrainError(
+                    f"the loss signs do not settle (relations {[r.name for r in rels]} alternate"
+                    " drivers): the power flow is ambiguous at this operating point"
+                )
+            seen.append(drivers)
+            drivers = new
+            x, levers = self.solve(drivers)
+        else:  # pragma: no cover - bounded by the number of sign patterns tried
+            raise TrainError("the loss signs did not settle")
+        return x, levers, drivers, iteration
 
-    torques = {m: 0.0 for m in members}
-    torques[inputs[0]] = tq
-    tiny = 1e-13 * max(abs(tq), float(np.abs(x[nr:]).max(initial=0.0)))
-    for i, m in enumerate(reacting):
-        torques[m] = float(x[nr + i]) if abs(x[nr + i]) > tiny else 0.0  # round-off to 0
-    powers = {m: torques[m] * w[m] + 0.0 for m in members}  # no -0.0
-    p_in = sum(powers[m] for m in inputs)
-    if not p_in > 0:
-        raise TrainError(
-            f"the inputs {inputs} supply no power (input power {p_in:.6g}); reverse the input"
-            " torque or choose another input"
+    def flow(self, x: np.ndarray, levers: list[dict[str, float]], drivers: list[str | None],
+             iteration: int) -> PowerFlow:  # fmt: skip
+        """The :class:`PowerFlow` of the settled balance ``x``."""
+        inputs, output, w, etas, tq = self.inputs, self.output, self.w, self.etas, self.tq
+        members, rels, reacting, rel_u = self.members, self.rels, self.reacting, self.rel_u
+        nr = self.nr
+        torques = {m: 0.0 for m in members}
+        torques[inputs[0]] = tq
+        tiny = 1e-13 * max(abs(tq), float(np.abs(x[nr:]).max(initial=0.0)))
+        for i, m in enumerate(reacting):
+            torques[m] = float(x[nr + i]) if abs(x[nr + i]) > tiny else 0.0  # round-off to 0
+        powers = {m: torques[m] * w[m] + 0.0 for m in members}  # no -0.0
+        p_in = sum(powers[m] for m in inputs)
+        if not p_in > 0:
+            raise TrainError(
+                f"the inputs {inputs} supply no power (input power {p_in:.6g}); reverse the input"
+                " torque or choose another input"
+            )
+        p_out = -powers[output]
+        relations: dict[str, RelationPower] = {}
+        for j, r in enumerate(rels):
+            lev = levers[j]
+            absolute = sum(max(0.0, -x[j] * k * w[m]) for m, k in lev.items())
+            d = drivers[j]
+            if d is None:
+                rolling = loss = 0.0
+            else:
+                u = rel_u[j][0] if d == r.a else rel_u[j][1]
+                rolling = float(-x[j] * lev[d] * u)
+                loss = (1.0 - etas[j]) * rolling
+            on = {m: float(k * x[j]) + 0.0 for m, k in lev.items()}  # the relation's torque on m
+            relations[r.name] = RelationPower(
+                r.name, d, rolling, float(absolute), loss, etas[j], on
+            )
+        eff = p_out / p_in
+        biggest = max((r.power for r in relations.values()), default=0.0)
+        circulating = biggest - p_in if biggest > p_in * (1 + 1e-9) else 0.0
+        return PowerFlow(
+            speeds=Motion(w),
+            torques=torques,
+            powers=powers,
+            relations=relations,
+            input_power=p_in,
+            output_power=p_out,
+            efficiency=eff,
+            self_locking=eff <= 0,
+            circulating_power=circulating,
+            iterations=iteration,
         )
-    p_out = -powers[output]
-    relations: dict[str, RelationPower] = {}
-    for j, r in enumerate(rels):
-        lev = levers[j]
-        absolute = sum(max(0.0, -x[j] * k * w[m]) for m, k in lev.items())
-        d = drivers[j]
-        if d is None:
-            rolling = loss = 0.0
-        else:
-            u = rel_u[j][0] if d == r.a else rel_u[j][1]
-            rolling = float(-x[j] * lev[d] * u)
-            loss = (1.0 - etas[j]) * rolling
-        on = {m: float(k * x[j]) + 0.0 for m, k in lev.items()}  # the relation's torque on m
-        relations[r.name] = RelationPower(r.name, d, rolling, float(absolute), loss, etas[j], on)
-    eff = p_out / p_in
-    biggest = max((r.power for r in relations.values()), default=0.0)
-    circulating = biggest - p_in if biggest > p_in * (1 + 1e-9) else 0.0
-    return PowerFlow(
-        speeds=Motion(w),
-        torques=torques,
-        powers=powers,
-        relations=relations,
-        input_power=p_in,
-        output_power=p_out,
-        efficiency=eff,
-        self_locking=eff <= 0,
-        circulating_power=circulating,
-        iterations=iteration,
-    )
 
 
 # ------------------------------------------------------------------- closed forms (Ozols §14)

@@ -34,14 +34,11 @@ same product); with one, in the order found best.
 
 from __future__ import annotations
 
-import bisect
 import itertools
 import math
 import numbers
 import time
-import uuid
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -50,8 +47,15 @@ import numpy as np
 
 from gears.errors import GearError
 from gears.meshing import default_threads
-from gears.rating.sizing import ISO54, load_case
-from gears.search.cluster import dask_client, dask_results, in_kept_heap, progress_callback
+from gears.search.cluster import dask_client, progress_callback
+from trains.design.plan import _Plan, _plan
+from trains.design.ratios import (
+    _place_keys,
+    _ratio_errors,
+    _ratio_ids,
+    _ratio_tuples,
+)
+from trains.design.scheduling import _Runner
 from trains.design.sizing import size_stages
 from trains.design.synthesis import (
     BLOCK,
@@ -68,11 +72,7 @@ from trains.planetary.schemes import SCHEMES, canonical_scheme
 
 __all__ = ["Gearbox", "Gearboxes", "synthesize_gearbox"]
 
-_OBJECTIVES = ("ring", "teeth", "efficiency")
-_RATED_OBJECTIVES = ("volume", "mass", "ring", "teeth", "efficiency")
 _MIN_RATIO = {"simple": 2.0}
-#: combinations of stage ratios examined before the search is refused
-MAX_LOCAL_PAIRS = 5 * 10**7
 #: stages sized per task at most, and combinations crossed per combination task about
 SIZING_CHUNK = 4096
 COMBINATIONS = 200_000
@@ -241,169 +241,7 @@ def _validate(ratio, stages, tolerance, top, schemes) -> tuple:
     return target, int(stages), tol, tuple(dict.fromkeys(canonical_scheme(s) for s in names))
 
 
-def _positive_list(name: str, value, what: str) -> np.ndarray:
-    items = [value] if isinstance(value, numbers.Real) else value
-    try:
-        items = list(items)
-    except TypeError:
-        raise TrainError(f"{name} = {value!r}; valid is {what}") from None
-    if not items:
-        raise TrainError(f"{name} is empty; valid is {what}")
-    for v in items:
-        if (
-            isinstance(v, bool)
-            or not isinstance(v, numbers.Real)
-            or not (math.isfinite(float(v)) and 0 < float(v) <= 1e5)
-        ):
-            raise TrainError(f"{name} = {v!r}; valid is {what}")
-    return np.unique(np.asarray(items, float))
-
-
-@dataclass(frozen=True)
-class _Plan:
-    """What the search does: the objective, the module(s), and with a load its case."""
-
-    objective: str
-    modules: np.ndarray
-    load: Any = None
-    widths: np.ndarray | None = None
-    load_sharing: float | None = None
-
-    @property
-    def rated(self) -> bool:
-        return self.load is not None
-
-
-def _plan(objective, module, torque, speed, material, face_width, life, min_safety,
-          options) -> _Plan:  # fmt: skip
-    if torque is None:
-        extra = [k for k, v in (("speed", speed), ("face_width", face_width),
-                                ("min_safety", min_safety)) if v is not None]  # fmt: skip
-        extra += list(options)
-        if extra:
-            raise TrainError(f"{', '.join(extra)} size the stages for a load: give torque= "
-                             "(N m on the input) and speed= (rpm) too")  # fmt: skip
-        objective = "ring" if objective is None else objective
-        if objective not in _OBJECTIVES:
-            raise TrainError(f"objective = {objective!r}; valid are {list(_OBJECTIVES)} (with "
-                             f"a torque also 'volume' and 'mass')")  # fmt: skip
-        m = 1.0 if module is None else module
-        if (
-            isinstance(m, bool)
-            or not isinstance(m, numbers.Real)
-            or not (math.isfinite(float(m)) and float(m) > 0)
-        ):
-            raise TrainError(f"module = {module!r}; valid is a number > 0 (mm); a list of "
-                             "modules to choose from needs torque=")  # fmt: skip
-        return _Plan(objective, np.array([float(m)]))
-    objective = "volume" if objective is None else objective
-    if objective not in _RATED_OBJECTIVES:
-        raise TrainError(f"objective = {objective!r}; valid are {list(_RATED_OBJECTIVES)}")
-    if speed is None:
-        raise TrainError("torque= needs speed= (rpm of the input) to size the stages")
-    if face_width is None:
-        raise TrainError("torque= needs face_width=: a width in mm or a set of them; each "
-                         "stage takes the smallest that carries its load")  # fmt: skip
-    widths = _positive_list("face_width", face_width, "a width 0 < b <= 1e5 mm or a list")
-    what = "a module 0 < m <= 1e5 mm or a list (default ISO 54 series I)"
-    modules = _positive_list("module", ISO54 if module is None else module, what)
-    mats = material if isinstance(material, tuple | list) else (material,)
-    if len(mats) != 1 and len(set(map(str, mats))) != 1:
-        raise TrainError(f"material = {material!r}; a gearbox takes one material for every gear")
-    options = dict(options)
-    sharing = options.pop("load_sharing_factor", None)
-    for key in ("contacts", "idler"):
-        if key in options:
-            raise TrainError(f"{key} is set by each stage's planets; it is no option here")
-    if sharing is not None and (
-        isinstance(sharing, bool)
-        or not isinstance(sharing, numbers.Real)
-        or not (math.isfinite(float(sharing)) and 1 <= float(sharing) <= 10)
-    ):
-        raise TrainError(f"load_sharing_factor = {sharing!r}; valid is 1 <= K_gamma <= 10")
-    load = load_case(torque, speed, mats[0], life, min_safety, error=TrainError, **options)
-    return _Plan(objective, modules, load, widths, None if sharing is None else float(sharing))
-
-
 # --- the runner: local threads or Dask tasks ----------------------------------------------------
-
-
-class _Runner:
-    """Runs lists of tasks on the local threads or as Dask tasks, reporting progress (tasks
-    done of tasks planned so far) and counting the tasks."""
-
-    def __init__(self, client, threads: int, report):
-        self.client = client
-        self.threads = threads
-        self.report = report
-        self.tasks = 0
-        self.done = 0
-        self.planned = 0
-
-    @property
-    def parallel(self) -> int:
-        """Threads that run tasks at once (the workers' threads on a cluster)."""
-        if self.client is None:
-            return self.threads
-        try:
-            return max(1, sum(self.client.nthreads().values()))
-        except (OSError, TimeoutError, AttributeError):
-            return 1
-
-    def map(self, fn: Callable, args: list[tuple]) -> list:
-        self.tasks += len(args)
-        self.planned += len(args)
-        if not args:
-            return []
-        results: list = [None] * len(args)
-        if self.client is not None:
-            name = fn.__name__.strip("_").replace("_", "-")  # the dashboard's task name
-            futures = {self.client.submit(in_kept_heap, fn, *a, key=f"{name}-{uuid.uuid4().hex}"):
-                       i for i, a in enumerate(args)}  # fmt: skip
-            try:
-                for fut, value in dask_results(self.client, set(futures)):
-                    results[futures[fut]] = value
-                    fut.release()
-                    self._tick()
-            except GearError as exc:  # the cluster failed under the work
-                raise TrainError(str(exc)) from None
-            return results
-        if self.threads == 1 or len(args) == 1:
-            for i, a in enumerate(args):
-                results[i] = fn(*a)
-                self._tick()
-            return results
-        with ThreadPoolExecutor(min(self.threads, len(args)),
-                                thread_name_prefix="trains.design.gearbox") as pool:  # fmt: skip
-            futures = {pool.submit(fn, *a): i for i, a in enumerate(args)}
-            for fut in _completed(futures):
-                results[futures[fut]] = fut.result()
-                self._tick()
-        return results
-
-    def share(self, value: Any) -> Any:
-        """``value`` for the tasks of :meth:`map` to share: on a cluster scattered to every
-        worker once (a future the tasks receive resolved), locally the value itself."""
-        if self.client is None:
-            return value
-        try:
-            return self.client.scatter([value], broadcast=True, hash=False)[0]
-        except (TimeoutError, OSError) as exc:
-            raise TrainError(
-                f"the Dask cluster took no data: {exc}; check the cluster, or "
-                "run without client= (local threads)"
-            ) from None
-
-    def _tick(self) -> None:
-        self.done += 1
-        if self.report:
-            self.report(self.done, self.planned)
-
-
-def _completed(futures):
-    from concurrent.futures import as_completed
-
-    return as_completed(futures)
 
 
 # --- the search ----------------------------------------------------------------------------------
@@ -514,6 +352,27 @@ def synthesize_gearbox(
     """
     t0 = time.perf_counter()
     target, k, tol, names = _validate(ratio, stages, tolerance, top, schemes)
+    cr = _check_stages(names, n_planets, z_min, z_max, mesh_checks, min_contact_ratio, max_seconds)
+    plan = _plan(objective, module, torque, speed, material, face_width, life, min_safety,
+                 rating_options)  # fmt: skip
+    runner = _runner(threads, chunk_size, progress, client)
+    # 1. stage sets, in blocks of tooth-count sets; 2. the ratio tuples, the stages sized
+    pool, counts = _stage_pool(runner, names, target, k, tol, n_planets, z_min, z_max,
+                               mesh_checks, cr, chunk_size)  # fmt: skip
+    table, lists, key_tuples, errors, n_tuples, design = _stage_lists(
+        runner, pool, plan, names, target, k, tol, top)  # fmt: skip
+    # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
+    out, checked = _walk(runner, table, lists, key_tuples, errors, plan, top, full_checks, cr,
+                         names, target)  # fmt: skip
+    runner.finish()
+    sized = 0 if design is None else len(design["stage"])
+    return Gearboxes(out, counts, n_tuples, checked, time.perf_counter() - t0, runner.tasks, sized)
+
+
+def _check_stages(names, n_planets, z_min, z_max, mesh_checks, min_contact_ratio,
+                  max_seconds) -> float:  # fmt: skip
+    """Refuse bad stage-set options and a stage set over its time budget, before any work; the
+    minimum contact ratio as a float."""
     for name, v in (("z_min", z_min), ("z_max", z_max)):
         if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 1:
             raise TrainError(f"{name} = {v!r}; valid is an integer >= 1")
@@ -531,8 +390,11 @@ def synthesize_gearbox(
         raise TrainError(f"max_seconds = {max_seconds!r}; valid is a number > 0")
     for s in names:
         _check_size(s, z_min, z_max, 1, budget)
-    plan = _plan(objective, module, torque, speed, material, face_width, life, min_safety,
-                 rating_options)  # fmt: skip
+    return cr
+
+
+def _runner(threads, chunk_size, progress, client) -> _Runner:
+    """The runner of the search's tasks (threads, chunk size, progress and client checked)."""
     if threads is None:
         threads = default_threads()
     elif isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
@@ -543,9 +405,13 @@ def synthesize_gearbox(
         raise TrainError(f"chunk_size = {chunk_size!r}; valid is an integer >= 1")
     report = _as_train_error(progress_callback, progress, "gearbox search", "task")
     client = _as_train_error(dask_client, client)
-    runner = _Runner(client, threads, report)
+    return _Runner(client, threads, report)
 
-    # 1. stage sets, in blocks of tooth-count sets
+
+def _stage_pool(runner, names, target, k, tol, n_planets, z_min, z_max, mesh_checks, cr,
+                chunk_size) -> tuple[dict[str, np.ndarray], dict[str, int]]:  # fmt: skip
+    """Step 1: every stage of every scheme whose ratio may take part, from blocks of tooth-count
+    sets (tasks), merged in a fixed order (:func:`_merge_blocks`); the stages per scheme."""
     lowest = min(_MIN_RATIO.get(s, 1.0) for s in names)
     hi = float(target) * (1 + tol) / lowest ** (k - 1)
     args = []
@@ -555,9 +421,13 @@ def synthesize_gearbox(
         args += [(code, s, hi, n_planets, z_min, z_max, a, min(a + size, total), mesh_checks,
                   cr) for a in range(0, total, size)]  # fmt: skip
     pool = _merge_blocks(runner.map(_stage_block, args), names)
-    counts = {s: int(np.count_nonzero(pool["scheme"] == i)) for i, s in enumerate(names)}
+    return pool, {s: int(np.count_nonzero(pool["scheme"] == i)) for i, s in enumerate(names)}
 
-    # 2. ratios and the tuples whose product meets the target
+
+def _stage_lists(runner, pool, plan: _Plan, names, target, k, tol, top) -> tuple:
+    """Step 2: the ratio tuples that meet the target, each (ratio, place) with its best stages
+    (sized for their load when the plan is rated): ``(table, lists, key_tuples, errors,
+    n_tuples, design)``."""
     ratios, rid = _ratio_ids(pool)
     tuples = _ratio_tuples(ratios, target, k, tol)
     if plan.rated:  # a stage's load depends on its place: every order of a tuple
@@ -582,15 +452,7 @@ def synthesize_gearbox(
     lists = _best_per_key(table, row_key, feasible, len(keys), plan, top)
     errors = _ratio_errors(key_tuples, tuples, ratios, target, tol)
     key_tuples = [kt for kt in key_tuples if all(len(lists[i]) for i in kt)]
-
-    # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
-    out, checked = _walk(runner, table, lists, key_tuples, errors, plan, top, full_checks, cr,
-                         names, target)  # fmt: skip
-    if report:
-        report(runner.planned, runner.planned)
-    sized = 0 if design is None else len(design["stage"])
-    return Gearboxes(out, counts, len(tuples), checked, time.perf_counter() - t0, runner.tasks,
-                     sized)  # fmt: skip
+    return table, lists, key_tuples, errors, len(tuples), design
 
 
 def _stage_block(code, scheme, hi, n_planets, z_min, z_max, first, last, mesh_checks, cr):
@@ -617,178 +479,6 @@ def _merge_blocks(parts: list[dict], names: Sequence[str]) -> dict[str, np.ndarr
         np.empty(0, bool)  # fmt: skip
     pool["total"] = pool["z1"] + pool["z2"] + pool["z3"] + np.where(two, pool["z2p"], 0)
     return pool
-
-
-def _ratio_ids(pool) -> tuple[_Ratios, np.ndarray]:
-    """The distinct stage ratios (ascending, exact) and each stage's index into them.
-
-    Distinct reduced fractions with denominators below 2^26 differ by more than a float64 can
-    confuse, so the float order is the exact order."""
-    if not len(pool["num"]):
-        return _Ratios(np.empty(0, np.int64), np.empty(0, np.int64)), np.empty(0, np.int64)
-    num, den = pool["num"], pool["den"]
-    width = int(den.max()) + 1
-    if int(num.max()) < 2**62 // width:  # one int64 key per ratio: a 1-d unique, 20x faster
-        codes, inverse = np.unique(num * width + den, return_inverse=True)
-        uniq = np.stack([codes // width, codes % width], axis=1)
-    else:
-        uniq, inverse = np.unique(np.stack([num, den], axis=1), axis=0, return_inverse=True)
-    order = np.argsort(uniq[:, 0] / uniq[:, 1], kind="stable")
-    rank = np.empty(len(order), np.int64)
-    rank[order] = np.arange(len(order))
-    return _Ratios(uniq[order, 0], uniq[order, 1]), rank[np.ravel(inverse)]
-
-
-class _Ratios:
-    """Distinct reduced ratios ``num/den`` in ascending order (int64 arrays); ``ratios[i]``
-    is the exact Fraction (made only for the ratios asked for)."""
-
-    def __init__(self, num: np.ndarray, den: np.ndarray):
-        self.num, self.den = num, den
-
-    def __len__(self) -> int:
-        return len(self.num)
-
-    def __getitem__(self, i: int) -> Fraction:
-        return Fraction(int(self.num[i]), int(self.den[i]))
-
-    def __iter__(self):
-        return (self[i] for i in range(len(self)))
-
-
-def _ratio_tuples(ratios: _Ratios, target: Fraction, k: int, tol: float) -> list[tuple]:
-    """Non-decreasing tuples of indices into ``ratios`` (ascending) whose product meets the
-    target: exactly (the reduced fraction looked up in integers, all first ratios at once) or
-    within a tolerance (a float window, then Fractions decide)."""
-    n = len(ratios)
-    if k > 1 and k * n ** (k - 1) > MAX_LOCAL_PAIRS:
-        raise TrainError(
-            f"{n} stage ratios give about {n ** (k - 1):,} combinations for {k} stages, over "
-            f"the limit of {MAX_LOCAL_PAIRS:,}; lower z_max or use fewer schemes"
-        )
-    if tol == 0 and k > 1 and n:
-        found = _exact_tuples(ratios, target, k)
-        if found is not None:
-            return found
-    ratios = list(ratios)
-    find = _Finder(ratios, tol)
-    if k == 1:
-        return [(i,) for i in find(target, 0)]
-    out = []
-    limit = target * (1 + Fraction(tol))
-    for i, r1 in enumerate(ratios):
-        if r1**k > limit:
-            break
-        if k == 2:
-            out += [(i, j) for j in find(target / r1, i)]
-            continue
-        for j in range(i, n):
-            r2 = ratios[j]
-            if r1 * r2 * r2 > limit:
-                break
-            out += [(i, j, m) for m in find(target / (r1 * r2), j)]
-    return out
-
-
-def _exact_tuples(ratios: _Ratios, target: Fraction, k: int) -> list[tuple] | None:
-    """:func:`_ratio_tuples` for an exact target in int64 arithmetic: for each first ratio
-    (and second, k = 3) the needed last ratio reduced by its gcd and looked up among the
-    sorted ``num * K + den`` keys. None when the numbers could overflow (then Fractions)."""
-    num, den = ratios.num, ratios.den
-    p, q = target.numerator, target.denominator
-    top = int(max(num.max(), den.max()))
-    if max(p, q) * top ** (2 * (k - 1)) >= 2**62 or top * (top + 1) >= 2**62:
-        return None
-    width = top + 1
-    keys = num * width + den  # ascending ratios are not ascending keys: sort them
-    order = np.argsort(keys)
-    sorted_keys = keys[order]
-
-    def lookup(need_num, need_den):
-        g = np.gcd(need_num, need_den)
-        a, b = need_num // g, need_den // g
-        inside = (a <= top) & (b <= top)
-        key = np.where(inside, a * width + b, -1)
-        pos = np.minimum(np.searchsorted(sorted_keys, key), len(keys) - 1)
-        hit = inside & (sorted_keys[pos] == key)
-        return np.where(hit, order[pos], -1)
-
-    out = []
-    idx = np.arange(len(num))
-    if k == 2:
-        j = lookup(p * den, q * num)
-        for i in np.flatnonzero(j >= idx):
-            out.append((int(i), int(j[i])))
-        return out
-    limit = float(target)
-    for i in range(len(num)):
-        r1 = num[i] / den[i]
-        if r1**3 > limit * (1 + 1e-12):
-            break
-        js = idx[i:]
-        js = js[r1 * (num[js] / den[js]) ** 2 <= limit * (1 + 1e-12)]
-        if not js.size:
-            continue
-        m = lookup(p * den[i] * den[js], q * num[i] * num[js])
-        for j, last in zip(js[m >= js].tolist(), m[m >= js].tolist(), strict=True):
-            out.append((i, j, last))
-    return out
-
-
-class _Finder:
-    """Indices of ``ratios`` (ascending) equal to a needed ratio (tol = 0: a dictionary
-    look-up) or within the relative tolerance, from index ``low`` on."""
-
-    def __init__(self, ratios: list[Fraction], tol: float):
-        self.ratios, self.tol = ratios, tol
-        self.index = {r: i for i, r in enumerate(ratios)}
-        self.floats = [float(r) for r in ratios]
-
-    def __call__(self, need: Fraction, low: int) -> list[int]:
-        if self.tol == 0:
-            j = self.index.get(need)
-            return [j] if j is not None and j >= low else []
-        f, tol = float(need), self.tol
-        a = bisect.bisect_left(self.floats, f * (1 - tol) * (1 - 1e-12))
-        b = bisect.bisect_right(self.floats, f * (1 + tol) * (1 + 1e-12))
-        return [j for j in range(max(a, low), b) if abs(self.ratios[j] / need - 1) <= tol]
-
-
-def _place_keys(tuples: list[tuple], ratios: _Ratios) -> tuple[list, list[tuple]]:
-    """The sizing keys of ratio tuples: each place's ``(ratio index, product of the ratios
-    before it)`` (the stage there carries the input torque times that product, a float), the
-    distinct keys in ascending order, and each tuple as indices into them. The products are
-    exact (reduced integers) so that equal loads share a key."""
-    num, den = ratios.num.tolist(), ratios.den.tolist()
-    value = {}
-    for pre in {t[:j] for t in tuples for j in range(len(t))}:
-        p = q = 1
-        for r in pre:
-            p, q = p * num[r], q * den[r]
-        g = math.gcd(p, q)
-        value[pre] = (p // g, q // g)
-    # ascending products (the float first; (p, q) orders products a float cannot tell apart)
-    ordered = sorted(value, key=lambda pre: (value[pre][0] / value[pre][1], value[pre]))
-    products: list[tuple[int, int]] = []
-    ident = {}
-    for pre in ordered:
-        if not products or products[-1] != value[pre]:
-            products.append(value[pre])
-        ident[pre] = len(products) - 1
-    places = [tuple((r, ident[t[:j]]) for j, r in enumerate(t)) for t in tuples]
-    distinct = sorted({key for pl in places for key in pl})
-    index = {key: i for i, key in enumerate(distinct)}
-    keys = [(r, products[q][0] / products[q][1]) for r, q in distinct]
-    return keys, [tuple(index[key] for key in pl) for pl in places]
-
-
-def _ratio_errors(key_tuples, tuples, ratios: _Ratios, target: Fraction, tol: float) -> dict:
-    """Each tuple's relative ratio error |prod - target| / target: 0 for an exact search (its
-    tuples meet the target exactly), else from the exact products."""
-    if tol == 0:
-        return dict.fromkeys(key_tuples, 0.0)
-    return {kt: float(abs(math.prod((ratios[r] for r in t), start=Fraction(1)) - target)
-                      / target) for kt, t in zip(key_tuples, tuples, strict=True)}  # fmt: skip
 
 
 def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:

@@ -373,7 +373,22 @@ def synthesize(
     """
     scheme = canonical_scheme(scheme)
     target = _as_ratio(ratio)
-    ks = _counts(n_planets)
+    search, m, c = _planned_search(scheme, target, _counts(n_planets), tolerance, z_min, z_max,
+                                   limit, min_internal_difference, clearance, module, fixed, input,
+                                   output, allow_shift, mesh_checks, min_contact_ratio,
+                                   max_seconds)  # fmt: skip
+    arrays = search.run(progress)
+    out, removed = _ranked(search, arrays, scheme, m, c, z_min, mesh_checks, allow_shift, limit)
+    request = f"one {scheme} stage with z {z_min} ... {z_max}"
+    return Candidates(out, search.examined, removed, tuple(search.reach), request)
+
+
+def _planned_search(scheme, target, ks, tolerance, z_min, z_max, limit, min_internal_difference,
+                    clearance, module, fixed, input, output, allow_shift, mesh_checks,
+                    min_contact_ratio, max_seconds) -> tuple[_Search, float, float]:  # fmt: skip
+    """:func:`synthesize`'s options checked (each refused with its value and the valid range,
+    the ratio against what the scheme can reach, the work against ``max_seconds``) before any
+    work; the search they ask for, the module and the clearance."""
     for name, v in (("z_min", z_min), ("z_max", z_max), ("limit", limit),
                     ("min_internal_difference", min_internal_difference)):  # fmt: skip
         if isinstance(v, bool) or not isinstance(v, numbers.Integral):
@@ -422,7 +437,13 @@ def synthesize(
     search = _Search(scheme, target, tol, ks, z_min, z_max, c, min_internal_difference,
                      min_contact_ratio, rack.addendum, rack.pressure_angle, fixed, input,
                      output, allow_shift, mesh_checks != "textbook")  # fmt: skip
-    arrays = search.run(progress)
+    return search, m, c
+
+
+def _ranked(search, arrays, scheme, m, c, z_min, mesh_checks, allow_shift,
+            limit) -> tuple[list[Candidate], dict]:  # fmt: skip
+    """The best ``limit`` candidates of the sets that passed, ranked; a shifted stage or, with
+    full mesh checks, any stage that fails its own check is dropped (and counted as removed)."""
     removed = search.removed
     order = np.lexsort(
         (arrays["z3"] * 0 + arrays["z2p"], arrays["z2"], arrays["z1"], -arrays["k"],
@@ -460,8 +481,7 @@ def synthesize(
         removed["shifted stage"] = dropped_shift
     if mesh_checks == "full":
         removed["full checks"] = dropped_full
-    request = f"one {scheme} stage with z {z_min} ... {z_max}"
-    return Candidates(out, search.examined, removed, tuple(search.reach), request)
+    return out, removed
 
 
 def set_count(scheme: str, z_min: int, z_max: int) -> int:
