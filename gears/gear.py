@@ -32,7 +32,8 @@ from gears.budget import check_budget
 from gears.checks import gear_margins, undercut_form_diameter
 from gears.cutting.cutter import ShaperCutter, ShaperTool
 from gears.cutting.outline import METHODS, gear_outline, outline_vertices
-from gears.cutting.profile import ShaperProfile, default_rim
+from gears.cutting.profile import ShaperProfile
+from gears.cutting.sampling import default_rim
 from gears.errors import GearError
 from gears.figures.drawing import gear_svg
 from gears.geometry import (

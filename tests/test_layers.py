@@ -40,6 +40,7 @@ LAYERS = {
             "rating.pitting",
             "rating.bending",
             "rating.life",
+            "cutting.sampling",
             "search.tables",
             "forces",
             "contact.compliance",

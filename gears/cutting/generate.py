@@ -36,9 +36,8 @@ import shapely
 from gears.arguments import check_angle, check_callback, check_point, check_tolerance
 from gears.budget import BUDGETS, check_budget
 from gears.cutting.measure import thickness_on
-from gears.cutting.profile import (
-    ShaperProfile,
-    ToothProfile,
+from gears.cutting.profile import ShaperProfile, ToothProfile
+from gears.cutting.sampling import (
     _refuse_protuberance,
     arc_segments,
     assemble,

@@ -11,8 +11,9 @@ import shapely
 from gears.arguments import check_angle, check_callback, check_choice, check_point
 from gears.cutting.cutter import ShaperCutter
 from gears.cutting.generate import rack_outline, shaper_outline
-from gears.cutting.profile import check_blank, outline
+from gears.cutting.profile import outline
 from gears.cutting.profile import outline_vertices as analytic_vertices
+from gears.cutting.sampling import check_blank
 from gears.errors import GearError
 
 __all__ = ["METHODS", "gear_outline", "outline_vertices", "pair_outlines", "pair_placement"]

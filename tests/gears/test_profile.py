@@ -93,7 +93,7 @@ def _deviations(g, tol):
     return dev, v_dev, len(rho)
 
 
-# the one-sided sampling (gears.cutting.profile.one_sided) moves a vertex next to a concave chord
+# the one-sided sampling (gears.cutting.sampling.one_sided) moves a vertex next to a concave chord
 # into
 # the material by 1.25 times that chord's sag, and chords sag about half the tolerance at most;
 # v_dev measures the involute vertices by angle x radius, which overstates the normal distance
