@@ -36,11 +36,11 @@ LAYERS = {
         [
             "geometry",
             "meshing",
+            "cutting.sampling",
             "rating.load_factors",
             "rating.pitting",
             "rating.bending",
             "rating.life",
-            "cutting.sampling",
             "search.tables",
             "forces",
             "contact.compliance",
