@@ -59,6 +59,7 @@ __all__ = [
     "bearing_reactions",
     "bevel_mesh_forces",
     "bevel_pair_forces",
+    "centrifugal_force",
     "friction_mesh_force",
     "mesh_forces",
     "pair_forces",
@@ -333,6 +334,21 @@ def _leaning(p, aw, phi, ay, approach) -> FrictionForce:
     approach = np.broadcast_to(approach, np.broadcast_shapes(np.shape(approach), q.shape))
     return FrictionForce(q, q * np.cos(phi), q * np.sin(phi), q * np.cos(direction),
                          q * np.sin(direction), approach)  # fmt: skip
+
+
+def centrifugal_force(mass: ArrayLike, speed: ArrayLike, radius: ArrayLike) -> np.ndarray:
+    """``m omega^2 rho``: the centrifugal force (N) of a mass (kg) whose centre turns at
+    ``speed`` (rpm) on a circle of ``radius`` (mm) about the carrier's axis (Ozols section 11-2:
+    ``J_2 = AO omega_H^2 m_2``).
+
+    >>> round(float(centrifugal_force(1.0, 60.0 / (2 * np.pi), 1000.0)), 12)   # 1 kg, 1 rad/s, 1 m
+    1.0
+    """
+    m = _array("mass", mass, 0.0, low_open=False)
+    n = _array("speed", speed)
+    r = _array("radius", radius, 0.0, low_open=False)
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite(m * (n * np.pi / 30.0) ** 2 * r / 1000.0, "the centrifugal forces")
 
 
 def rotate_forces(vectors: ArrayLike, angle: ArrayLike) -> np.ndarray:

@@ -45,7 +45,8 @@ from gears.display import html_table
 from gears.forces import bearing_reactions, bevel_pair_forces, mesh_forces
 from trains.errors import TrainError
 from trains.power import PowerFlow, power_flow
-from trains.willis import FRAME, Relation, Train
+from trains.relations import FRAME, Relation
+from trains.willis import Train
 
 __all__ = ["MemberLoad", "MeshLoad", "TrainLoads", "loads"]
 
@@ -135,6 +136,7 @@ class TrainLoads:
     flow: PowerFlow
     meshes: dict[str, MeshLoad]
     members: dict[str, MemberLoad]
+    notes: dict[str, float] = field(default_factory=dict)
 
     def rows(self) -> tuple[list[tuple], list[tuple]]:
         """Text rows of the two tables: meshes, then members."""
@@ -415,6 +417,8 @@ def loads(
     axial: Mapping[str, float] | None = None,
     bearings: Mapping[str, tuple[float, float]] | None = None,
     centrifugal: Mapping[str, float] | None = None,
+    planet_angles: Mapping[str, Sequence[float]] | None = None,
+    load_sharing: Mapping[str, float] | None = None,
 ) -> TrainLoads:
     """The force of every mesh and the load on every member's bearings (module docstring).
 
@@ -441,6 +445,14 @@ def loads(
     centrifugal : mapping, optional
         Planet member -> its centrifugal force, N (outwards from its carrier's axis; the pin
         carries it).
+    planet_angles : mapping, optional
+        Planet member -> the angle of each copy about its carrier's axis, degrees (unequal
+        spacing; default ``360 k / n``). Only the differences count: copy 0 lies where the
+        meshes place it.
+    load_sharing : mapping, optional
+        Planet member -> the load-sharing factor K_gamma (1 <= K_gamma <= n): copy 0 carries
+        ``K_gamma / n`` of its meshes' torque and the others share the rest equally (ISO
+        6336-1 K_gamma; the unequal shares load the sun's and the carrier's bearings).
 
     Returns
     -------
@@ -490,6 +502,7 @@ def loads(
         k: _real(f"centrifugal[{k!r}]", v)
         for k, v in _mapping("centrifugal", centrifugal, planets, "planet -> N").items()
     }
+    spread = _spread(planets, planet_angles, load_sharing)
     geo = [g for r in train.relations if (g := _geometry(r, modules, pressure_angle)) is not None]
     for r in train.relations:
         if r.kind == "mesh" and r.carrier in planets:
@@ -504,12 +517,20 @@ def loads(
     meshes = {}
     on: dict[str, list[tuple[int, np.ndarray, np.ndarray]]] = {m: [] for m in train.members}
     for m in geo:
-        meshes[m.relation.name] = _mesh_load(m, flow, planets, pos, axes, angles, axial, on)
+        meshes[m.relation.name] = _mesh_load(m, flow, spread, pos, axes, angles, axial, on)
     for r in train.relations:
         if r.name not in meshes:
-            meshes[r.name] = _link_load(r, flow, planets)
+            meshes[r.name] = _link_load(r, flow, spread)
     members = _members(
-        train, flow, planets, pos, axes, on, bearings, centrifugal, {m.relation.name for m in geo}
+        train,
+        flow,
+        (planets, spread),
+        pos,
+        axes,
+        on,
+        bearings,
+        centrifugal,
+        {m.relation.name for m in geo},
     )
     return TrainLoads(flow, meshes, members)
 
@@ -520,49 +541,47 @@ def _frame(v: np.ndarray, e: np.ndarray) -> np.ndarray:
 
 
 def _mesh_load(
-    m: _Mesh, flow: PowerFlow, planets, pos, axes: _Axes, angles, axial, on: dict[str, list]
+    m: _Mesh, flow: PowerFlow, spread, pos, axes: _Axes, angles, axial, on: dict[str, list]
 ) -> MeshLoad:
     """The forces of one mesh of parallel axes on each copy; records them per member in
     ``on[member]`` as ``(copy, force, point from the member's axis, pitch point)``."""
     r = m.relation
     rp = flow.relations[r.name]
-    copies = max(planets.get(x, (FRAME, 1))[1] for x in (m.g1, m.g2))
+    turns, shares = _copies(spread, m.g1, m.g2)
     centre = pos[axes.find(r.carrier)] if r.carrier != FRAME else np.zeros(2)
     e0 = _direction(m, pos, axes, angles.get(r.name, 0.0))
     s_a = -m.distance if m.internal else m.distance  # gear 2's axis at (s_a, 0)
-    tau1 = 1000.0 * rp.torques.get(m.g1, 0.0) / copies  # N mm, the mesh's torques
-    tau2 = 1000.0 * rp.torques.get(m.g2, 0.0) / copies
+    tau1 = 1000.0 * rp.torques.get(m.g1, 0.0)  # N mm, the mesh's torques (all copies)
+    tau2 = 1000.0 * rp.torques.get(m.g2, 0.0)
     # one force along the line of action: its tangential part from both torques, its line
     # through x = tau1 / F_y (the pitch point without losses; shifted by the loss)
     fy = (tau1 + tau2) / s_a if s_a else 0.0
     try:
-        ideal = mesh_forces(-fy * m.d1 / 2000.0, m.d1, m.alpha, m.beta, m.alpha_n)
+        whole = mesh_forces(-fy * m.d1 / 2000.0, m.d1, m.alpha, m.beta, m.alpha_n)
     except GearError as exc:
         raise TrainError(f"mesh {r.name!r}: {exc}") from None
-    v1 = np.asarray(ideal.vector, float)
     x = tau1 / fy if abs(fy) > 1e-300 else m.d1 / 2
     z = 0.0 if m.relation.name not in axial else axial[m.relation.name]
     forces: dict[str, list] = {m.g1: [], m.g2: []}
     points: dict[str, list] = {m.g1: [], m.g2: []}
     angles_out = []
-    for k in range(copies):
-        th = 2 * math.pi * k / copies
+    for k, (th, share) in enumerate(zip(turns, shares, strict=True)):
         e = _turn(e0, th)
         o1 = centre + _turn(pos[axes.find(m.g1)] - centre, th)
         point = np.array([*(o1 + x * e), z])
-        f = _frame(v1, e)
+        f = _frame(np.asarray(whole.vector, float) * share, e)
         for member, v, rel in ((m.g1, f, x * e), (m.g2, -f, (x - s_a) * e)):
             forces[member].append(v + 0.0)
             points[member].append(point)
             on[member].append((k, v + 0.0, np.array([*rel, z]), point))
         angles_out.append(math.degrees(math.atan2(e[1], e[0])))
     pick = (lambda t: t) if m.g1 == r.a else (lambda t: (t[1], t[0]))
-    mags = [(float(ideal[i]), float(ideal[i])) for i in range(4)]
+    mags = [(float(whole[i]) * shares[0],) * 2 for i in range(4)]  # copy 0: the most loaded
     return MeshLoad(
         r.name,
         (r.a, r.b),
         "internal" if m.internal else ("helical" if m.beta else "spur"),
-        copies,
+        len(turns),
         *(pick(x) for x in mags),
         {k: np.array(v) for k, v in forces.items()},
         {k: np.array(v) for k, v in points.items()},
@@ -570,13 +589,46 @@ def _mesh_load(
     )
 
 
-def _link_load(r: Relation, flow: PowerFlow, planets) -> MeshLoad:
+def _spread(planets, planet_angles, load_sharing) -> dict[str, tuple[list[float], list[float]]]:
+    """Planet -> (turn of each copy about its carrier's axis, rad; share of the torque)."""
+    angles = _mapping("planet_angles", planet_angles, planets, "planet -> degrees per copy")
+    sharing = _mapping("load_sharing", load_sharing, planets, "planet -> K_gamma")
+    out = {}
+    for p, (_, n) in planets.items():
+        turns = [2 * math.pi * k / n for k in range(n)]
+        if p in angles:
+            a = angles[p]
+            if isinstance(a, str) or not hasattr(a, "__len__") or len(a) != n:
+                raise TrainError(f"planet_angles[{p!r}] = {a!r}; valid is {n} angles (degrees)")
+            deg = [_real(f"planet_angles[{p!r}]", v) for v in a]
+            turns = [math.radians(v - deg[0]) for v in deg]
+        shares = [1.0 / n] * n
+        if p in sharing:
+            k = _real(f"load_sharing[{p!r}]", sharing[p])
+            if not 1.0 <= k <= n:
+                raise TrainError(f"load_sharing[{p!r}] = {k:g}; valid is 1 <= K_gamma <= {n}")
+            if n > 1:
+                shares = [k / n] + [(n - k) / (n * (n - 1))] * (n - 1)
+        out[p] = (turns, shares)
+    return out
+
+
+def _copies(spread, *members: str) -> tuple[list[float], list[float]]:
+    """The copies of a mesh or link: those of its planet member (one copy if none)."""
+    for m in members:
+        if m in spread:
+            return spread[m]
+    return [0.0], [1.0]
+
+
+def _link_load(r: Relation, flow: PowerFlow, spread) -> MeshLoad:
     """A relation with no force in the plane: a link, a coupling, or a bevel mesh (its forces
     per copy from :func:`gears.forces.bevel_pair_forces`, in the pair's own frame)."""
     zero = (0.0, 0.0)
     if r.kind == "mesh" and isinstance(r.pair, BevelPair):
-        copies = max(planets.get(x, (FRAME, 1))[1] for x in (r.a, r.b))
-        t1 = -flow.relations[r.name].torques.get(r.a, 0.0) / copies
+        turns, shares = _copies(spread, r.a, r.b)
+        copies = len(turns)
+        t1 = -flow.relations[r.name].torques.get(r.a, 0.0) * shares[0]
         if t1 != 0.0:
             f = bevel_pair_forces(r.pair, t1)
             return MeshLoad(
@@ -608,6 +660,7 @@ def _members(
     geometric: set[str],
 ) -> dict[str, MemberLoad]:
     """Every member's resultant, bearing force and moment (module docstring)."""
+    planets, spread = planets
     # torques no force in the drawing carries: links, couplings, bevel meshes, and the carrier's
     # share of a mesh on a moving carrier that holds no planet (a strain-wave generator)
     forceless = [r for r in train.relations if r.name not in geometric]
@@ -621,6 +674,7 @@ def _members(
         if name == FRAME:
             continue
         carrier, n = planets.get(name, (FRAME, 1))
+        share = spread[name][1][0] if name in spread else 1.0  # copy 0's share
         recs = [x for x in on[name] if x[0] == 0] if name in planets else on[name]
         forces = [f for _, f, _, _ in recs]
         points = [p for _, _, p, _ in recs]
@@ -631,11 +685,11 @@ def _members(
             unit = out_dir / norm if norm > 0 else np.array([1.0, 0.0])
             forces.append(np.array([*(centrifugal[name] * unit), 0.0]))
             points.append(np.array([0.0, 0.0, _mid(points)]))
-        for planet, (c, copies) in planets.items():
+        for planet, (c, _) in planets.items():
             if c == name:
                 _pins(
                     planet,
-                    copies,
+                    spread[planet][0],
                     here,
                     pos[axes.find(planet)],
                     on[planet],
@@ -660,7 +714,7 @@ def _members(
                 raise TrainError(f"bearings[{name!r}]: {exc}") from None
         out[name] = MemberLoad(
             name,
-            other / n,
+            other * share,
             f + 0.0,
             -f + 0.0,
             moment / 1000.0 + 0.0,
@@ -678,7 +732,7 @@ def _mid(points: list[np.ndarray]) -> float:
 
 def _pins(
     planet: str,
-    copies: int,
+    turns: list[float],
     centre: np.ndarray,
     at: np.ndarray,
     recs: list,
@@ -688,8 +742,7 @@ def _pins(
 ) -> None:
     """Append the pin force of every copy of ``planet`` (its mesh forces and centrifugal force)
     to a carrier's ``forces`` at its ``points`` (from the carrier's axis)."""
-    for k in range(copies):
-        th = 2 * math.pi * k / copies
+    for k, th in enumerate(turns):
         rel = _turn(at - centre, th)
         mine = [(f, p) for j, f, p, _ in recs if j == k]
         pin = np.sum([f for f, _ in mine], axis=0) if mine else np.zeros(3)

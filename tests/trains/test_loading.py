@@ -297,3 +297,50 @@ def test_property_planetary_statics(sun, planet, n, torque, eta, module, inp):
     for m in ld.members.values():
         assert np.all(np.isfinite(m.force)) and math.isfinite(m.moment)
     _assert_statics(ld, torque)
+
+
+@pytest.mark.parametrize(
+    "angles, sharing",
+    [
+        ((0.0, 120.0, 240.0), None),
+        ((0.0, 110.0, 240.0), None),
+        ((0.0, 120.0, 240.0), 1.16),
+        ((0.0, 100.0, 230.0), 1.3),
+    ],
+)
+def test_unequal_spacing_and_sharing_load_sun_and_carrier(angles, sharing):
+    # independent: every planet presses on the sun with the same in-plane force turned by its
+    # angle and scaled by its share s_k, so the sun's bearing carries
+    # |sum_k s_k exp(i theta_k)| times the whole mesh force (zero for equal spacing and shares)
+    t = simple_planetary(20, 30, 80, n_planets=3)
+    kw = {"planet_angles": {"planet": angles}}
+    if sharing:
+        kw["load_sharing"] = {"planet": sharing}
+    ld = loads(t, "sun", "carrier", fixed=["ring"], torque=100, module=5, **kw)
+    _assert_statics(ld, 100)
+    shares = [1 / 3] * 3 if not sharing else [sharing / 3] + [(3 - sharing) / 6] * 2
+    whole = 100 / (0.05 * COS20)  # Ozols (11.8) for the whole sun torque
+    turn = abs(sum(s * np.exp(1j * np.radians(a)) for s, a in zip(shares, angles, strict=True)))
+    assert ld.members["sun"].radial_load == pytest.approx(whole * turn, rel=1e-9, abs=1e-9)
+    assert ld.meshes["sun-planet"].normal[0] == pytest.approx(whole * shares[0], rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        ({"planet_angles": {"planet": (0.0, 1.0)}}, "planet_angles"),
+        ({"load_sharing": {"planet": 4.0}}, "load_sharing"),
+        ({"load_sharing": {"sun": 1.0}}, "load_sharing"),
+        ({"centrifugal": {"planet": float("inf")}}, "centrifugal"),
+    ],
+)
+def test_bad_planet_options(kwargs, name):
+    with pytest.raises(TrainError, match=name):
+        loads(
+            simple_planetary(20, 30, 80, n_planets=3),
+            "sun",
+            "carrier",
+            fixed=["ring"],
+            module=5,
+            **kwargs,
+        )
