@@ -138,6 +138,40 @@ def _grid(values, name: str) -> np.ndarray:
     return g
 
 
+def _tip_lands(z1, z2, X1, X2, g, m, at, pressure_angle, helix_angle) -> list[np.ndarray]:
+    """Both gears' normal tip land in modules over the grid (``g``: its :func:`pair_geometry`);
+    a tip inside the base circle has no land: its (negative) depth below d_b instead."""
+    lands = []
+    for z, x, da, beta in ((z1, X1, g.tip_diameter_1, helix_angle),
+                           (z2, X2, g.tip_diameter_2, -helix_angle)):  # fmt: skip
+        d = float(reference_diameter(z, m, beta))
+        db = d * np.cos(at)
+        above = da >= db
+        s_at = tooth_thickness(np.where(above, da, db), z, m, x, pressure_angle, beta, signed=True)
+        cos_ba = np.cos(np.arctan(np.tan(np.radians(beta)) * da / d))
+        # a tip inside the base circle has no land: its (negative) depth below d_b instead
+        lands.append(np.where(above, s_at * cos_ba, (da - db) / 2.0) / m)
+    return lands
+
+
+def _tip_interference(
+    z1, z2, X1, X2, g, m, at, pressure_angle, helix_angle, depth
+) -> tuple[np.ndarray, np.ndarray]:
+    """Tip interference on both flanks over the grid, in modules: the same margins as
+    ``GearPair.check`` (each tip meets its mate's flank at or above the mate's form circle)."""
+    rb1 = float(reference_diameter(z1, m, helix_angle)) * np.cos(at) / 2.0
+    rb2 = float(reference_diameter(z2, m, -helix_angle)) * np.cos(at) / 2.0
+    tan_wt = np.tan(np.radians(g.working_pressure_angle))
+    u_a, u_e, u_n2 = line_positions(
+        g.tip_diameter_1 / 2, g.tip_diameter_2 / 2, rb1, rb2, tan_wt, 1.0
+    )
+    rf1 = form_diameter(z1, m, X1, pressure_angle, helix_angle, depth) / 2.0
+    rf2 = form_diameter(z2, m, X2, pressure_angle, -helix_angle, depth) / 2.0
+    u_f1 = np.sqrt(np.maximum(rf1 * rf1 - rb1 * rb1, 0.0))
+    l_f2 = np.sqrt(np.maximum(rf2 * rf2 - rb2 * rb2, 0.0))
+    return (u_a - u_f1) / m, ((u_n2 - u_e) - l_f2) / m
+
+
 def blocking_contour(
     z1: int, z2: int, x1=None, x2=None, module: float = 1.0, pressure_angle: float = 20.0,
     min_contact_ratio: float = 1.0, min_tip_land: float = 0.2, helix_angle: float = 0.0,
@@ -222,33 +256,14 @@ def blocking_contour(
         "undercut_1": X1 - min_profile_shift(z1, pressure_angle, helix_angle, depth),
         "undercut_2": X2 - min_profile_shift(z2, pressure_angle, -helix_angle, depth),
     }
-    lands = []
-    for z, x, da, beta in ((z1, X1, g.tip_diameter_1, helix_angle),
-                           (z2, X2, g.tip_diameter_2, -helix_angle)):  # fmt: skip
-        d = float(reference_diameter(z, m, beta))
-        db = d * np.cos(at)
-        above = da >= db
-        s_at = tooth_thickness(np.where(above, da, db), z, m, x, pressure_angle, beta, signed=True)
-        cos_ba = np.cos(np.arctan(np.tan(np.radians(beta)) * da / d))
-        # a tip inside the base circle has no land: its (negative) depth below d_b instead
-        lands.append(np.where(above, s_at * cos_ba, (da - db) / 2.0) / m)
+    lands = _tip_lands(z1, z2, X1, X2, g, m, at, pressure_angle, helix_angle)
     margins["pointed_tip_1"], margins["pointed_tip_2"] = lands
     margins["tip_land_1"] = lands[0] - min_tip_land
     margins["tip_land_2"] = lands[1] - min_tip_land
     margins["contact_ratio"] = g.contact_ratio - min_contact_ratio
-    # tip interference (the same margins as GearPair.check, in modules)
-    rb1 = float(reference_diameter(z1, m, helix_angle)) * np.cos(at) / 2.0
-    rb2 = float(reference_diameter(z2, m, -helix_angle)) * np.cos(at) / 2.0
-    tan_wt = np.tan(np.radians(g.working_pressure_angle))
-    u_a, u_e, u_n2 = line_positions(
-        g.tip_diameter_1 / 2, g.tip_diameter_2 / 2, rb1, rb2, tan_wt, 1.0
+    margins["tip_interference_1"], margins["tip_interference_2"] = _tip_interference(
+        z1, z2, X1, X2, g, m, at, pressure_angle, helix_angle, depth
     )
-    rf1 = form_diameter(z1, m, X1, pressure_angle, helix_angle, depth) / 2.0
-    rf2 = form_diameter(z2, m, X2, pressure_angle, -helix_angle, depth) / 2.0
-    u_f1 = np.sqrt(np.maximum(rf1 * rf1 - rb1 * rb1, 0.0))
-    l_f2 = np.sqrt(np.maximum(rf2 * rf2 - rb2 * rb2, 0.0))
-    margins["tip_interference_1"] = (u_a - u_f1) / m
-    margins["tip_interference_2"] = ((u_n2 - u_e) - l_f2) / m
     margins = {name: _readonly(margins[name]) for name in LIMITS}
     feasible = np.logical_and.reduce([f >= 0.0 for f in margins.values()])
     for name, f in margins.items():
