@@ -77,7 +77,7 @@ LAYERS = {
         ["errors"],
         ["inertia", "trajectory", "conditions", "relations"],
         ["willis", "planetary.schemes"],
-        ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene"],
+        ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene", "layout"],
         ["capacity", "loading"],
         ["catalog", "differential", "planetary.stage"],
         [

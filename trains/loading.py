@@ -44,6 +44,7 @@ from gears import BevelPair, GearError
 from gears.display import html_table
 from gears.forces import bearing_reactions, bevel_pair_forces, mesh_forces
 from trains.errors import TrainError
+from trains.layout import Axes, Mesh, direction, mesh_geometry, place, shared_axes, turn
 from trains.power import PowerFlow, power_flow
 from trains.relations import FRAME, Relation
 from trains.willis import Train
@@ -191,81 +192,6 @@ class TrainLoads:
         )
 
 
-# --------------------------------------------------------------------------- geometry of a mesh
-
-
-@dataclass(frozen=True)
-class _Mesh:
-    """One mesh's plane geometry: its external gear's member ``g1`` and the other ``g2``."""
-
-    relation: Relation
-    g1: str
-    g2: str
-    d1: float  # working pitch diameters, mm
-    d2: float
-    alpha: float  # working transverse pressure angle, deg
-    beta: float  # gear 1's helix angle, deg
-    alpha_n: float
-    internal: bool
-    distance: float  # centre distance, mm
-
-
-def _geometry(r: Relation, modules: Mapping[str, float], pressure_angle: float) -> _Mesh | None:
-    """The plane geometry of a mesh relation, or None for a link, coupling or bevel mesh."""
-    if r.kind != "mesh" or isinstance(r.pair, BevelPair):
-        return None
-    if r.pair is not None:
-        p = r.pair
-        first_on_a = not r.gears[0].internal  # the external gear is the pair's g1
-        g1, g2 = (r.a, r.b) if first_on_a else (r.b, r.a)
-        d1, d2 = p.working_diameters
-        return _Mesh(
-            r,
-            g1,
-            g2,
-            d1,
-            d2,
-            p.working_pressure_angle,
-            p.g1.helix_angle,
-            p.g1.pressure_angle,
-            p.internal,
-            p.center_distance,
-        )
-    if r.name not in modules:
-        raise TrainError(
-            f"mesh {r.name!r} has tooth counts but no gears: give module= (mm, or a mapping "
-            "mesh name -> mm) for its pitch diameters m z, or build it from gears "
-            "(Train.mesh(..., gears=...))"
-        )
-    module = modules[r.name]
-    za, zb = r.teeth
-    ring_is_a = r.internal and za > zb  # a ring has more teeth than its pinion
-    g1, g2 = (r.b, r.a) if ring_is_a else (r.a, r.b)
-    z1, z2 = (zb, za) if ring_is_a else (za, zb)
-    d1, d2 = module * z1, module * z2
-    dist = abs(d2 - d1) / 2 if r.internal else (d1 + d2) / 2
-    return _Mesh(r, g1, g2, d1, d2, pressure_angle, 0.0, pressure_angle, r.internal, dist)
-
-
-# ------------------------------------------------------------------------------------ placement
-
-
-class _Axes:
-    """Union of members that share an axis."""
-
-    def __init__(self, members: Iterable[str]) -> None:
-        self.parent = {m: m for m in members}
-
-    def find(self, m: str) -> str:
-        while self.parent[m] != m:
-            self.parent[m] = self.parent[self.parent[m]]
-            m = self.parent[m]
-        return m
-
-    def join(self, a: str, b: str) -> None:
-        self.parent[self.find(a)] = self.find(b)
-
-
 def _planets(train: Train, flow: PowerFlow) -> dict[str, tuple[str, int]]:
     """Planet member -> (its carrier, copies): those declared with ``set_planets``, else the
     members that mesh only on one moving carrier and carry no external torque."""
@@ -281,85 +207,6 @@ def _planets(train: Train, flow: PowerFlow) -> dict[str, tuple[str, int]]:
         elif on_carrier and c != FRAME and abs(flow.torques.get(m, 0.0)) == 0.0:
             out[m] = (c, 1)
     return out
-
-
-def _axes(train: Train, planets: Mapping[str, tuple[str, int]]) -> _Axes:
-    axes = _Axes(train.members)
-    for r in train.relations:
-        if r.kind == "couple" and r.a not in planets and r.b not in planets:
-            axes.join(r.a, r.b)  # a shaft through two stages (a planet's coupling is parallel)
-        elif r.carrier != FRAME:
-            for m in (r.a, r.b):
-                if m not in planets:
-                    axes.join(m, r.carrier)  # a central member turns about the carrier's axis
-    for group in train.coaxial_groups:
-        for m in group[1:]:
-            axes.join(group[0], m)
-    return axes
-
-
-def _place(
-    train: Train, meshes: Sequence[_Mesh], axes: _Axes, angles: Mapping[str, float]
-) -> dict[str, np.ndarray]:
-    """Axis position (x, y) of every axis group: the first at the origin, then by meshes."""
-    links = [(axes.find(m.g1), axes.find(m.g2), m) for m in meshes]
-    groups = list(dict.fromkeys(axes.find(m) for m in train.members if m != FRAME))
-    pos: dict[str, np.ndarray] = {}
-    pending = [g for g in groups if any(g in (a, b) for a, b, _ in links)]
-    while pending:
-        if not pos:
-            pos[pending.pop(0)] = np.zeros(2)
-            continue
-        placed = False
-        for g in pending:  # two placed mates fix a member (a planet triangle)
-            known = [
-                (b if a == g else a, m)
-                for a, b, m in links
-                if g in (a, b) and (b if a == g else a) in pos
-            ]
-            if len({k for k, _ in known}) >= 2:
-                (p, m1), (q, m2) = known[0], next(k for k in known if k[0] != known[0][0])
-                pos[g] = _triangle(pos[p], m1.distance, pos[q], m2.distance)
-                pending.remove(g)
-                placed = True
-                break
-        if placed:
-            continue
-        for g in pending:
-            known = [(a, b, m) for a, b, m in links if g in (a, b) and (b if a == g else a) in pos]
-            if known:
-                a, b, m = known[0]
-                th = math.radians(float(angles.get(m.relation.name, 0.0)))
-                step = m.distance * np.array([math.cos(th), math.sin(th)])
-                # external: g2's axis at +a from g1's; internal: the ring's at -a from the pinion's
-                step = -step if m.internal else step
-                pos[g] = pos[a] + step if g == b else pos[b] - step
-                pending.remove(g)
-                break
-        else:  # a group no mesh reaches from the placed ones: start it at the origin
-            pos[pending.pop(0)] = np.zeros(2)
-    for g in groups:
-        pos.setdefault(g, np.zeros(2))
-    for a, b, m in links:
-        gap = float(np.linalg.norm(pos[a] - pos[b]))
-        if a != b and abs(gap - m.distance) > 1e-9 * max(1.0, m.distance):
-            raise TrainError(
-                f"mesh {m.relation.name!r}: its centre distance is {m.distance:.6g} mm but the "
-                f"other meshes put its axes {gap:.6g} mm apart: the train does not close (give "
-                "module= per mesh, or gears whose centre distances agree)"
-            )
-    return pos
-
-
-def _triangle(p: np.ndarray, rp: float, q: np.ndarray, rq: float) -> np.ndarray:
-    """The point at distance rp from p and rq from q, to the left of p -> q (or on the line)."""
-    d = float(np.linalg.norm(q - p))
-    if d == 0.0:
-        return p + np.array([rp, 0.0])
-    x = (d * d + rp * rp - rq * rq) / (2 * d)
-    h = math.sqrt(max(rp * rp - x * x, 0.0))
-    e = (q - p) / d
-    return p + x * e + h * np.array([-e[1], e[0]])
 
 
 # --------------------------------------------------------------------------------- the loads
@@ -384,22 +231,6 @@ def _real(name: str, value: Any) -> float:
     if not math.isfinite(v):
         raise TrainError(f"{name} = {value!r}; valid is a finite number")
     return v
-
-
-def _direction(m: _Mesh, pos: Mapping[str, np.ndarray], axes: _Axes, angle: float) -> np.ndarray:
-    """Unit vector from the external gear's axis towards the pitch point."""
-    p1, p2 = pos[axes.find(m.g1)], pos[axes.find(m.g2)]
-    v = (p1 - p2) if m.internal else (p2 - p1)
-    n = float(np.linalg.norm(v))
-    if n > 1e-9 * max(1.0, m.distance):
-        return v / n
-    th = math.radians(angle)
-    return np.array([math.cos(th), math.sin(th)])
-
-
-def _turn(v: np.ndarray, th: float) -> np.ndarray:
-    c, s = math.cos(th), math.sin(th)
-    return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
 
 
 def loads(
@@ -503,7 +334,9 @@ def loads(
         for k, v in _mapping("centrifugal", centrifugal, planets, "planet -> N").items()
     }
     spread = _spread(planets, planet_angles, load_sharing)
-    geo = [g for r in train.relations if (g := _geometry(r, modules, pressure_angle)) is not None]
+    geo = [
+        g for r in train.relations if (g := mesh_geometry(r, modules, pressure_angle)) is not None
+    ]
     for r in train.relations:
         if r.kind == "mesh" and r.carrier in planets:
             raise TrainError(
@@ -512,8 +345,8 @@ def loads(
                 "loads does not place carriers on carriers (a biplanetary train); its torques "
                 "are in trains.power_flow"
             )
-    axes = _axes(train, planets)
-    pos = _place(train, geo, axes, angles)
+    axes = shared_axes(train, planets)
+    pos = place(train, geo, axes, angles)
     meshes = {}
     on: dict[str, list[tuple[int, np.ndarray, np.ndarray]]] = {m: [] for m in train.members}
     for m in geo:
@@ -541,7 +374,7 @@ def _frame(v: np.ndarray, e: np.ndarray) -> np.ndarray:
 
 
 def _mesh_load(
-    m: _Mesh, flow: PowerFlow, spread, pos, axes: _Axes, angles, axial, on: dict[str, list]
+    m: Mesh, flow: PowerFlow, spread, pos, axes: Axes, angles, axial, on: dict[str, list]
 ) -> MeshLoad:
     """The forces of one mesh of parallel axes on each copy; records them per member in
     ``on[member]`` as ``(copy, force, point from the member's axis, pitch point)``."""
@@ -549,7 +382,7 @@ def _mesh_load(
     rp = flow.relations[r.name]
     turns, shares = _copies(spread, m.g1, m.g2)
     centre = pos[axes.find(r.carrier)] if r.carrier != FRAME else np.zeros(2)
-    e0 = _direction(m, pos, axes, angles.get(r.name, 0.0))
+    e0 = direction(m, pos, axes, angles.get(r.name, 0.0))
     s_a = -m.distance if m.internal else m.distance  # gear 2's axis at (s_a, 0)
     tau1 = 1000.0 * rp.torques.get(m.g1, 0.0)  # N mm, the mesh's torques (all copies)
     tau2 = 1000.0 * rp.torques.get(m.g2, 0.0)
@@ -566,8 +399,8 @@ def _mesh_load(
     points: dict[str, list] = {m.g1: [], m.g2: []}
     angles_out = []
     for k, (th, share) in enumerate(zip(turns, shares, strict=True)):
-        e = _turn(e0, th)
-        o1 = centre + _turn(pos[axes.find(m.g1)] - centre, th)
+        e = turn(e0, th)
+        o1 = centre + turn(pos[axes.find(m.g1)] - centre, th)
         point = np.array([*(o1 + x * e), z])
         f = _frame(np.asarray(whole.vector, float) * share, e)
         for member, v, rel in ((m.g1, f, x * e), (m.g2, -f, (x - s_a) * e)):
@@ -653,7 +486,7 @@ def _members(
     flow: PowerFlow,
     planets,
     pos,
-    axes: _Axes,
+    axes: Axes,
     on,
     bearings,
     centrifugal,
@@ -743,7 +576,7 @@ def _pins(
     """Append the pin force of every copy of ``planet`` (its mesh forces and centrifugal force)
     to a carrier's ``forces`` at its ``points`` (from the carrier's axis)."""
     for k, th in enumerate(turns):
-        rel = _turn(at - centre, th)
+        rel = turn(at - centre, th)
         mine = [(f, p) for j, f, p, _ in recs if j == k]
         pin = np.sum([f for f, _ in mine], axis=0) if mine else np.zeros(3)
         norm = float(np.linalg.norm(rel))
