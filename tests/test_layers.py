@@ -56,6 +56,7 @@ LAYERS = {
             "search.cluster",
             "contact.analysis",
             "worm.geometry",
+            "figures.forces",
         ],
         [
             "checks",
@@ -77,7 +78,14 @@ LAYERS = {
         ["errors"],
         ["inertia", "trajectory", "conditions", "relations"],
         ["willis", "planetary.schemes"],
-        ["power", "coaxial", "planetary.checks", "planetary.placement", "planetary.scene", "layout"],
+        [
+            "power",
+            "coaxial",
+            "planetary.checks",
+            "planetary.placement",
+            "planetary.scene",
+            "layout",
+        ],
         ["capacity", "loading"],
         ["catalog", "differential", "planetary.stage"],
         [

@@ -40,16 +40,16 @@ from typing import Any
 
 import numpy as np
 
-from gears import BevelPair, GearError
+from gears import BevelPair, Gear, GearError
 from gears.display import html_table
-from gears.forces import bearing_reactions, bevel_pair_forces, mesh_forces
+from gears.forces import bearing_reactions, bevel_pair_forces, centrifugal_force, mesh_forces
 from trains.errors import TrainError
 from trains.layout import Axes, Mesh, direction, mesh_geometry, place, shared_axes, turn
 from trains.power import PowerFlow, power_flow
 from trains.relations import FRAME, Relation
 from trains.willis import Train
 
-__all__ = ["MemberLoad", "MeshLoad", "TrainLoads", "loads"]
+__all__ = ["MemberLoad", "MeshLoad", "TrainLoads", "loads", "planetary_loads", "solid_mass"]
 
 
 @dataclass(frozen=True)
@@ -181,7 +181,8 @@ class TrainLoads:
             out.append("  ".join(f"{c:>{w}s}" for c, w in zip(cols, width, strict=True)))
             out += ["  ".join(f"{v!s:>{w}s}" for v, w in zip(r, width, strict=True)) for r in rows]
             out.append("")
-        return "\n".join(out[:-1])
+        out += [f"{k}: {v:.6g}" for k, v in self.notes.items()]
+        return "\n".join(out if self.notes else out[:-1])
 
     def _repr_html_(self) -> str:
         meshes, members = self.rows()
@@ -189,6 +190,38 @@ class TrainLoads:
             html_table(self.MESH_COLUMNS, meshes, caption="mesh forces (per planet copy)")
             + "\n"
             + html_table(self.MEMBER_COLUMNS, members, caption="bearing loads")
+            + (
+                html_table(
+                    ["", ""], [(k, f"{v:.6g}") for k, v in self.notes.items()], caption="stage"
+                )
+                if self.notes
+                else ""
+            )
+        )
+
+    def figure(self, outlines: Iterable[Any] = (), ax: Any = None):
+        """The mesh force on each mesh's first member at every pitch point (red) and every
+        member's bearing reaction at its axis (blue; a planet's pin at its first copy), drawn
+        on ``outlines`` (shapely polygons in the same frame, e.g. ``Planetary.outlines()``
+        values) with :func:`gears.figures.forces.forces_figure`; a matplotlib Figure."""
+        from gears.figures.forces import forces_figure
+
+        arrows = []
+        for mesh in self.meshes.values():
+            if not mesh.forces:
+                continue
+            first = mesh.members[0]
+            for f, p in zip(mesh.forces[first], mesh.points[first], strict=True):
+                arrows.append((p[0], p[1], f[0], f[1], mesh.name, "mesh"))
+        for m in self.members.values():
+            b, at = m.bearing, m.position
+            if math.hypot(b[0], b[1]) > 1e-9 * max(1.0, *(abs(x) for x in b)):
+                kind = "pin" if m.carried_by != FRAME else "bearing"
+                arrows.append((at[0], at[1], b[0], b[1], f"{m.name} {m.radial_load:.0f} N", kind))
+        if isinstance(outlines, Mapping):
+            outlines = list(outlines.values())
+        return forces_figure(
+            outlines, arrows, ax, "mesh forces (red), bearings (blue), pins (green)"
         )
 
 
@@ -584,3 +617,97 @@ def _pins(
             pin = pin + np.array([*(centrifugal * rel / norm), 0.0])
         forces.append(pin)
         points.append(np.array([*rel, _mid([p for _, p in mine])]))
+
+
+# ------------------------------------------------------------------------ a planetary stage
+
+
+def solid_mass(
+    gear: Gear, face_width: float | None, density: float, tolerance: float | None = None
+) -> float:
+    """The mass (kg) of a gear's solid: the area of its outline (:meth:`gears.Gear.outline`,
+    the real teeth, mm^2) times its face width (mm; default the gear's own, else 10 modules,
+    as :meth:`gears.Gear.mesh`, whose solid is that outline swept along the helix, with the same
+    volume) times ``density`` (kg/mm^3); ``tolerance`` defaults to a hundredth of the module."""
+    tol = gear.module / 100 if tolerance is None else tolerance
+    width = face_width if face_width is not None else (gear.face_width or 10 * gear.module)
+    try:
+        area = float(gear.outline(tolerance=tol).area)
+    except GearError as exc:
+        raise TrainError(f"the planet's solid: {exc}") from None
+    return area * _real("face_width", width) * _real("density", density)
+
+
+def planetary_loads(
+    stage: Any,
+    input: str,
+    output: str,
+    fixed: str,
+    torque: float,
+    speed: float,
+    load_sharing_factor: float,
+    face_width: float | None = None,
+    density: float = 7.83e-6,
+    planet_mass: float | Mapping[str, float] | None = None,
+    mesh_efficiency: float | None = None,
+    friction: float | None = None,
+) -> TrainLoads:
+    """The loads of a :class:`trains.Planetary` (the view behind :meth:`trains.Planetary.loads`):
+    :func:`loads` on its train with its planets where :meth:`~trains.Planetary.placement` puts
+    them (unequal spacing too), copy 0 carrying ``load_sharing_factor / n`` of each mesh, and the
+    planets' centrifugal force ``m omega_H^2 rho`` (Ozols section 11-2) from their solids'
+    mass (:func:`solid_mass`, or ``planet_mass`` in kg) at the carrier's speed.
+
+    ``input``, ``output``, ``fixed`` are member names of ``stage.train``; ``speed`` is the
+    input's, rpm. The notes give the carrier torque, the output's balancing moment (Ozols
+    (11.7)), the planets' mass, radius and centrifugal force, and the net radial force on the
+    sun's and the carrier's bearings.
+    """
+    speed = _real("speed", speed)
+    train = stage.train
+    place = stage.placement()
+    members = ["planet", "planet2"] if stage.scheme == "double-planet" else ["planet"]
+    gears = stage.planet_gears if stage.scheme == "double-planet" else (stage.planet_gears,)
+    radii = [place.planet_radius, place.planet2_radius]
+    spacing = [place.planet_angles, place.planet2_angles]
+    motion = train.solve({input: speed, fixed: 0})
+    n_h = float(motion[stage.carrier])
+    given = planet_mass if isinstance(planet_mass, Mapping) else dict.fromkeys(members, planet_mass)
+    given = _mapping("planet_mass", given, members, "planet -> kg")
+    notes: dict[str, float] = {
+        "planets": stage.n_planets,
+        "K_gamma": load_sharing_factor,
+        "carrier speed [rpm]": n_h,
+    }
+    centrifugal = {}
+    for i, member in enumerate(members):
+        own = gears[i] if isinstance(gears[i], tuple) else (gears[i],)
+        if given.get(member) is None:
+            mass = sum(solid_mass(g, face_width, density) for g in dict.fromkeys(own))
+        else:
+            mass = _real(f"planet_mass[{member!r}]", given[member])
+            if mass < 0:
+                raise TrainError(f"planet_mass = {mass:g} for {member!r}; valid is >= 0 (kg)")
+        centrifugal[member] = float(centrifugal_force(mass, n_h, radii[i]))
+        suffix = "" if len(members) == 1 else f" ({member})"
+        notes[f"planet mass [kg]{suffix}"] = mass
+        notes[f"planet radius [mm]{suffix}"] = radii[i]
+        notes[f"centrifugal force [N]{suffix}"] = centrifugal[member]
+    ld = loads(
+        train,
+        input,
+        output,
+        [fixed],
+        torque,
+        speed,
+        mesh_efficiency,
+        friction,
+        planet_angles={m: spacing[i] for i, m in enumerate(members)},
+        load_sharing=dict.fromkeys(members, load_sharing_factor),
+        centrifugal=centrifugal,
+    )
+    notes["carrier torque [N m]"] = ld.flow.torques[stage.carrier]
+    notes["output torque (balancing moment) [N m]"] = ld.flow.torques[output]
+    for member in ("sun", stage.carrier):
+        notes[f"net radial force on {member} [N]"] = ld.members[member].radial_load
+    return TrainLoads(ld.flow, ld.meshes, ld.members, notes)

@@ -232,3 +232,19 @@ def test_property_finite_or_gear_error(torque, d, a, b, f):
             continue
         for arr in out if isinstance(out, tuple) else (out,):
             assert np.all(np.isfinite(np.asarray(arr, float)))
+
+
+def test_pair_forces_figure():
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from gears.figures.forces import pair_forces_figure
+
+    pair = GearPair(Gear(20, 5), Gear(40, 5))
+    fig = pair_forces_figure(pair_forces(pair, 100.0), pair.outlines(tolerance=0.05))
+    assert len(fig.axes[0].texts) == 8 and "F_t 2000 N" in fig.axes[0].get_title()
+    plt.close(fig)
+    with pytest.raises(GearError, match="finite"):
+        from gears.figures.forces import forces_figure
+
+        forces_figure([], [(0.0, 0.0, float("nan"), 1.0, "x", "mesh")])

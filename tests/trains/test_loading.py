@@ -344,3 +344,21 @@ def test_bad_planet_options(kwargs, name):
             module=5,
             **kwargs,
         )
+
+
+def test_figure_draws_every_mesh_force_and_bearing():
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    ld = loads(
+        simple_planetary(20, 30, 80, n_planets=3),
+        "sun",
+        "carrier",
+        fixed=["ring"],
+        torque=100,
+        module=5,
+    )
+    fig = ld.figure()
+    # 6 mesh forces (2 meshes x 3 planets) and the planet's pin: arrow and label each
+    assert len(fig.axes[0].texts) == 2 * 7
+    plt.close(fig)
