@@ -5,6 +5,7 @@ The public surface (see ``docs/``)::
     from gears import BasicRack, Gear, GearPair, ShaperCutter
     from gears import BevelPair                        # straight bevel gears (docs/bevel.md)
     from gears import WormPair                         # worm gears (docs/worm.md)
+    from gears import NonCircularPair                  # non-circular gears (docs/noncircular.md)
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/design_search.md)
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
@@ -20,6 +21,7 @@ from gears.errors import GearError
 from gears.gear import Gear
 from gears.mating import Rack
 from gears.meshing import PairGeometry, pair_geometry
+from gears.noncircular.pair import NonCircularPair
 from gears.pair import GearPair
 from gears.rack import BasicRack
 from gears.rating.capacity import Rating
@@ -44,6 +46,7 @@ __all__ = [
     "GearMargins",
     "GearPair",
     "Material",
+    "NonCircularPair",
     "PairGeometry",
     "PairMargins",
     "PairRatings",

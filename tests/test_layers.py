@@ -46,6 +46,7 @@ LAYERS = {
             "contact.compliance",
             "contact.modification",
             "worm.crossed",
+            "noncircular.centrode",
         ],
         [
             "rack",
@@ -66,10 +67,24 @@ LAYERS = {
             "bevel.spherical",
             "worm.flank",
         ],
-        ["interference", "cutting.generate", "bevel.crown", "rating.sizing", "worm.checks"],
+        [
+            "interference",
+            "cutting.generate",
+            "bevel.crown",
+            "rating.sizing",
+            "worm.checks",
+            "noncircular.checks",
+        ],
         ["cutting.outline", "rating.root", "search.candidates"],
         ["solid.mesh", "solid.animate", "figures.drawing", "bevel.solid", "search.reduction"],
-        ["gear", "rating.capacity", "solid.render", "search.checks", "contact.result"],
+        [
+            "gear",
+            "rating.capacity",
+            "solid.render",
+            "search.checks",
+            "contact.result",
+            "noncircular.pair",
+        ],
         ["pair", "bevel.gear", "search.scheduling"],
         ["shift", "figures.plot", "bevel.pair", "search.result", "worm.pair"],
         ["solid.export", "search.engine"],
@@ -106,7 +121,17 @@ LAYERS = {
 
 # the family subpackages of each package (docs/architecture.md, "Families"); the rest is the core
 FAMILIES = {
-    "gears": ["cutting", "rating", "solid", "figures", "bevel", "search", "contact", "worm"],
+    "gears": [
+        "cutting",
+        "rating",
+        "solid",
+        "figures",
+        "bevel",
+        "search",
+        "contact",
+        "worm",
+        "noncircular",
+    ],
     "trains": ["planetary", "design", "cli"],
 }
 

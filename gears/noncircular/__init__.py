@@ -1,0 +1,27 @@
+"""Non-circular gears: centrodes from a motion law (Ozols section 19-1), their checks, and
+``NonCircularPair``.
+
+The names below are imported on first use (:mod:`gears.lazy`): importing one module of the
+family does not load the rest.
+"""
+
+from gears.lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "center_distance_for_lobes": "gears.noncircular.centrode",
+        "eccentric_radius": "gears.noncircular.centrode",
+        "elliptical_radius": "gears.noncircular.centrode",
+        "equivalent_teeth": "gears.noncircular.checks",
+        "KINDS": "gears.noncircular.centrode",
+        "MotionLaw": "gears.noncircular.centrode",
+        "NonCircularPair": "gears.noncircular.pair",
+        "polar_arc_length": "gears.noncircular.centrode",
+        "polar_curvature": "gears.noncircular.centrode",
+        "pole_radii": "gears.noncircular.centrode",
+        "pole_radius": "gears.noncircular.centrode",
+        "rack_centrode": "gears.noncircular.centrode",
+        "tooth_margins": "gears.noncircular.checks",
+    },
+)
