@@ -164,17 +164,18 @@ def pairs(
     >>> int(r["z1"][0]), int(r["z2"][0]), float(r["face_width"][0]), round(float(r["S_H"][0]), 3)
     (26, 78, 10.0, 1.101)
     """
-    return _search(time.perf_counter(), locals())  # the arguments as given: no copy to drift
-
-
-def _search(t0: float, arguments: dict) -> SearchResult:
-    """:func:`pairs` run with its ``arguments`` (its ``locals()`` on entry), timed from ``t0``."""
-    arguments = dict(arguments)
-    options = arguments.pop("rating_options")
-    progress, max_seconds = arguments.pop("progress"), arguments.pop("max_seconds")
-    space, client, threads = _prepare(**arguments, **options)
+    t0 = time.perf_counter()
+    space, client, threads = _prepare(
+        ratio, center_distance, module, teeth, shifts, helix, ratio_tolerance=ratio_tolerance,
+        split=split, pressure_angle=pressure_angle, rack=rack, internal=internal,
+        tip_shortening=tip_shortening, limits=limits, objective=objective, top=top,
+        friction=friction, torque=torque, speed=speed, material=material,
+        face_width=face_width, life=life, min_safety=min_safety, smallest_width=smallest_width,
+        dataset=dataset, chunk_size=chunk_size, client=client, threads=threads,
+        **rating_options,
+    )  # fmt: skip
     table, feasible, examined, chunks = run_chunks(
-        space, client, threads, arguments["chunk_size"], progress, max_seconds
+        space, client, threads, chunk_size, progress, max_seconds
     )
     return SearchResult(table, examined, feasible, chunks, time.perf_counter() - t0, space)
 
