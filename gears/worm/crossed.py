@@ -124,7 +124,7 @@ def axodes(ratio, shaft_angle, center_distance, speed=1.0) -> Axodes:
 
 def reduced_friction_angle(friction, pressure_angle=20.0):
     """``phi' = atan(mu / cos alpha_n)`` in degrees: the friction angle of a flank inclined at
-    the normal pressure angle ``alpha_n`` (Ozols (12.28), DIN 3975 / ISO/TR 14521's
+    the normal pressure angle ``alpha_n`` (Ozols (12.28); ISO/TS 14521's
     ``tan rho' = mu / cos alpha_n``).
 
     >>> round(float(reduced_friction_angle(0.05, 0.0)), 6)    # f' = 0.05 directly
@@ -139,7 +139,7 @@ def crossed_efficiency(helix_angle1, helix_angle2, friction_angle):
     helix angles for gear 2 driving); ``friction_angle`` is ``phi'`` in degrees
     (:func:`reduced_friction_angle`).
 
-    Derivation (Niemann/Winter's crossed-helical efficiency, the screw of Ozols (14.15)): in the
+    Derivation (the screw of Ozols (14.15) generalised to two helical gears): in the
     common tangent plane at the pitch point let ``t`` run along the teeth and ``n`` across them;
     the peripheral directions of the two gears make the angles ``beta_1`` and ``-beta_2`` with
     ``n``. Rolling makes the ``n`` components equal, ``v_1 cos beta_1 = v_2 cos beta_2``; the

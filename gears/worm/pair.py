@@ -388,6 +388,67 @@ class WormPair:
         ]  # fmt: skip
         return Report(found)
 
+    def describe(self) -> str:
+        """The geometry of the worm and the wheel as a table (mm, degrees; DIN 3975 symbols)."""
+        g = self.geometry
+        worm = [
+            ("starts z_1", str(self.starts)),
+            ("diameter quotient q", f"{self.diameter_quotient:.4f}"),
+            ("lead angle gamma, deg", f"{self.lead_angle:.6f}"),
+            ("axial module m_x", f"{self.module:.4f}"),
+            ("normal module m_n", f"{self.normal_module:.4f}"),
+            ("axial pitch p_x", f"{self.axial_pitch:.4f}"),
+            ("lead p_z", f"{self.lead:.4f}"),
+            ("axial pressure angle, deg", f"{self.axial_pressure_angle:.4f}"),
+            ("normal pressure angle, deg", f"{self.normal_pressure_angle:.4f}"),
+            ("reference diameter d_m1", f"{self.worm_diameter:.4f}"),
+            ("tip diameter d_a1", f"{self.worm_tip_diameter:.4f}"),
+            ("root diameter d_f1", f"{self.worm_root_diameter:.4f}"),
+            ("threaded length b_1", f"{self.worm_length:.4f}"),
+        ]
+        if self.flank == "ZI":
+            worm.append(("base diameter d_b1", f"{self.worm_base_diameter:.4f}"))
+        wheel = [
+            ("teeth z_2", str(self.wheel_teeth)),
+            ("profile shift x_2", f"{self.profile_shift:+.4f}"),
+            ("reference diameter d_2", f"{self.wheel_diameter:.4f}"),
+            ("throat (tip) diameter d_a2", f"{self.wheel_tip_diameter:.4f}"),
+            ("root diameter d_f2", f"{self.wheel_root_diameter:.4f}"),
+            ("outside diameter d_e2", f"{self.wheel_outside_diameter:.4f}"),
+            ("throat radius r_k", f"{self.throat_radius:.4f}"),
+            ("face width b_2", f"{self.face_width:.4f}"),
+            ("tip thickness s_a2 (mid-plane)", f"{float(g.wheel_tip_thickness):.4f}"),
+        ]
+        head = (
+            f"worm pair {self.starts}/{self.wheel_teeth}, flank {self.flank}, {self.hand} hand, "
+            f"alpha_0 {self.pressure_angle:g} deg\n"
+            f"ratio {self.ratio:.6g}, centre distance a {self.center_distance:.4f} mm, "
+            f"contact ratio (mid-plane) {self.contact_ratio:.4f}"
+        )
+        lines = [head, "worm"]
+        lines += [f"  {label:32s}{value:>14s}" for label, value in worm]
+        lines.append("wheel")
+        lines += [f"  {label:32s}{value:>14s}" for label, value in wheel]
+        return "\n".join(lines)
+
+    def describe_efficiency(self, friction: float, worm_speed: float | None = None) -> str:
+        """Efficiency with either member driving, self-locking and the best lead angle at the
+        friction coefficient ``friction`` (and the sliding speed at ``worm_speed`` rpm)."""
+        phi = self.friction_angle(friction)
+        fwd, back = self.efficiency(friction, "worm"), self.efficiency(friction, "wheel")
+        lines = [
+            f"friction mu {friction:g}: reduced friction angle phi' {phi:.4f} deg",
+            f"  efficiency, worm driving   {fwd:10.4f}",
+            f"  efficiency, wheel driving  {back:10.4f}"
+            + ("   (self-locking: the wheel cannot drive)" if back <= 0.0 else ""),
+            f"  best lead angle 45 - phi'/2 {self.best_lead_angle(friction):9.4f} deg "
+            f"(this worm {self.lead_angle:.4f} deg)",
+        ]
+        if worm_speed is not None:
+            v = self.sliding_velocity(worm_speed)
+            lines.append(f"  sliding speed at {worm_speed:g} rpm {v:8.4f} m/s")
+        return "\n".join(lines)
+
     def __str__(self) -> str:
         return (
             f"WormPair(z1={self.starts}, z2={self.wheel_teeth}, m_x={self.module:g}, "

@@ -1,2 +1,2 @@
 """Layer 9, command line: the gear commands (``pair``, ``profile``, ``mesh``, ``bevel``, ``rate``,
-``search``), one module each; see :mod:`trains.cli.app`."""
+``search``, ``worm``), one module each; see :mod:`trains.cli.app`."""
