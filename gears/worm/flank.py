@@ -89,7 +89,7 @@ def axial_half_thickness(
         params = np.broadcast_arrays(rm, p, half, gamma, an, r0, m)
         if params[0].size == 1:  # one worm: one envelope, interpolated at every radius
             rr, hh = zk_contact(*(float(v.ravel()[0]) for v in params))
-            return _out(np.interp(r, rr, hh))
+            return _out(_interp(r, rr, hh))
         rows = np.broadcast_arrays(r, *params)
         out = np.empty(rows[0].shape)
         cache: dict[tuple, tuple] = {}
@@ -98,9 +98,19 @@ def axial_half_thickness(
             if key not in cache:
                 cache[key] = zk_contact(*key)
             rr, hh = cache[key]
-            out[idx] = np.interp(rows[0][idx], rr, hh)
+            out[idx] = _interp(rows[0][idx], rr, hh)
         return _out(out)
     raise ValueError(f"flank = {flank!r}; valid are 'ZA', 'ZN', 'ZI', 'ZK'")
+
+
+def _interp(x, xs, ys):
+    """``np.interp`` continued along the end tangents beyond the samples (ZK's flank past the
+    fold of its generated branch, which the checks keep outside the working depth)."""
+    y = np.interp(x, xs, ys)
+    k0 = (ys[1] - ys[0]) / (xs[1] - xs[0])
+    k1 = (ys[-1] - ys[-2]) / (xs[-1] - xs[-2])
+    y = np.where(x < xs[0], ys[0] + (x - xs[0]) * k0, y)
+    return np.where(x > xs[-1], ys[-1] + (x - xs[-1]) * k1, y)
 
 
 def _zn_section(r, rm, p, w0, gamma, an):
@@ -130,7 +140,9 @@ def _zn(r, rm, p, half, gamma, an):
 def zk_contact(rm, p, half, gamma, an, tool_radius, module, samples=ZK_SAMPLES):
     """The ZK flank's axial section ``(r, h)`` sampled over the depth ``r_m +- 2.5 m`` (module
     docstring): for each radius ``rho`` of the grinding cone, the contact point solved in
-    closed form, then rotated back to ``theta = 0``. Returns increasing radii."""
+    closed form, then rotated back to ``theta = 0``. Returns increasing radii: the branch of
+    the contact through the reference cylinder (on a steep lead it folds near the root, where
+    :func:`axial_half_thickness` continues the flank along its tangent)."""
     s, c = np.sin(gamma), np.cos(gamma)
     ex = np.array([1.0, 0.0, 0.0])
     k = np.array([0.0, -s, c])  # the cone's axis: the thread's normal at the reference cylinder
@@ -167,8 +179,17 @@ def zk_contact(rm, p, half, gamma, an, tool_radius, module, samples=ZK_SAMPLES):
     r = np.hypot(pt[:, 0], pt[:, 1])
     theta = np.arctan2(pt[:, 1], pt[:, 0])
     h = pt[:, 2] - p * theta
-    order = np.argsort(r)
-    r, h = r[order], h[order]
+    # keep the branch through the reference cylinder on which the radius grows with the depth:
+    # on a steep lead the contact folds back near the root (the cone's face stops generating)
+    ok = np.abs(d_) <= amp
+    i0 = int(np.argmin(np.abs(depth)))
+    lo = i0
+    while lo > 0 and ok[lo - 1] and r[lo - 1] < r[lo]:
+        lo -= 1
+    hi = i0
+    while hi < len(r) - 1 and ok[hi + 1] and r[hi + 1] > r[hi]:
+        hi += 1
+    r, h = r[lo : hi + 1], h[lo : hi + 1]
     # the wheel's reference point was placed at r_m by construction only to first order:
     # shift the section axially so that it passes (r_m, half) exactly
     h = h - (np.interp(rm, r, h) - half)

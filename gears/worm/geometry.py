@@ -28,7 +28,7 @@ writes ``q`` and ``gamma`` the same way.
   thickness ``s_a2 = d_a2 (s_2 / d_2 + inv alpha_x - inv alpha_a2)``,
   ``s_2 = m (pi / 2 + 2 x_2 tan alpha_x)``, reaches zero.
 
-Efficiency (Ozols (14.15)-(14.18), DIN 3975 / ISO/TR 14521 tooth losses only): with
+Efficiency (Ozols (14.15)-(14.18); the tooth losses only, as ISO/TS 14521 separates them): with
 ``phi' = atan(mu / cos alpha_n)``, the worm driving ``eta = tan gamma / tan(gamma + phi')``, the
 wheel driving ``eta' = tan(gamma - phi') / tan gamma``; the pair is self-locking (the wheel
 cannot drive) when ``gamma <= phi'``. Both are :func:`gears.worm.crossed.crossed_efficiency` of
