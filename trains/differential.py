@@ -33,8 +33,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from gears import BevelPair, GearError, Report
+from gears.bevel.drawing import bevel_svg
 from gears.bevel.solid import rotation
-from gears.figures.drawing import bevel_svg
 from trains.errors import TrainError
 from trains.willis import Motion, Train
 
@@ -321,7 +321,7 @@ class Differential:
     def _repr_svg_(self) -> str:
         """What a notebook shows: the differential in the axial section through the axle and
         the first pinion (the side gears left and right, the pinions in that plane above and
-        below), drawn by :func:`gears.figures.drawing.bevel_svg`."""
+        below), drawn by :func:`gears.bevel.drawing.bevel_svg`."""
 
         def parts() -> list:
             side, pinion = self.pair.g2, self.pair.g1

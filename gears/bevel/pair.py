@@ -37,11 +37,11 @@ from gears.bevel.cone import (
     gleason_coefficients,
     max_face_width,
 )
+from gears.bevel.drawing import bevel_pair_svg
 from gears.bevel.gear import BevelGear, VirtualGear
 from gears.bevel.solid import bevel_placement
 from gears.budget import check_budget
 from gears.errors import GearError
-from gears.figures.drawing import bevel_pair_svg
 from gears.geometry import check_real, check_teeth
 from gears.mating import Rack
 from gears.pair import GearPair
@@ -546,5 +546,5 @@ class BevelPair:
 
     def _repr_svg_(self) -> str:
         """The pair in axial section as an SVG picture, what a notebook shows
-        (:func:`gears.figures.drawing.bevel_pair_svg`; a text instead when it cannot be drawn)."""
+        (:func:`gears.bevel.drawing.bevel_pair_svg`; a text instead when it cannot be drawn)."""
         return bevel_pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))

@@ -9,9 +9,8 @@ from gears.lazy import attach
 __getattr__, __dir__, __all__ = attach(
     __name__,
     {
-        "bevel_pair_svg": "gears.figures.drawing",
-        "bevel_svg": "gears.figures.drawing",
         "display_tolerance": "gears.figures.drawing",
+        "filled": "gears.figures.drawing",
         "forces_figure": "gears.figures.forces",
         "gear_svg": "gears.figures.drawing",
         "generation_figure": "gears.figures.plot",
@@ -20,8 +19,10 @@ __getattr__, __dir__, __all__ = attach(
         "pair_figure": "gears.figures.plot",
         "pair_forces_figure": "gears.figures.forces",
         "pair_svg": "gears.figures.drawing",
+        "picture": "gears.figures.drawing",
         "shown": "gears.figures.drawing",
         "tooth_figure": "gears.figures.plot",
+        "LINE": "gears.figures.drawing",
         "WIDTH": "gears.figures.drawing",
     },
 )

@@ -1,4 +1,4 @@
-"""Layer 7, drawings: what a gear, a pair in mesh, a bevel pair and a stage show in a notebook.
+"""Layer 7, drawings: what a gear, a pair in mesh and a stage show in a notebook.
 
 ``Gear._repr_svg_``, ``GearPair._repr_svg_``, ``BevelPair._repr_svg_``,
 ``trains.Planetary._repr_svg_`` and ``trains.Differential._repr_svg_`` call these functions;
@@ -21,23 +21,22 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import numpy as np
 import shapely
 
 from gears.arguments import MIN_TOLERANCE
-from gears.bevel.cone import axial_section
 from gears.cutting.outline import gear_outline, pair_outlines
 from gears.display import Circle, bounds, message_svg, svg
 from gears.meshing import line_of_action_points
 
 __all__ = [
+    "LINE",
     "WIDTH",
-    "bevel_pair_svg",
-    "bevel_svg",
     "display_tolerance",
+    "filled",
     "gear_svg",
     "outlines_svg",
     "pair_svg",
+    "picture",
     "shown",
 ]
 
@@ -49,7 +48,7 @@ SAMPLING = 1 / 1500
 Colour = Sequence[float]  # RGB(A), 0-255, as gears.solid.mesh.COLOURS
 #: gear 1 and gear 2 (the RGB of gears.solid.mesh.COLOURS, which the classes pass in)
 _PAIR_COLOURS = ((70, 130, 180), (222, 140, 60))
-_LINE = {"fill": "none"}  # stroke widths and dashes are given in pixels (see _picture)
+LINE = {"fill": "none"}  # stroke widths and dashes are given in pixels (see picture)
 
 
 def display_tolerance(size: float) -> float:
@@ -83,7 +82,7 @@ def _css(colour: Colour) -> str:
     return f"rgb({r},{g},{b})"
 
 
-def _filled(colour: Colour) -> dict[str, Any]:
+def filled(colour: Colour) -> dict[str, Any]:
     return {"fill": _css(colour), "fill-opacity": 0.45, "stroke": _css(colour),
             "stroke-width": 1}  # fmt: skip
 
@@ -93,7 +92,7 @@ def _digits(size: float) -> int:
     return max(0, min(6, -int(f"{size / 1e4:e}".split("e")[1])))
 
 
-def _picture(shapes: list, size: float, title: str) -> str:
+def picture(shapes: list, size: float, title: str) -> str:
     """The SVG of ``shapes`` at :data:`WIDTH` pixels, their stroke widths and dashes (given in
     pixels) turned into drawing units, so every renderer draws the same lines (SVG's
     ``vector-effect`` is not supported everywhere)."""
@@ -124,8 +123,8 @@ def gear_svg(gear: Any, colour: Colour = (70, 130, 180)) -> str:
         size = max(gear.tip_diameter, gear.root_diameter)
         shape = gear_outline(gear, display_tolerance(size))
         reference = Circle(0.0, 0.0, gear.reference_diameter / 2)
-        dashed = {**_LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
-        return _picture([(shape, _filled(colour)), (reference, dashed)], size, repr(gear))
+        dashed = {**LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
+        return picture([(shape, filled(colour)), (reference, dashed)], size, repr(gear))
 
     return shown("this gear", draw)
 
@@ -143,8 +142,8 @@ def pair_svg(pair: Any, colours: tuple[Colour, Colour] = _PAIR_COLOURS) -> str:
         tips = pair.tip_diameters
         size = pair.center_distance + max(tips)
         p1, p2 = pair_outlines(pair, 0.0, display_tolerance(size))
-        shapes: list = [(p1, _filled(colours[0])), (p2, _filled(colours[1]))]
-        dashed = {**_LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
+        shapes: list = [(p1, filled(colours[0])), (p2, filled(colours[1]))]
+        dashed = {**LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
         x2 = -pair.center_distance if pair.internal else pair.center_distance
         w1, w2 = pair.working_diameters
         shapes += [(Circle(0.0, 0.0, w1 / 2), dashed), (Circle(x2, 0.0, w2 / 2), dashed)]
@@ -157,12 +156,12 @@ def pair_svg(pair: Any, colours: tuple[Colour, Colour] = _PAIR_COLOURS) -> str:
 
         # N1 to N2 (a ring's N2 lies beyond N1), through the path of contact
         ends = (min(0.0, path.n2, path.start), max(path.n2, path.end))
-        shapes.append((line(*ends), {**_LINE, "stroke": "black", "stroke-width": 1}))
-        shapes.append((line(path.start, path.end), {**_LINE, "stroke": "#c62828",
+        shapes.append((line(*ends), {**LINE, "stroke": "black", "stroke-width": 1}))
+        shapes.append((line(path.start, path.end), {**LINE, "stroke": "#c62828",
                                                     "stroke-width": 3}))  # fmt: skip
         title = (f"{pair!r}: contact ratio {pair.contact_ratio:.3f}, line of action N1-N2, "
                  "path of contact A-E")  # fmt: skip
-        return _picture(shapes, size, title)
+        return picture(shapes, size, title)
 
     return shown("this pair", draw)
 
@@ -178,68 +177,8 @@ def outlines_svg(parts: Callable[[], list[tuple[shapely.Geometry, Colour]]], wha
     """
 
     def draw() -> str:
-        shapes = [(p, _filled(c)) for p, c in parts()]
+        shapes = [(p, filled(c)) for p, c in parts()]
         x0, y0, x1, y1 = shapely.total_bounds([p for p, _ in shapes])
-        return _picture(shapes, max(x1 - x0, y1 - y0), title)
+        return picture(shapes, max(x1 - x0, y1 - y0), title)
 
     return shown(what, draw)
-
-
-def bevel_svg(parts: Callable[[], list[tuple[Any, float, Colour]]], what: str,
-              title: str = "") -> str:  # fmt: skip
-    """Bevel gears on a common pitch apex (the origin) in the axial section of their axes: each
-    gear's tooth zone (:func:`gears.bevel.cone.axial_section`, on both sides of its axis, over a
-    lighter body down to the axis), its pitch cone dashed and its axis dash-dotted. ``parts()``
-    gives ``(bevel gear, axis angle in degrees in the drawing, colour)`` triples (a
-    :class:`gears.BevelGear` or anything with its cone attributes).
-
-    >>> from gears import BevelPair
-    >>> p = BevelPair(20, 40, module=3, face_width=20)
-    >>> bevel_svg(lambda: [(p.g1, 0.0, (70, 130, 180))], "a gear").count("<path")
-    6
-    """
-
-    def draw() -> str:
-        size = 0.0
-        shapes: list = []
-        dashed = {**_LINE, "stroke": "gray", "stroke-width": 0.8, "stroke-dasharray": "4 3"}
-        axis = {**_LINE, "stroke": "black", "stroke-width": 0.6, "stroke-dasharray": "8 3 2 3"}
-        for gear, angle, colour in parts():
-            a = np.array([np.cos(np.radians(angle)), np.sin(np.radians(angle))])
-            p = np.array([-a[1], a[0]])  # both sides of the axis are drawn
-            corners = axial_section(gear.pitch_angle, gear.face_angle, gear.root_angle,
-                                    gear.cone_distance, gear.face_width, gear.addendum,
-                                    gear.dedendum)  # fmt: skip
-            (r_o, z_o), (r_i, z_i) = corners[1], corners[2]  # the root line, back to front
-            body = [z_o * a + r_o * p, z_i * a + r_i * p, z_i * a - r_i * p, z_o * a - r_o * p]
-            shapes.append((shapely.Polygon(body), {**_filled(colour), "fill-opacity": 0.15}))
-            delta = np.radians(gear.pitch_angle)
-            pitch = gear.cone_distance * np.array([np.sin(delta), np.cos(delta)])
-            for side in (1.0, -1.0):
-                xy = [z * a + side * rho * p for rho, z in corners]
-                shapes.append((shapely.Polygon(xy), _filled(colour)))
-                end = pitch[1] * a + side * pitch[0] * p
-                shapes.append((shapely.LineString([(0.0, 0.0), end]), dashed))
-            reach = float(np.max(corners[:, 1])) * 1.1
-            shapes.append((shapely.LineString([(0.0, 0.0), reach * a]), axis))
-            size = max(size, float(np.max(np.abs(corners))))
-        return _picture(shapes, 2 * size, title)
-
-    return shown(what, draw)
-
-
-def bevel_pair_svg(
-    pair: Any, colours: tuple[Colour, Colour] = ((70, 130, 180), (222, 140, 60))
-) -> str:
-    """A bevel pair in axial section (:func:`bevel_svg`), the drawing of its blanks: gear 1's
-    axis along +x, gear 2's at the shaft angle, their pitch cones touching along one generator.
-
-    >>> from gears import BevelPair
-    >>> bevel_pair_svg(BevelPair(20, 40, module=3, face_width=20)).count("<path")
-    12
-    """
-
-    def parts() -> list:
-        return [(pair.g1, 0.0, colours[0]), (pair.g2, float(pair.shaft_angle), colours[1])]
-
-    return bevel_svg(parts, "this bevel pair", f"{pair!r}: axial section, pitch cones dashed")
