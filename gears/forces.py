@@ -506,7 +506,9 @@ class PairForces:
 
 def _moment(point: np.ndarray, centre: np.ndarray, axis: np.ndarray, force: np.ndarray) -> float:
     """The moment of ``force`` at ``point`` about the axis through ``centre``, N m."""
-    return float(np.dot(np.cross(point - centre, force), axis)) / 1000.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        m = np.dot(np.cross(point - centre, force), axis) / 1000.0
+    return float(_finite(m, "the torque on gear 2"))
 
 
 def pair_forces(pair, torque, friction=0.0) -> PairForces:
@@ -546,7 +548,7 @@ def pair_forces(pair, torque, friction=0.0) -> PairForces:
     radial = abs(float(v1[0]))
     ft = abs(v1[1])
     fa = abs(v1[2])
-    fn = float(np.linalg.norm(v1))
+    fn = float(_norm(v1))
     return PairForces(
         kind, t, t2, (ft, ft), (radial, radial), (fa, fa), (fn, fn), np.stack([v1, v2]), point,
         np.stack([np.zeros(3), centre2]), np.stack([z, z]), float(awt),

@@ -5,13 +5,15 @@ land, and the face width against R_e / 3, each with its margin; optionally write
 
 The module is the outer transverse module m_et; the face width defaults to R_e / 3.5. --shift is
 the pinion's profile shift at the mean cone (the wheel gets its negative), --gleason the Gleason
-proportions of KHK Table 4.11. The exit status is 1 when a check fails. Load capacity (ISO 10300)
+proportions of KHK Table 4.11. With --torque (N m on the pinion) the mesh forces at the mean
+cone follow (ISO 10300-1). The exit status is 1 when a check fails. Load capacity (ISO 10300)
 is not rated.
 
 Examples:
     geartrain bevel 20 40 --module 3 --face-width 22
     geartrain bevel 20 40 --module 3 --face-width 22 --gleason --scene pair.glb
     geartrain bevel 17 43 --module 2.5 --face-width 12 --shaft-angle 70 --shift 0.2
+    geartrain bevel 20 40 --module 3 --face-width 22 --torque 50
 """
 
 from __future__ import annotations
@@ -46,6 +48,7 @@ NAMES = {
     "backlash": "--backlash",
     "bore": "--bore",
     **DRAWING_NAMES,
+    "torque": "--torque",
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -92,6 +95,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--bore", type=positive("--bore", "mm"), default=None,
         help="bore diameter of both --scene gears, mm (default: none)",
     )  # fmt: skip
+    parser.add_argument(
+        "--torque", type=finite("--torque"), default=None,
+        help="torque on the pinion, N m: print the mesh forces at the mean cone",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
@@ -118,6 +125,11 @@ def run(args: argparse.Namespace) -> int:
     report = pair.check()
     print(pair.describe())
     print(report)
+    if args.torque is not None:
+        from gears.forces import bevel_pair_forces
+
+        print()
+        print(bevel_pair_forces(pair, args.torque))
     write_scene(
         args, lambda tol: pair.scene(tolerance=tol, backlash=args.backlash, bore=args.bore),
         SCENE_TOLERANCE,

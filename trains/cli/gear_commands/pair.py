@@ -3,12 +3,14 @@ tip shortening), the working pressure angle and centre distance, contact ratios,
 efficiency and every check with its margin. The exit status is 1 when a check fails.
 
 With --center-distance the profile shifts follow from the centre distance, divided between the
-two gears by --split.
+two gears by --split. With --torque (N m on gear 1) the mesh forces follow: tangential, radial,
+axial and normal, on each gear, in the pair's frame (ISO 6336-1; Ozols (11.8)).
 
 Examples:
     geartrain pair 12 24 --module 3 --shift 0.6 0.36
     geartrain pair 20 80 --module 2 --internal --shift 0 0.5 --helix 15 --face-width 20
     geartrain pair 12 24 --module 3 --center-distance 56.5
+    geartrain pair 20 40 --module 5 --torque 100
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from trains.cli._common import (
     PAIR_NAMES,
     bounded,
     build_pair,
+    finite,
     non_negative,
     pair_arguments,
     positive,
@@ -43,6 +46,7 @@ NAMES = {
     "min_contact_ratio": "--min-contact-ratio",
     "min_tip_land": "--min-tip-land",
     "friction": "--friction",
+    "torque": "--torque",
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -69,6 +73,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--tolerance", type=positive("--tolerance", "mm"), default=None,
         help="mesh tolerance of --scene, mm (default 0.02)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--torque", type=finite("--torque"), default=None,
+        help="torque on gear 1, N m (signed about its axis): print the mesh forces",
     )  # fmt: skip
 
 
@@ -180,6 +188,11 @@ def run(args: argparse.Namespace) -> int:
     )
     print()
     print(pair_report(pair, args.min_contact_ratio, args.min_tip_land, args.friction))
+    if args.torque is not None:
+        from gears.forces import pair_forces
+
+        print()
+        print(pair_forces(pair, args.torque))
     write_scene(args, lambda tol: pair.scene(tolerance=tol), 0.02,
                 lambda _, tol: f"both gears in mesh, tolerance {tol:g} mm")  # fmt: skip
     return OK if ok else CHECK_FAILED

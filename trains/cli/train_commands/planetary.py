@@ -2,7 +2,9 @@
 and every mesh, each with its margin. Give three tooth counts (sun, planet, ring) or four (sun,
 the planet gear on the sun, the planet gear on the ring, ring) for a stepped planet. With
 --torque and --speed (on the sun, ring fixed) every mesh is also rated by ISO 6336 method B
-(pitting and bending, planets sharing the load with K_gamma). The exit status is 1 when a check
+(pitting and bending, planets sharing the load with K_gamma) and the stage's loads are printed:
+every mesh force, the planet pin with the centrifugal force of the planet's solid, the carrier
+torque and the net radial force on the sun and the carrier. The exit status is 1 when a check
 fails or a safety is below its minimum.
 
 Examples:
@@ -151,12 +153,30 @@ def run(args: argparse.Namespace) -> int:
     if ratings is not None:
         print()
         ok = _print_ratings(ratings, args, rating_options(args)) and ok
+        print()
+        print(_loads(stage, args))
     write_scene(args, lambda tol: stage.scene(face_width=args.face_width, tolerance=tol),
                 tolerance, lambda _, tol: f"planets phased, tolerance {tol:g} mm")  # fmt: skip
     if args.animate is not None:
         stage.animate(args.animate, frames=frames, tolerance=tolerance)
         print(f"wrote {args.animate} (one mesh cycle: carrier turning, ring fixed)")
     return OK if ok else CHECK_FAILED
+
+
+def _loads(stage, args: argparse.Namespace):
+    """The stage's loads at the rating's torque and speed (sun in, ring fixed), the planets'
+    mass from their solids of --face-width and the material's density."""
+    from gears import MATERIALS
+    from trains.capacity import load_sharing
+    from trains.loading import planetary_loads
+
+    material = rating_options(args)["material"]
+    density = getattr(
+        MATERIALS.get(material, material), "density", MATERIALS["case-carburized"].density
+    )
+    print(f"loads: {args.torque:g} N m at {args.speed:g} rpm on the sun (ring fixed)")
+    return planetary_loads(stage, "sun", stage.carrier, "ring", args.torque, args.speed,
+                           load_sharing(stage.n_planets), args.face_width, density)  # fmt: skip
 
 
 def _print_ratings(ratings: dict, args: argparse.Namespace, options: dict) -> bool:

@@ -1,6 +1,8 @@
 """Solve a gear train read from a TOML file (see docs/trains.md for the format): the speed of
 every member, the speeds relative to the carriers (planet bearing speeds), the ratios and, with
-an output member, the torques, powers, losses and efficiency.
+an output member, the torques, powers, losses and efficiency, and the forces: every mesh force
+and every member's bearing load at --torque (N m), when every mesh has real gears or --module
+gives the pitch diameters of the meshes given by tooth counts.
 
 Speeds given as integers, decimals or fractions are exact. The file's [run] table supplies a
 default for every option; an option given here overrides it.
@@ -9,6 +11,7 @@ Examples:
     geartrain train examples/train_closed_differential.toml
     geartrain train examples/train_closed_differential.toml --input 1=880 --output 4
     geartrain train examples/train_simple_planetary.toml --fixed ring --input sun=1500
+    geartrain train examples/train_simple_planetary.toml --torque 100 --module 2
 """
 
 from __future__ import annotations
@@ -17,7 +20,7 @@ import argparse
 from fractions import Fraction
 from typing import Any
 
-from trains.cli._common import bounded, exact, finite, input_file
+from trains.cli._common import bounded, exact, finite, input_file, positive
 
 HELP = "solve a gear train from a TOML file (speeds, ratios, torques, efficiency)"
 
@@ -26,6 +29,7 @@ NAMES = {
     "mesh_efficiency": "--efficiency",
     "input_torque": "--torque",
     "input_speed": "--input",
+    "module": "--module",
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -54,8 +58,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="efficiency of every mesh in its carrier frame (default: the file's, else 1)",
     )  # fmt: skip
     parser.add_argument(
-        "--torque", type=finite("--torque"), default=1.0, help="input torque (non-zero)"
+        "--torque", type=finite("--torque"), default=1.0, help="input torque, N m (non-zero)"
     )
+    parser.add_argument(
+        "--module", type=positive("--module", "mm"), default=None,
+        help="module of the meshes given by tooth counts, mm: their forces (pitch diameters m z)",
+    )  # fmt: skip
 
 
 def _speed(name: str, text: str) -> Fraction:
@@ -154,7 +162,29 @@ def run(args: argparse.Namespace) -> int:
         print("SELF-LOCKING: the output cannot be driven from this input")
     if pf.circulating_power > 0:
         print(f"circulating power {pf.circulating_power:.6g} (input power {pf.input_power:.6g})")
+    _print_loads(t, args, list(inputs), output, fixed, eta, pf)
     return _checks(t)
+
+
+def _print_loads(t, args, inputs, output, fixed, eta, pf) -> None:
+    """Every mesh force and bearing load (trains.loads), or why there are none."""
+    from trains.loading import loads
+
+    kinematic = [r.name for r in t.relations if r.kind == "mesh" and r.pair is None]
+    if kinematic and args.module is None:
+        print(f"\n(forces: give --module for the meshes of tooth counts {', '.join(kinematic)})")
+        return
+    from trains.errors import TrainError
+
+    try:
+        ld = loads(t, inputs, output, fixed, pf.torques[inputs[0]],
+                   {k: float(pf.speeds[k]) for k in inputs}, 1.0 if eta is None else eta,
+                   t.run_defaults.get("friction"), args.module)  # fmt: skip
+    except TrainError as exc:  # the speeds and torques above stand; the forces need geometry
+        print(f"\n(no forces: {exc})")
+        return
+    print(f"\nforces at {pf.torques[inputs[0]]:g} N m on {inputs[0]} (N, N m)")
+    print(ld)
 
 
 def _checks(t) -> int:
