@@ -94,8 +94,11 @@ def pair_geometry(
     >>> round(float(g.contact_ratio), 5)
     1.36264
     """
-    args = [np.asarray(v, float) for v in (z1, z2, module, x1, x2, pressure_angle, helix_angle)]
-    args += [np.asarray(addendum, float), np.asarray(internal, bool)]
+    names = ("z1", "z2", "module", "x1", "x2", "pressure_angle", "helix_angle", "addendum")
+    values = (z1, z2, module, x1, x2, pressure_angle, helix_angle, addendum)
+    args = [_floats(name, v) for name, v in zip(names, values, strict=True)]
+    args.append(np.asarray(internal, bool))
+    args.append(_flags("tip_shortening", tip_shortening))
     shape = np.broadcast_shapes(*(v.shape for v in args))
     n = math.prod(shape)
     if threads is None:
@@ -107,7 +110,7 @@ def pair_geometry(
         # every argument at the full shape: the block's in-place steps (inv_wt *= 2 tan) need
         # their first operand as large as the result (a scalar z1 with arrays of pressure angle)
         full = [np.broadcast_to(v, shape) for v in args]
-        return PairGeometry(*_pair_geometry_block(*full, tip_shortening))
+        return PairGeometry(*_pair_geometry_block(*full))
     # Large arrays: blocks of _CHUNK pairs, whose temporaries stay in cache, shared by the
     # threads (numpy ufuncs release the GIL). Measured in docs/performance.md.
     flat = [v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for v in args]
@@ -117,7 +120,7 @@ def pair_geometry(
         i0, i1 = bounds
         part = [v if v.ndim == 0 else v[i0:i1] for v in flat]
         _check_rows(part, (i1 - i0,), i0)
-        for row, value in zip(out, _pair_geometry_block(*part, tip_shortening), strict=True):
+        for row, value in zip(out, _pair_geometry_block(*part), strict=True):
             row[i0:i1] = value
 
     blocks = list(itertools.pairwise([*range(0, n, _CHUNK), n]))
@@ -141,6 +144,27 @@ _ROWS = (
     ("addendum", lambda a: (a[7] > 0) & (a[7] < 10), "0 < addendum < 10 (module units)"),
     ("z2", lambda a: ~a[8] | (a[1] > a[0]), "z2 > z1 for a ring (internal)"),
 )
+
+
+def _floats(name: str, value) -> np.ndarray:
+    """``value`` as a float array, or a GearError where it is no number in float range."""
+    if type(value) is float:
+        return np.asarray(value)
+    try:
+        a = np.asarray(value, float)
+    except OverflowError:
+        raise GearError(f"{name}: a value beyond the range of floats (10**400?)") from None
+    except (TypeError, ValueError):
+        raise GearError(f"{name} = {value!r}; valid is a number or an array of numbers") from None
+    return a
+
+
+def _flags(name: str, value) -> np.ndarray:
+    """``value`` as a bool array (True/False or an array of them), or a GearError naming it."""
+    a = np.asarray(value)
+    if a.dtype != bool and not (a.dtype.kind in "iu" and np.all((a == 0) | (a == 1))):
+        raise GearError(f"{name} = {value!r}; valid is True, False or an array of them")
+    return a.astype(bool)
 
 
 def _check_rows(args, shape, offset: int) -> None:
@@ -224,8 +248,8 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
     y *= half
     # k = y - (x1 + x2) when negative (DIN 3960), external pairs only
     k = np.minimum(y - xs, 0.0) if external else np.where(s > 0, np.minimum(y - s * xs, 0.0), 0.0)
-    if not tip_shortening:
-        k = np.zeros_like(k)
+    if not np.all(tip_shortening):
+        k = np.where(tip_shortening, k, 0.0)
     mt = m / cos_b
     d1 = z1 * mt
     d2 = z2 * mt

@@ -512,7 +512,8 @@ class GearPair:
         sigma_Hlim: float | tuple[float, float] | None = None,
         sigma_Flim: float | tuple[float, float] | None = None, face_width: float | None = None,
         contacts: tuple[int, int] = (1, 1), idler: tuple[bool, bool] = (False, False),
-        misalignment: float | None = None, root: str = "auto", **factors,
+        misalignment: float | None = None, root: str = "auto",
+        root_roughness: float | None = None, **factors,
     ) -> Rating:  # fmt: skip
         """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
 
@@ -531,11 +532,12 @@ class GearPair:
         quality : int
             ISO 1328 accuracy grade 1 ... 12.
         roughness : float
-            Flank roughness Ra, um.
+            Flank roughness Ra, um (0.01 ... 100).
         oil_viscosity : float
             nu_40 of the oil, mm^2/s.
         tip_relief : float, optional
-            Tip relief C_a in mm (default: the running-in amount of ISO 6336-1).
+            Tip relief C_a in mm, at most 0.1 m_n (default: the running-in amount of
+            ISO 6336-1).
         sigma_Hlim, sigma_Flim : float or pair, optional
             Allowable stress numbers replacing the material's, MPa.
         face_width : float, optional
@@ -548,6 +550,9 @@ class GearPair:
         root : str
             How Y_F and Y_S find the root (:data:`gears.rating.capacity.ROOT_ROUTES`; by default
             measured on the real tooth of internal and shaper-cut gears).
+        root_roughness : float, optional
+            Roughness Ra of the root fillets, um, for Y_RrelT (default ``roughness``: give it
+            for a ground flank with a hobbed root).
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
             replaces the computed one (:data:`gears.rating.iso6336.FACTORS`).
@@ -574,7 +579,7 @@ class GearPair:
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
             tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
             face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
-            root=root, **factors,
+            root=root, root_roughness=root_roughness, **factors,
         )  # fmt: skip
 
     # --- checks ----------------------------------------------------------------------------------

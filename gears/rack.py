@@ -25,7 +25,24 @@ import numpy as np
 
 from gears.errors import GearError
 
-__all__ = ["BasicRack", "RackTool"]
+__all__ = ["BasicRack", "RackTool", "max_root_radius"]
+
+
+def max_root_radius(pressure_angle, dedendum):
+    """Largest tool tip radius rho_fP* (module units) that still leaves a (zero-width) flat tool
+    tip land, for the rack's pressure angle (degrees) and dedendum h_fP* (arrays broadcast).
+
+    Half the tool tooth at its tip line is ``pi/4 - h_fP tan(alpha)``; a tip round of radius
+    rho consumes ``rho (1 - sin alpha) / cos alpha`` of it.
+
+    >>> round(float(max_root_radius(20, 1.25)), 4), round(float(max_root_radius(30, 1.25)), 4)
+    (0.4719, 0.1103)
+    """
+    a = np.radians(pressure_angle)
+    half_land = np.pi / 4 - np.asarray(dedendum, float) * np.tan(a)
+    out = half_land * np.cos(a) / (1.0 - np.sin(a))
+    return out[()] if np.ndim(out) == 0 else out
+
 
 # ISO 53:1998 profiles: (h_fP*, rho_fP*); all have alpha_P = 20 deg, h_aP* = 1.0.
 _ISO53 = {"A": (1.25, 0.38), "B": (1.25, 0.30), "C": (1.25, 0.25), "D": (1.40, 0.39)}
@@ -149,14 +166,9 @@ class BasicRack:
 
     @property
     def max_root_radius(self) -> float:
-        """Largest tool tip radius that still leaves a (zero-width) flat tool tip land.
-
-        Half the tool tooth at its tip line is ``pi/4 - h_fP tan(alpha)``; a tip round of radius
-        rho consumes ``rho (1 - sin alpha) / cos alpha`` of it.
-        """
-        a = math.radians(self.pressure_angle)
-        half_land = math.pi / 4 - self.dedendum * math.tan(a)
-        return half_land * math.cos(a) / (1.0 - math.sin(a))
+        """Largest tool tip radius that still leaves a (zero-width) flat tool tip land
+        (:func:`max_root_radius`)."""
+        return float(max_root_radius(self.pressure_angle, self.dedendum))
 
     @property
     def straight_flank_depth(self) -> float:

@@ -94,7 +94,8 @@ def rating(
         Losses for the power flow (default lossless), as for :func:`trains.power_flow`.
     **options
         Passed to :meth:`gears.GearPair.rating` (``life``, ``quality``, ``roughness``,
-        ``oil_viscosity``, ``application_factor``, factors such as ``K_v=1.0``).
+        ``root_roughness``, ``oil_viscosity``, ``application_factor``, factors such as
+        ``K_v=1.0``).
 
     Returns
     -------
@@ -162,6 +163,8 @@ def rating(
         k_gamma = _per_mesh(load_sharing_factor, r.name, "load_sharing_factor")
         if k_gamma is None:
             k_gamma = load_sharing(copies) if copies > 1 else 1.0
+        else:
+            _at_least_one("load_sharing_factor", k_gamma, r.name)
         kw = dict(options)
         kw.setdefault("K_gamma", k_gamma)
         b = _per_mesh(face_width, r.name, "face_width")
@@ -174,6 +177,21 @@ def rating(
         except GearError as exc:
             raise TrainError(f"mesh {r.name}: {exc}") from None
     return out
+
+
+def _at_least_one(name: str, value: Any, mesh: str) -> None:
+    """A load factor the caller gives: one finite number >= 1 (ISO 6336-1's K_gamma)."""
+    try:
+        ok = (
+            not isinstance(value, bool)
+            and isinstance(value, numbers.Real)
+            and math.isfinite(float(value))
+            and float(value) >= 1.0
+        )
+    except OverflowError:
+        ok = False
+    if not ok:
+        raise TrainError(f"{name} = {value!r} (mesh {mesh}); valid is a number >= 1 (K_gamma)")
 
 
 def _idler(train: Train, flow, member: str, gear) -> bool:

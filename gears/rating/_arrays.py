@@ -38,17 +38,26 @@ def where(cond, a, b):
 def number(name, value, low, high, low_open=True, high_open=True, integer=False):
     """``value`` as a float array, or a GearError naming the first bad entry and the range."""
     if type(value) is float or type(value) is int:  # the one-pair path: no array needed
-        v = float(value)
+        try:
+            v = float(value)
+        except OverflowError:  # an int beyond the range of floats (10**400)
+            raise GearError(
+                f"{name} = {shown(value)}; valid is {_range(name, low, high, low_open, high_open)}"
+            ) from None
         if (
             math.isfinite(v) and (v > low if low_open else v >= low)
             and (v < high if high_open else v <= high) and (not integer or v == round(v))
         ):  # fmt: skip
             return np.float64(v)
+    if isinstance(value, str | bytes | bool | np.bool_):
+        raise GearError(f"{name} = {value!r}; valid is a number")
     try:
         a = np.asarray(value, float)
-    except (TypeError, ValueError):
-        raise GearError(f"{name} = {value!r}; valid is a number") from None
-    if isinstance(value, bool | np.bool_) or a.dtype == object:
+    except (TypeError, ValueError, OverflowError):
+        raise GearError(
+            f"{name} = {shown(value)}; valid is a number in floating-point range"
+        ) from None
+    if a.dtype == object or np.asarray(value).dtype.kind in "USb":
         raise GearError(f"{name} = {value!r}; valid is a number")
     ok = np.isfinite(a) & ((a > low) if low_open else (a >= low))
     ok &= (a < high) if high_open else (a <= high)
@@ -57,11 +66,35 @@ def number(name, value, low, high, low_open=True, high_open=True, integer=False)
     if not np.all(ok):
         bad = np.ravel(a)[np.argmax(~np.ravel(ok))]
         at = "" if a.ndim == 0 else f" at row {int(np.argmax(~np.ravel(ok)))}"
-        lo = f"{low:g} {'<' if low_open else '<='} "
-        hi = f" {'<' if high_open else '<='} {high:g}"
         kind = "an integer " if integer else ""
-        raise GearError(f"{name} = {float(bad):g}{at}; valid is {kind}{lo}{name}{hi}")
+        valid = _range(name, low, high, low_open, high_open)
+        raise GearError(f"{name} = {float(bad):g}{at}; valid is {kind}{valid}")
     return a
+
+
+def _range(name, low, high, low_open, high_open) -> str:
+    return f"{low:g} {'<' if low_open else '<='} {name} {'<' if high_open else '<='} {high:g}"
+
+
+def shown(value) -> str:
+    """A value for a message: a huge int by its magnitude, not its 400 digits."""
+    if isinstance(value, int) and abs(value) > 10**20:
+        return f"{'-' if value < 0 else ''}10^{int(abs(value).bit_length() * 0.30103)} (about)"
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def one_number(name, value):
+    """``value`` when it is one real number (a rating of one pair), else a GearError naming it:
+    arrays go to :func:`gears.rating.iso6336.rate_pairs`."""
+    if isinstance(value, str | bytes | bool | np.bool_) or not (
+        isinstance(value, int | float | np.integer | np.floating)
+        or (isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf")
+    ):
+        raise GearError(
+            f"{name} = {shown(value)}; valid is one number (rate many pairs with gears.rate_pairs)"
+        )
+    return value
 
 
 def pair_of(name, value):

@@ -147,7 +147,9 @@ def _load_factors(q, a, mats, given):
     m_red = _where(q["internal"], mass1, mass1 * mass2 / (mass1 + mass2))
     n_e1 = 30000.0 / (np.pi * q["z1"]) * np.sqrt(c_ga / m_red)
     N = q["n"] / n_e1
-    K_v = given("K_v", dynamic_factor(N, w, c_p, f_pb - y_a, f_f - y_f, c_a, eg))
+    # ISO 6336-1 takes F_t K_A / b >= 100 N/mm in K_v and the transverse load factors
+    w100 = np.maximum(w, 100.0)
+    K_v = given("K_v", dynamic_factor(N, w100, c_p, f_pb - y_a, f_f - y_f, c_a, eg))
 
     # K_Hbeta method C, K_Fbeta (ISO 6336-1 §7.6, §7.8)
     fmb = w * K_v
@@ -164,7 +166,12 @@ def _load_factors(q, a, mats, given):
 
     # transverse load factors (ISO 6336-1 §8.3)
     Z_eps = given("Z_eps", contact_ratio_factor(ea, q["eps_beta"]))
-    K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, fmb * K_Hb, ea, eg, Z_eps)
+    K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, w100 * K_v * K_Hb, ea, eg, Z_eps)
+    # one K_alpha (ISO 6336-1 §8.3): a given K_Halpha sets K_Falpha within its bound, and back
+    if "o_K_Halpha" in a and "o_K_Falpha" not in a:
+        K_Fa = np.minimum(np.maximum(a["o_K_Halpha"], 1.0), eg / (0.25 * ea + 0.75))
+    elif "o_K_Falpha" in a and "o_K_Halpha" not in a:
+        K_Ha = np.minimum(np.maximum(a["o_K_Falpha"], 1.0), eg / (ea * Z_eps**2))
     q.update({
         "c_prime": c_p, "c_gamma_alpha": c_ga, "c_gamma_beta": c_gb, "N": N, "K_v": K_v,
         "K_Hbeta": K_Hb, "K_Fbeta": K_Fb, "Z_eps": Z_eps, "K_Halpha": given("K_Halpha", K_Ha),
@@ -293,6 +300,8 @@ def _validity(q, a, shape):
         root_ok,
         qs_ok,
         ~q["interferes"],
+        (q["Z_eps"] > 0) | ("o_Z_eps" in a),
+        _finite(q),
     ]
     reason = np.zeros(shape, int)
     for code, ok in reversed(list(enumerate(checks, 1))):
@@ -300,13 +309,21 @@ def _validity(q, a, shape):
     return reason == 0, reason
 
 
+def _finite(q):
+    """Every safety a finite number > 0 (a last guard: no NaN or inf leaves the rating)."""
+    ok = True
+    for key in ("S_H1", "S_H2", "S_F1", "S_F2"):
+        ok = ok & np.isfinite(q[key]) & (q[key] > 0)
+    return ok
+
+
 def _results(q, a, fields):
     """The safeties, then ``fields`` broadcast to the block and masked by ``valid``."""
     shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
-    valid, reason = _validity(q, a, shape)
     for i in (1, 2):
         q[f"S_H{i}"] = q[f"sigma_HP{i}"] / q[f"sigma_H{i}"]
         q[f"S_F{i}"] = q[f"sigma_FP{i}"] / q[f"sigma_F{i}"]
+    valid, reason = _validity(q, a, shape)
     q["alpha_Fen1"] = np.degrees(q["alpha_Fen1"])
     q["alpha_Fen2"] = np.degrees(q["alpha_Fen2"])
     everywhere = bool(np.all(valid))

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from gears.display import html_table
 from gears.errors import GearError
-from gears.rating._arrays import number
+from gears.rating._arrays import number, one_number
 from gears.rating.bending import load_point
 from gears.rating.iso6336 import FACTORS, QUANTITIES, PairRatings, rate_pairs
 from gears.rating.materials import material
@@ -245,7 +245,7 @@ def rate_pair(
     pair, torque, speed, material_="case-carburized", *, life=20000.0, application_factor=1.0,
     quality=6, roughness=1.0, oil_viscosity=220.0, tip_relief=None, sigma_Hlim=None,
     sigma_Flim=None, face_width=None, contacts=(1, 1), idler=(False, False), misalignment=None,
-    root="auto", **factors,
+    root="auto", root_roughness=None, **factors,
 ) -> Rating:  # fmt: skip
     """The :class:`Rating` of ``pair`` (see :meth:`gears.GearPair.rating` for the parameters).
 
@@ -253,6 +253,7 @@ def rate_pair(
     :data:`ROOT_ROUTES`; ``contacts`` and ``idler`` are those of
     :func:`gears.rating.iso6336.rate_pairs` (a planet, a sun meshing several planets).
     """
+    _one_pair(locals(), factors)
     if getattr(pair, "is_rack", False):
         raise GearError("a pinion-and-rack pair has no ISO 6336 rating here; rate a gear pair")
     if root not in ROOT_ROUTES:
@@ -293,6 +294,7 @@ def rate_pair(
         internal=g2.internal, material=(m1, m2), sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
         life=life, application_factor=application_factor, quality=quality, roughness=roughness,
         oil_viscosity=oil_viscosity, tip_relief=tip_relief, contacts=contacts, idler=idler,
+        root_roughness=root_roughness,
         misalignment=misalignment, addendum=g1.rack.addendum,
         dedendum=(g1.rack.dedendum, g2.rack.dedendum),
         root_radius=(g1.rack.root_radius, g2.rack.root_radius),
@@ -305,7 +307,25 @@ def rate_pair(
         "torque": float(torque), "speed": float(speed), "life": float(life), "face_width": b,
         "materials": m1.name if m1 == m2 else f"{m1.name} / {m2.name}",
         "application_factor": application_factor, "quality": quality, "roughness": roughness,
+        "root_roughness": roughness if root_roughness is None else root_roughness,
         "oil_viscosity": oil_viscosity, "tip_relief": tip_relief, "contacts": contacts,
         "idler": idler, "given": dict(factors),
     }  # fmt: skip
     return Rating(pair, values, settings, (routes[0], routes[1]))
+
+
+_ONE = ("torque", "speed", "life", "application_factor", "quality", "roughness", "oil_viscosity",
+        "tip_relief", "face_width", "misalignment", "root_roughness")  # fmt: skip
+_PER_GEAR = ("sigma_Hlim", "sigma_Flim", "contacts", "idler")
+
+
+def _one_pair(args: dict, factors: dict) -> None:
+    """Every value of one pair's rating is one number (or a pair of them): arrays belong to
+    :func:`gears.rating.iso6336.rate_pairs`."""
+    for name in _ONE:
+        if args[name] is not None:
+            one_number(name, args[name])
+    for name, value in (*((n, args[n]) for n in _PER_GEAR), *factors.items()):
+        for v in value if isinstance(value, tuple | list) else (value,):
+            if v is not None and not isinstance(v, bool):
+                one_number(name, v)

@@ -56,6 +56,7 @@ from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.meshing import _CHUNK, _pool, default_threads, pair_geometry
+from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import number as _number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import rate_block
@@ -134,6 +135,10 @@ REASONS = (
     "q_s = s_Fn / (2 rho_F) lies outside 1 <= q_s < 8, the range of Y_S by method B",
     "an inner point of single contact lies inside a base circle (the mesh interferes): Z_B or "
     "Z_D does not apply",
+    "the contact ratio factor Z_eps of ISO 6336-2 §8 has no value here: (4 - eps_alpha)/3 "
+    "(1 - eps_beta) + eps_beta/eps_alpha <= 0 (a transverse contact ratio near 4 or above)",
+    "a stress or safety is not a finite number: the load and the gear lie outside the range of "
+    "the rating's formulas",
 )
 
 _FIELDS = ["S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_HP1",
@@ -240,6 +245,10 @@ _RESULTS = tuple(_FIELDS[:-2])
 
 
 _OVERRIDABLE = {f[0]: f[1] for f in FACTORS}
+# the smallest value a rating takes: torque (N m), flank and root roughness Ra (um, below
+# ISO 1302's finest class N1 = 0.025 um), face width and largest tip relief (module units)
+_MIN_TORQUE, _MIN_RA, _MIN_WIDTH, _MAX_RELIEF = 1e-9, 0.01, 0.1, 0.1
+_FACTOR_RANGE = (1e-3, 1e6)  # a factor given by its symbol (the load factors from 1)
 
 
 def _overrides(factors):
@@ -253,12 +262,14 @@ def _overrides(factors):
         name = key.replace("'", "_prime")
         if _OVERRIDABLE[key]:
             v1, v2 = _pair_of(key, value)
-            out[f"{name}1"] = _number(key, v1, 0.0, 1e6)
-            out[f"{name}2"] = _number(key, v2, 0.0, 1e6)
+            out[f"{name}1"] = _number(key, v1, *_FACTOR_RANGE, low_open=False)
+            out[f"{name}2"] = _number(key, v2, *_FACTOR_RANGE, low_open=False)
         else:
             if isinstance(value, tuple | list):
                 raise GearError(f"{key} = {value!r} is one value for the mesh, not a pair")
-            out[name] = _number(key, value, 0.0, 1e6)
+            # the load factors are at least 1 (ISO 6336-1: K_A, K_gamma, K_v, K_beta, K_alpha)
+            low = 1.0 if key.startswith("K_") else _FACTOR_RANGE[0]
+            out[name] = _number(key, value, low, _FACTOR_RANGE[1], low_open=False)
     return out
 
 
@@ -273,7 +284,7 @@ def rate_pairs(
     oil_viscosity: ArrayLike = 220.0, tip_relief: ArrayLike | None = None,
     load_sharing: ArrayLike = 1.0, contacts: Any = (1, 1), idler: Any = (False, False),
     misalignment: ArrayLike | None = None, addendum: ArrayLike = 1.0,
-    dedendum: ArrayLike = 1.25, root_radius: ArrayLike = 0.38, protuberance: ArrayLike = 0.0,
+    dedendum: ArrayLike = 1.25, root_radius: ArrayLike | None = None, protuberance: ArrayLike = 0.0,
     tip_shortening: ArrayLike = True, tip_alteration: Any = (0.0, 0.0), root: Any = (None, None),
     factors: dict[str, Any] | None = None, errors: str = "raise",
     fields: Sequence[str] | None = None, threads: int | None = None, geometry: Any = None,
@@ -319,7 +330,9 @@ def rate_pairs(
         Effective equivalent misalignment F_betax in um, replacing method C's estimate.
     dedendum, root_radius, protuberance
         The basic rack's h_fP*, rho_fP* and protuberance s_pr* (module units), for both gears
-        or a pair: the tool, for Y_F, Y_S, C_B and the root diameters.
+        or a pair: the tool, for Y_F, Y_S, C_B and the root diameters. ``root_radius=None``
+        takes :class:`gears.rack.BasicRack`'s, capped to fit the tool at this pressure angle
+        and dedendum (:func:`gears.rack.max_root_radius`), as :class:`gears.Gear` does.
     tip_alteration : pair
         Each gear's own tip alteration k (module units) on top of the pair's tip shortening.
     root : pair
@@ -406,7 +419,32 @@ def _arguments(args):
     a.update(zip(("z1", "z2", "m", "x1", "x2", "pa", "helix", "ha", "internal"), base, strict=True))
     a["alpha_wt"] = np.asarray(geo.working_pressure_angle)
     a["k"] = np.asarray(geo.tip_alteration)
+    _per_module(a)
     return a, (m1, m2)
+
+
+def _per_module(a):
+    """The lengths a tooth of module m_n bounds: a face width of at least 0.1 m_n and a tip
+    relief of at most 0.1 m_n (then converted to um)."""
+    m = a["m"]
+    checks = [("b", "face_width", a["b"] >= _MIN_WIDTH * m, f"face_width >= {_MIN_WIDTH:g} m_n")]
+    if "C_a" in a:
+        valid = f"0 <= tip_relief <= {_MAX_RELIEF:g} m_n"
+        checks.append(("C_a", "tip_relief", a["C_a"] <= _MAX_RELIEF * m, valid))
+    for key, name, good, valid in checks:
+        if np.all(good):
+            continue
+        shape = np.shape(good)
+        i = int(np.argmax(~np.ravel(good)))
+        v, mi = (float(np.ravel(np.broadcast_to(x, shape))[i]) for x in (a[key], m))
+        at = f" at row {i}" if shape else ""
+        unit = " (tip relief is in mm: 5 um is 0.005)" if key == "C_a" else ""
+        limit = (_MIN_WIDTH if key == "b" else _MAX_RELIEF) * mi
+        raise GearError(
+            f"{name} = {v:g} mm{at}; valid is {valid} = {limit:g} mm for m_n = {mi:g} mm{unit}"
+        )
+    if "C_a" in a:
+        a["C_a"] = a["C_a"] * 1000.0  # um
 
 
 def _checked(args, m1, m2):
@@ -418,19 +456,25 @@ def _checked(args, m1, m2):
     k1, k2 = _pair_of("tip_alteration", args["tip_alteration"])
     hf1, hf2 = _pair_of("dedendum", args["dedendum"])
     rho1, rho2 = _pair_of("root_radius", args["root_radius"])
+    if rho1 is None or rho2 is None:  # the Gear's default: ISO 53 A's, capped to fit the tool
+        pa = _number("pressure_angle", args["pressure_angle"], 1.0, 45.0, False)
+        rho1, rho2 = (
+            np.minimum(BasicRack.root_radius, max_root_radius(pa, _number("dedendum", hf, 0, 10)))
+            if rho is None else rho
+            for rho, hf in ((rho1, hf1), (rho2, hf2))
+        )  # fmt: skip
     spr1, spr2 = _pair_of("protuberance", args["protuberance"])
     roughness, root_roughness = args["roughness"], args["root_roughness"]
+    root_roughness = roughness if root_roughness is None else root_roughness
     a = {
         "b": _number("face_width", args["face_width"], 0.0, 1e5),
-        "T": _number("torque", args["torque"], 0.0, 1e12),
+        "T": _number("torque", args["torque"], _MIN_TORQUE, 1e12, low_open=False),
         "n": _number("speed", args["speed"], 0.0, 1e7),
         "life": _number("life", args["life"], 0.0, 1e9),
         "K_A": _number("application_factor", args["application_factor"], 1.0, 100.0, False),
         "Q": _number("quality", args["quality"], 1.0, 12.0, False, False, integer=True),
-        "Ra": _number("roughness", roughness, 0.0, 100.0),
-        "Ra_root": _number(
-            "root_roughness", roughness if root_roughness is None else root_roughness, 0.0, 100.0
-        ),
+        "Ra": _number("roughness", roughness, _MIN_RA, 100.0, low_open=False),
+        "Ra_root": _number("root_roughness", root_roughness, _MIN_RA, 100.0, low_open=False),
         "nu40": _number("oil_viscosity", args["oil_viscosity"], 0.0, 1e5),
         "K_gamma": _number("load_sharing", args["load_sharing"], 1.0, 10.0, low_open=False),
         "c1": _number("contacts", c1, 1.0, 1e3, low_open=False),
@@ -445,13 +489,13 @@ def _checked(args, m1, m2):
         "rho2": _number("root_radius", rho2, 0.0, 10.0, low_open=False),
         "spr1": _number("protuberance", spr1, 0.0, 1.0, low_open=False),
         "spr2": _number("protuberance", spr2, 0.0, 1.0, low_open=False),
-        "sH1": _number("sigma_Hlim", m1.sigma_Hlim if h1 is None else h1, 0.0, 1e5),
-        "sH2": _number("sigma_Hlim", m2.sigma_Hlim if h2 is None else h2, 0.0, 1e5),
-        "sF1": _number("sigma_Flim", m1.sigma_Flim if f1 is None else f1, 0.0, 1e5),
-        "sF2": _number("sigma_Flim", m2.sigma_Flim if f2 is None else f2, 0.0, 1e5),
+        "sH1": _number("sigma_Hlim", m1.sigma_Hlim if h1 is None else h1, 1.0, 1e5, False),
+        "sH2": _number("sigma_Hlim", m2.sigma_Hlim if h2 is None else h2, 1.0, 1e5, False),
+        "sF1": _number("sigma_Flim", m1.sigma_Flim if f1 is None else f1, 1.0, 1e5, False),
+        "sF2": _number("sigma_Flim", m2.sigma_Flim if f2 is None else f2, 1.0, 1e5, False),
     }
     if args["tip_relief"] is not None:
-        a["C_a"] = _number("tip_relief", args["tip_relief"], 0.0, 10.0, low_open=False) * 1000.0
+        a["C_a"] = _number("tip_relief", args["tip_relief"], 0.0, 10.0, low_open=False)
     if args["misalignment"] is not None:
         a["F_bx"] = _number("misalignment", args["misalignment"], 0.0, 1e5, low_open=False)
     return a

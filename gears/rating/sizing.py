@@ -29,6 +29,7 @@ import numpy as np
 
 from gears.errors import GearError
 from gears.geometry import reference_diameter, root_diameter
+from gears.rating._arrays import shown
 from gears.rating.iso6336 import FACTORS, PairRatings, rate_pairs
 from gears.rating.materials import Material, material
 
@@ -62,7 +63,7 @@ RING_RIM = 3.5
 #: (besides torque, speed, material, life and face_width); any other keyword is a factor
 RATING_OPTIONS = (
     "application_factor", "quality", "roughness", "oil_viscosity", "tip_relief", "sigma_Hlim",
-    "sigma_Flim", "contacts", "idler", "misalignment", "root",
+    "sigma_Flim", "contacts", "idler", "misalignment", "root", "root_roughness",
 )  # fmt: skip
 _FACTOR_NAMES = tuple(f[0] for f in FACTORS)
 _SAFETIES = ("S_H1", "S_H2", "S_F1", "S_F2")
@@ -122,13 +123,13 @@ class Load:
 
 
 def _positive(name: str, value, error=GearError) -> float:
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, numbers.Real)
-        or not (math.isfinite(float(value)) and float(value) > 0)
-    ):
-        raise error(f"{name} = {value!r}; valid is a finite number > 0")
-    return float(value)
+    try:
+        v = float(value) if isinstance(value, numbers.Real) else math.nan
+    except OverflowError:  # an int beyond the range of floats
+        v = math.inf
+    if isinstance(value, bool) or not (math.isfinite(v) and v > 0):
+        raise error(f"{name} = {shown(value)}; valid is a finite number > 0")
+    return v
 
 
 def min_safeties(min_safety, error=GearError) -> tuple[float, float]:

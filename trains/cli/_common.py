@@ -533,6 +533,7 @@ RATING_NAMES = {
     "life": "--life",
     "quality": "--quality",
     "roughness": "--roughness",
+    "root_roughness": "--root-roughness",
     "oil_viscosity": "--oil-viscosity",
     "tip_relief": "--tip-relief",
     "application_factor": "--application-factor",
@@ -547,6 +548,7 @@ RATING_DEFAULTS = {
     "life": 20000.0,
     "quality": 6,
     "roughness": 1.0,
+    "root_roughness": None,
     "oil_viscosity": 220.0,
     "tip_relief": None,
     "application_factor": 1.0,
@@ -558,9 +560,10 @@ RATING_DEFAULTS = {
 def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> None:
     """The operating conditions of an ISO 6336 rating (``rate``, ``planetary``): ``--torque``,
     ``--speed``, ``--material``, ``--life``, ``--quality``, ``--roughness``,
-    ``--oil-viscosity``, ``--tip-relief``, ``--application-factor``, ``--min-pitting`` and
-    ``--min-bending``. Their defaults (:data:`RATING_DEFAULTS`) are filled in by
-    :func:`rating_options`, so a command can tell which were given (:func:`rating_given`)."""
+    ``--root-roughness``, ``--oil-viscosity``, ``--tip-relief``, ``--application-factor``,
+    ``--min-pitting`` and ``--min-bending``. Their defaults (:data:`RATING_DEFAULTS`) are
+    filled in by :func:`rating_options`, so a command can tell which were given
+    (:func:`rating_given`)."""
     need = "" if required else " (with --speed: rate every mesh)"
     d = RATING_DEFAULTS
     parser.add_argument(
@@ -588,6 +591,11 @@ def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> 
     parser.add_argument(
         "--roughness", type=positive("--roughness", "um"), default=None,
         help=f"flank roughness Ra, um (default {d['roughness']:g})",
+    )  # fmt: skip
+    parser.add_argument(
+        "--root-roughness", type=positive("--root-roughness", "um"), default=None,
+        metavar="RA", help="root fillet roughness Ra, um (default: --roughness; a ground flank "
+        "with a hobbed root has a rougher root)",
     )  # fmt: skip
     parser.add_argument(
         "--oil-viscosity", type=positive("--oil-viscosity", "mm^2/s"), default=None,
@@ -619,8 +627,8 @@ def rating_given(args: argparse.Namespace) -> list[str]:
 def rating_options(args: argparse.Namespace) -> dict:
     """The keyword arguments of ``GearPair.rating`` / ``Planetary.rating`` the options of
     :func:`rating_arguments` give (torque, speed and the minimums aside), defaults filled in."""
-    keys = ("material", "life", "quality", "roughness", "oil_viscosity", "tip_relief",
-            "application_factor")  # fmt: skip
+    keys = ("material", "life", "quality", "roughness", "root_roughness", "oil_viscosity",
+            "tip_relief", "application_factor")  # fmt: skip
     return {k: RATING_DEFAULTS[k] if getattr(args, k) is None else getattr(args, k) for k in keys}
 
 
@@ -738,8 +746,8 @@ def load_options(args: argparse.Namespace, widths_alone: bool = False) -> dict:
                 if getattr(args, f"min_{k}") is not None}  # fmt: skip
     if minimums:
         out["min_safety"] = minimums
-    for key in ("material", "life", "quality", "roughness", "oil_viscosity", "tip_relief",
-                "application_factor"):  # fmt: skip
+    for key in ("material", "life", "quality", "roughness", "root_roughness", "oil_viscosity",
+                "tip_relief", "application_factor"):  # fmt: skip
         if getattr(args, key) is not None:
             out[key] = getattr(args, key)
     return out
