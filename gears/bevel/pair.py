@@ -42,6 +42,7 @@ from gears.bevel.gear import BevelGear, VirtualGear
 from gears.bevel.solid import bevel_placement
 from gears.budget import check_budget
 from gears.errors import GearError
+from gears.forces import PairForces, bevel_pair_forces
 from gears.geometry import check_real, check_teeth
 from gears.mating import Rack
 from gears.pair import GearPair
@@ -398,6 +399,19 @@ class BevelPair:
         """Ozols (14.25) on the virtual pair: ``1 - (pi f eps / 2)(1/z_v1 + 1/z_v2)`` (the
         sliding of a straight bevel mesh is that of its Tredgold pair)."""
         return self.virtual_pair.mesh_efficiency(friction)
+
+    # --- forces ----------------------------------------------------------------------------------
+    def forces(self, torque: float) -> PairForces:
+        """The mesh forces at the mean cone under ``torque`` N m on the pinion (ISO 10300-1 /
+        DIN 3991): ``F_t = 2000 T / d_m1``, ``F_r = F_t tan alpha cos delta``, ``F_a = F_t
+        tan alpha sin delta`` for each gear, as vectors in the frame of :meth:`placement`
+        (:func:`gears.forces.bevel_mesh_forces`).
+
+        >>> f = BevelPair(20, 40, module=3, face_width=20).forces(50)
+        >>> [round(v, 2) for v in (*f.radial, *f.axial)]     # swapped at 90 deg
+        [637.63, 318.81, 318.81, 637.63]
+        """
+        return bevel_pair_forces(self, torque)
 
     # --- placement -------------------------------------------------------------------------------
     def placement(self, angle: float = 0.0) -> tuple[np.ndarray, np.ndarray]:

@@ -248,3 +248,23 @@ def test_pair_forces_figure():
         from gears.figures.forces import forces_figure
 
         forces_figure([], [(0.0, 0.0, float("nan"), 1.0, "x", "mesh")])
+
+
+def test_thin_views_are_the_functions():
+    # GearPair.forces and BevelPair.forces are pair_forces and bevel_pair_forces
+    pair = GearPair(Gear(20, 5), Gear(40, 5))
+    a, b = pair.forces(100.0, friction=0.05), pair_forces(pair, 100.0, 0.05)
+    np.testing.assert_allclose(a.vectors, b.vectors, rtol=1e-15)
+    bevel = BevelPair(20, 40, 3, 20)
+    np.testing.assert_allclose(bevel.forces(-30.0).vectors, bevel_pair_forces(bevel, -30.0).vectors,
+                               rtol=1e-15)  # fmt: skip
+    assert "<table>" in a._repr_html_() and "tangential F_t" in str(a)
+
+
+def test_pair_forces_figure_method():
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    fig = GearPair(Gear(20, 5), Gear(40, 5)).forces_figure(100.0, tolerance=0.05)
+    assert len(fig.axes[0].texts) == 8
+    plt.close(fig)

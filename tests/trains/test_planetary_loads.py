@@ -134,3 +134,18 @@ def test_property_finite_or_train_error(sun, planet, n, torque, speed, k):
     assert all(math.isfinite(v) for v in ld.notes.values())
     for m in ld.members.values():
         assert np.all(np.isfinite(m.force))
+
+
+def test_planetary_loads_method_and_roles():
+    # Planetary.loads is planetary_loads with the stage's roles, K_gamma and material density
+    p = Planetary(21, 36, 93, n_planets=3, module=2)
+    a = p.loads(100.0, 1500.0, planet_mass=0.6)
+    b = planetary_loads(p, "sun", "arm", "ring", 100.0, 1500.0, 1.16, planet_mass=0.6)
+    assert a.notes == pytest.approx(b.notes, rel=1e-15)
+    # carrier fixed: sun in, ring out; the carrier stands, so no centrifugal force
+    c = p.loads(100.0, 1500.0, fixed="carrier", planet_mass=0.6)
+    assert c.notes["centrifugal force [N]"] == 0.0
+    assert c.notes["output torque (balancing moment) [N m]"] == pytest.approx(100 * 93 / 21)
+    with pytest.raises(TrainError, match="material"):
+        p.loads(100.0, 1500.0, material="cheese")
+    assert "<table>" in a._repr_html_() and "centrifugal force" in str(a)

@@ -24,12 +24,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from gears import Gear, GearPair
+from gears import MATERIALS, Gear, GearPair
 from gears.arguments import check_angle, check_real
 from gears.errors import GearError
 from gears.report import Report
+from trains.capacity import load_sharing
 from trains.capacity import rating as rate_train
 from trains.errors import TrainError
+from trains.loading import TrainLoads, planetary_loads
 from trains.planetary import checks, placement, scene
 from trains.planetary.checks import Assembly
 from trains.planetary.placement import Placement
@@ -554,6 +556,49 @@ class Planetary:
         return rate_train(self.train, name[input], name[output], fixed=[name[fixed]],
                           torque=torque, speed=speed, material=material, face_width=face_width,
                           load_sharing_factor=load_sharing_factor, **options)  # fmt: skip
+
+    def loads(
+        self, torque: float, speed: float, fixed: str = "ring", input: str | None = None,
+        output: str | None = None, face_width: float | None = None,
+        material: Any = "case-carburized", planet_mass: float | None = None,
+        load_sharing_factor: float | None = None, mesh_efficiency: float | None = None,
+        friction: float | None = None,
+    ) -> TrainLoads:  # fmt: skip
+        """Every force of the stage (:func:`trains.loading.planetary_loads`): each mesh per
+        planet, the most loaded planet carrying ``K_gamma / n`` (default
+        :func:`trains.load_sharing`), its pin load with the centrifugal force ``m omega_H^2
+        rho`` of its solid (``face_width`` mm, the ``material``'s density; or ``planet_mass``
+        kg), at the placement's spacing; the carrier torque, the output's balancing moment and
+        the net radial force on the sun and the carrier (in :attr:`TrainLoads.notes`).
+
+        ``torque`` (N m) and ``speed`` (rpm) are the input member's; the roles default as in
+        :meth:`ratio` (ring fixed: sun in, carrier out).
+
+        Examples
+        --------
+        Ozols (11.11): M_H = M1 (1 + r3 / r1); planets sharing the load equally leave the sun
+        unloaded, the default K_gamma = 1.16 of three planets does not.
+
+        >>> p = Planetary(21, 36, 93, n_planets=3, module=2)
+        >>> ld = p.loads(100, 1500, planet_mass=0.6, load_sharing_factor=1.0)
+        >>> round(ld.notes["carrier torque [N m]"], 6), round(ld.members["sun"].radial_load, 6)
+        (-542.857143, 0.0)
+        >>> round(p.loads(100, 1500, planet_mass=0.6).members["sun"].radial_load, 2)
+        405.4
+        """
+        fixed, input, output = _default_roles(
+            self._member(fixed),
+            None if input is None else self._member(input),
+            None if output is None else self._member(output),
+        )
+        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        if isinstance(material, str) and material not in MATERIALS:
+            raise TrainError(f"material = {material!r}; valid are {', '.join(MATERIALS)}")
+        density = getattr(material, "density", None) or MATERIALS[material].density
+        k = load_sharing(self.n_planets) if load_sharing_factor is None else load_sharing_factor
+        return planetary_loads(self, name[input], name[output], name[fixed], torque, speed, k,
+                               face_width, density, planet_mass, mesh_efficiency,
+                               friction)  # fmt: skip
 
     # ---- conditions (trains.planetary.checks) ---------------------------------------------
     def assembly(self) -> Assembly:

@@ -126,10 +126,8 @@ def run(args: argparse.Namespace) -> int:
     print(pair.describe())
     print(report)
     if args.torque is not None:
-        from gears.forces import bevel_pair_forces
-
         print()
-        print(bevel_pair_forces(pair, args.torque))
+        print(pair.forces(args.torque))
     write_scene(
         args, lambda tol: pair.scene(tolerance=tol, backlash=args.backlash, bore=args.bore),
         SCENE_TOLERANCE,

@@ -189,10 +189,8 @@ def run(args: argparse.Namespace) -> int:
     print()
     print(pair_report(pair, args.min_contact_ratio, args.min_tip_land, args.friction))
     if args.torque is not None:
-        from gears.forces import pair_forces
-
         print()
-        print(pair_forces(pair, args.torque))
+        print(pair.forces(args.torque))
     write_scene(args, lambda tol: pair.scene(tolerance=tol), 0.02,
                 lambda _, tol: f"both gears in mesh, tolerance {tol:g} mm")  # fmt: skip
     return OK if ok else CHECK_FAILED

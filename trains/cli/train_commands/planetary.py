@@ -165,18 +165,10 @@ def run(args: argparse.Namespace) -> int:
 
 def _loads(stage, args: argparse.Namespace):
     """The stage's loads at the rating's torque and speed (sun in, ring fixed), the planets'
-    mass from their solids of --face-width and the material's density."""
-    from gears import MATERIALS
-    from trains.capacity import load_sharing
-    from trains.loading import planetary_loads
-
-    material = rating_options(args)["material"]
-    density = getattr(
-        MATERIALS.get(material, material), "density", MATERIALS["case-carburized"].density
-    )
+    mass from their solids of --face-width and the rating material's density."""
     print(f"loads: {args.torque:g} N m at {args.speed:g} rpm on the sun (ring fixed)")
-    return planetary_loads(stage, "sun", stage.carrier, "ring", args.torque, args.speed,
-                           load_sharing(stage.n_planets), args.face_width, density)  # fmt: skip
+    return stage.loads(args.torque, args.speed, face_width=args.face_width,
+                       material=rating_options(args)["material"])  # fmt: skip
 
 
 def _print_ratings(ratings: dict, args: argparse.Namespace, options: dict) -> bool:
