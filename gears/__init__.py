@@ -21,6 +21,7 @@ from gears.errors import GearError
 from gears.gear import Gear
 from gears.mating import Rack
 from gears.meshing import PairGeometry, pair_geometry
+from gears.noncircular.conjugate import conjugate, transmission_error
 from gears.noncircular.pair import NonCircularPair
 from gears.pair import GearPair
 from gears.rack import BasicRack
@@ -55,8 +56,10 @@ __all__ = [
     "Report",
     "ShaperCutter",
     "WormPair",
+    "conjugate",
     "gear_margins",
     "pair_geometry",
     "pair_margins",
     "rate_pairs",
+    "transmission_error",
 ]

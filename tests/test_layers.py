@@ -75,7 +75,7 @@ LAYERS = {
             "worm.checks",
             "noncircular.checks",
         ],
-        ["cutting.outline", "rating.root", "search.candidates"],
+        ["cutting.outline", "rating.root", "search.candidates", "noncircular.teeth"],
         [
             "solid.mesh",
             "solid.animate",

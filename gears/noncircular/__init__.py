@@ -1,5 +1,6 @@
-"""Non-circular gears: centrodes from a motion law (Ozols section 19-1), their checks, and
-``NonCircularPair``.
+"""Non-circular gears: centrodes from a motion law (Ozols section 19-1), their checks, teeth cut
+by a rack rolled on any pitch curve, conjugate profiles and the transmission error of any two
+outlines (Ozols 19-2), and ``NonCircularPair``.
 
 The names below are imported on first use (:mod:`gears.lazy`): importing one module of the
 family does not load the rest.
@@ -11,6 +12,12 @@ __getattr__, __dir__, __all__ = attach(
     __name__,
     {
         "center_distance_for_lobes": "gears.noncircular.centrode",
+        "conjugate": "gears.noncircular.conjugate",
+        "cut_outline": "gears.noncircular.teeth",
+        "normal_miss": "gears.noncircular.conjugate",
+        "rack_tooth": "gears.noncircular.teeth",
+        "RackCutter": "gears.noncircular.teeth",
+        "transmission_error": "gears.noncircular.conjugate",
         "eccentric_radius": "gears.noncircular.centrode",
         "elliptical_radius": "gears.noncircular.centrode",
         "equivalent_teeth": "gears.noncircular.checks",

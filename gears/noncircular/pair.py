@@ -21,16 +21,20 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+import shapely
 from numpy.typing import ArrayLike
 from scipy.interpolate import CubicSpline
 
 from gears.arguments import (
+    check_angle,
+    check_callback,
     check_choice,
     check_integer,
     check_module,
     check_positive,
     check_pressure_angle,
     check_real,
+    check_tolerance,
 )
 from gears.errors import GearError
 from gears.noncircular.centrode import (
@@ -51,6 +55,15 @@ from gears.noncircular.centrode import (
     pole_radii,
 )
 from gears.noncircular.checks import tooth_margins
+from gears.noncircular.conjugate import transmission_error
+from gears.noncircular.teeth import (
+    RackCutter,
+    check_cut_budget,
+    cut_outline,
+    rack_frames,
+    rack_tooth,
+    roll_step,
+)
 from gears.report import Finding, Report
 
 __all__ = ["NonCircularPair"]
@@ -323,6 +336,123 @@ class NonCircularPair:
     def _ring2(self) -> bool:
         """On an internal pair: gear 2 is the ring (omega1/omega2 > 1)."""
         return self.kind == "internal" and float(self.law.q(0.0)) < 1.0
+
+    # -- teeth --------------------------------------------------------------------------------
+    @property
+    def cutter(self) -> RackCutter:
+        """The rack cutter of both gears (ISO 53 A proportions at the fitted module)."""
+        if self.module is None:
+            raise GearError(
+                f"{self.name} has no module: give module= to the constructor to cut teeth"
+            )
+        return RackCutter(self.module, self.pressure_angle, self.addendum)
+
+    def _arc(self, phi: np.ndarray) -> np.ndarray:
+        """The arc length rolled (mm) when gear 1 has turned ``phi`` radians (any number of
+        periods)."""
+        x = self._grid
+        arc = np.concatenate([[0.0], np.cumsum(_spline_arc_length(self._splines[0], True))])
+        k, rest = np.divmod(np.asarray(phi, float), self.law.period)
+        return k * arc[-1] + np.interp(rest, x, arc)
+
+    def _input_at_arc(self, rolled: np.ndarray) -> np.ndarray:
+        """The input angle (radians) at which ``rolled`` mm have rolled (the inverse of _arc)."""
+        x = self._grid
+        arc = np.concatenate([[0.0], np.cumsum(_spline_arc_length(self._splines[0], True))])
+        k, rest = np.divmod(np.asarray(rolled, float), arc[-1])
+        phi = k * self.law.period + np.interp(rest, arc, x)
+        for _ in range(3):  # Newton on the spline's own arc length: the linear inverse's
+            s1 = self._splines[0]  # error is O(h^2), this brings it to round-off
+            xx = np.mod(phi, self.law.period)
+            speed = polar_arc_length(s1(xx), s1(xx, 1))
+            phi = phi - (self._arc(phi) - rolled) / speed
+        return phi
+
+    def outline(
+        self, gear: int = 1, tolerance: float = 0.01, progress: Callable | None = None
+    ) -> shapely.Polygon:
+        """Gear ``gear``'s outline in its own frame (O at the origin, as at input angle 0), its
+        teeth cut by the rack cutter rolled along the pitch curve (:mod:`gears.noncircular.teeth`),
+        to ``tolerance`` mm."""
+        g = check_integer("gear", gear, 1, 2)
+        check_callback("progress", progress)
+        cutter = self.cutter
+        tol = check_tolerance(tolerance, module=cutter.module)
+        if self.kind != "external":
+            raise GearError(
+                "teeth are cut on external non-circular pairs only; an internal pair's ring "
+                "needs a shaper cutter, which is not modelled here"
+            )
+        return self._outline(g, tol, progress)
+
+    def _outline(self, g: int, tol: float, progress) -> shapely.Polygon:
+        cutter = self.cutter
+        kmax = float(np.max(np.abs(self.curvature(np.degrees(self._grid), g))))
+        length = self.pitch_lengths[g - 1]
+        ds = roll_step(cutter, kmax, tol)
+        n = max(8, math.ceil(length / ds))
+        tooth = rack_tooth(cutter, tol)
+        check_cut_budget(n, 2 * math.ceil(cutter.reach / cutter.pitch) + 3, len(tooth), tol,
+                         f"gear {g} of {self.name}")  # fmt: skip
+        rolled = np.arange(n) * (length / n)
+        phi = self._input_at_arc(rolled)
+        xx = np.mod(phi, self.law.period)
+        s1 = self._splines[0]
+        r, dr = s1(xx), s1(xx, 1)
+        t, nrm = rack_frames(r, dr)
+        pole = np.stack([r, np.zeros_like(r)], axis=-1)
+        if g == 1:
+            rotation, center = -phi, (0.0, 0.0)
+        else:
+            rotation, center = self.law.psi(phi), (self.center_distance, 0.0)
+        blank = self._blank(g, tol)
+        return cut_outline(blank, tooth, cutter.pitch, cutter.reach, pole, t, nrm, rolled,
+                           rotation, center, g == 2, tol, progress)  # fmt: skip
+
+    def _blank(self, g: int, tol: float) -> shapely.Polygon:
+        """The pitch curve in gear ``g``'s own frame offset outwards by the addendum."""
+        s = self._splines[g - 1]
+        period = 2.0 * math.pi / self.lobes[g - 1]
+        kmax = float(np.max(np.abs(self.curvature(np.degrees(self._grid), g))))
+        step = math.sqrt(2.0 * tol / max(kmax, 1e-12))  # chord sag tol / 4
+        n = min(max(64, math.ceil(self.pitch_lengths[g - 1] / step)), 2_000_000)
+        x = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+        r = s(np.mod(x, period))
+        theta = -x if g == 1 else math.pi + x
+        curve = shapely.Polygon(np.stack([r * np.cos(theta), r * np.sin(theta)], axis=-1))
+        quad = max(2, math.ceil(math.pi / 2 / (2 * math.acos(1 - tol / 4 / self.module))))
+        return curve.buffer(self.addendum * self.module, quad_segs=min(quad, 64))
+
+    def outlines(
+        self, angle: float = 0.0, tolerance: float = 0.01, progress: Callable | None = None
+    ) -> tuple[shapely.Polygon, shapely.Polygon]:
+        """Both gears in mesh when gear 1 has turned ``angle`` degrees: gear 1 about the origin,
+        gear 2 about (a, 0) turned back by the output angle (it turns the other way)."""
+        phi = check_angle("angle", angle)
+        first = self.outline(1, tolerance, progress)
+        second = self.outline(2, tolerance)
+        return self._placed(first, second, phi)
+
+    def transmission_error(
+        self, angles: ArrayLike | None = None, tolerance: float = 0.01
+    ) -> np.ndarray:
+        """The geometric transmission error of the cut teeth against the law, degrees of gear 2
+        at each input angle (``angles``, degrees; by default 4 per tooth over a turn of gear
+        1): :func:`gears.noncircular.conjugate.transmission_error` on :meth:`outlines`."""
+        tol = check_tolerance(tolerance, module=self.cutter.module)
+        if angles is None:
+            angles = np.linspace(0.0, 360.0, 4 * self.teeth[0] + 1)
+        first, second = self.outlines(0.0, tol)
+        return transmission_error(first, second, ((0.0, 0.0), (self.center_distance, 0.0)),
+                                  angles, self.output_angle)  # fmt: skip
+
+    def _placed(self, first, second, phi: float):
+        from shapely import affinity
+
+        psi = float(self.output_angle(phi))
+        one = affinity.rotate(first, phi, origin=(0.0, 0.0))
+        two = affinity.rotate(second, -psi, origin=(0.0, 0.0))
+        return one, affinity.translate(two, self.center_distance, 0.0)
 
     # -- checks ---------------------------------------------------------------------------------
     def check(self, min_tip_land: float = 0.2) -> Report:
