@@ -58,6 +58,7 @@ LAYERS = {
             "contact.analysis",
             "worm.geometry",
             "figures.forces",
+            "noncircular.conjugate",
         ],
         [
             "checks",

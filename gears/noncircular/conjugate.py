@@ -22,6 +22,7 @@ from collections.abc import Callable
 
 import numpy as np
 import shapely
+from numpy.typing import ArrayLike
 from shapely import affinity
 
 from gears.arguments import check_choice, check_integer, check_point, check_real
@@ -128,7 +129,9 @@ def _least_gap(q, other, a, b, center, sense, first: int = 48) -> float:
 
 
 def transmission_error(
-    outline1, outline2, centers, angles, output, *, kind: str = "external",
+    outline1: shapely.Polygon, outline2: shapely.Polygon,
+    centers: tuple[tuple[float, float], tuple[float, float]], angles: ArrayLike,
+    output: float | Callable, *, kind: str = "external",
 ) -> np.ndarray:  # fmt: skip
     """The geometric transmission error of two outlines turned about fixed centres, degrees of
     gear 2 (its actual angle minus the nominal, in its sense of rotation: negative lags).
@@ -246,7 +249,7 @@ def _output_law(output) -> Callable:
 
 
 def conjugate(
-    profile, center_distance: float, output, *, kind: str = "external",
+    profile: ArrayLike, center_distance: float, output: float | Callable, *, kind: str = "external",
     window: tuple[float, float] = (-120.0, 120.0), steps: int = 2400,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
     """The profile on gear 2 conjugate to ``profile`` on gear 1 (Ozols 19-2: the envelope by
