@@ -54,6 +54,7 @@ LAYERS = {
             "cutting.cutter",
             "bevel.cone",
             "rating._block",
+            "rating.losses",
             "search.cluster",
             "contact.analysis",
             "worm.geometry",

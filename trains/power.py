@@ -205,7 +205,7 @@ def power_flow(
     input: str | Sequence[str],
     output: str,
     fixed: Iterable[str] = (),
-    mesh_efficiency: float | Mapping[str, float] | None = None,
+    mesh_efficiency: Any = None,
     input_torque: float = 1.0,
     input_speed: float | Mapping[str, float] = 1.0,
     friction: float | None = None,
@@ -232,6 +232,12 @@ def power_flow(
         geometry, :meth:`gears.GearPair.mesh_efficiency` (Ozols (14.25): contact ratio, tooth
         counts, internal or external), unless ``mesh_efficiency`` names it in a mapping; a
         scalar ``mesh_efficiency`` then applies to the kinematic-only meshes and links.
+        ``"gears"`` takes every real mesh's efficiency at its operating point from its gears,
+        :meth:`gears.GearPair.efficiency` (ISO/TR 14179-2: its torque per planet copy, its speed
+        relative to its carrier; ``input_torque`` in N m and ``input_speed`` in rpm then), and a
+        callable ``(pair, torque, speed) -> efficiency`` does the same with a model of one's own
+        (``lambda p, t, n: p.efficiency(t, n, viscosity=20).efficiency``); the other relations
+        are lossless, or estimated with ``friction``.
     input_torque : float
         Torque on the (first) input member; the result scales with it.
     input_speed : float or mapping
@@ -268,10 +274,81 @@ def power_flow(
     w = {m: float(motion[m]) for m in train.members}
     if not all(math.isfinite(x) for x in w.values()):
         raise TrainError("speeds must be finite")
-    etas = _efficiencies(train, mesh_efficiency, friction)
-    balance = _Balance(train, inputs, output, fixed, w, etas, tq)
-    x, levers, drivers, iteration = balance.settle()
-    return balance.flow(x, levers, drivers, iteration)
+    model = _mesh_model(mesh_efficiency)
+    if model is None:
+        etas = _efficiencies(train, mesh_efficiency, friction)
+        balance = _Balance(train, inputs, output, fixed, w, etas, tq)
+        x, levers, drivers, iteration = balance.settle()
+        return balance.flow(x, levers, drivers, iteration)
+    return _operating_flow(train, inputs, output, fixed, w, tq, model, friction)
+
+
+#: Fixed-point steps of the operating-point efficiencies (each mesh's efficiency depends on its
+#: load, which depends on the efficiencies; the load enters as F^0.2, so a few steps settle it).
+OPERATING_STEPS = 30
+
+
+def _mesh_model(mesh_efficiency: Any) -> Any:
+    """The operating-point model asked for: ``"gears"`` (each mesh's
+    :meth:`gears.GearPair.efficiency` with its defaults), a callable ``(pair, torque, speed) ->
+    efficiency``, or None for the fixed efficiencies."""
+    if isinstance(mesh_efficiency, str):
+        if mesh_efficiency != "gears":
+            raise TrainError(
+                f"mesh_efficiency = {mesh_efficiency!r}; valid is a number in (0, 1], a mapping "
+                "relation -> efficiency, 'gears' or a callable (pair, torque, speed)"
+            )
+        return lambda pair, torque, speed: pair.efficiency(torque, speed).efficiency
+    if callable(mesh_efficiency) and not isinstance(mesh_efficiency, Mapping):
+        return mesh_efficiency
+    return None
+
+
+def _operating_flow(
+    train: Train, inputs: list[str], output: str, fixed: list[str], w: dict[str, float],
+    tq: float, model: Any, friction: Any,
+) -> PowerFlow:  # fmt: skip
+    """The power flow with every real mesh's efficiency taken from ``model`` at its own torque
+    (per planet copy, on its external gear) and speed relative to its carrier, found by
+    fixed-point iteration from the lossless (or ``friction``) flow."""
+    base = _efficiencies(train, None, friction)
+    planets = dict(getattr(train, "_planets", {}))
+    meshes = [
+        (j, r) for j, r in enumerate(train.relations)
+        if r.pair is not None and hasattr(r.pair, "efficiency") and r.gears
+    ]  # fmt: skip
+    etas = list(base)
+    flow = None
+    for _ in range(OPERATING_STEPS):
+        balance = _Balance(train, inputs, output, fixed, w, etas, tq)
+        x, levers, drivers, iteration = balance.settle()
+        flow = balance.flow(x, levers, drivers, iteration)
+        new = list(etas)
+        for j, r in meshes:
+            m1, m2 = (r.b, r.a) if r.gears[0].internal else (r.a, r.b)
+            copies = max(planets.get(m1, 1), planets.get(m2, 1))
+            torque = abs(flow.relations[r.name].torques.get(m1, 0.0)) / copies
+            speed = abs(w[m1] - w[r.carrier])
+            if torque == 0.0 or speed == 0.0:
+                new[j] = 1.0  # unloaded or not rolling: no sliding loss
+                continue
+            try:
+                e = model(r.pair, torque, speed)
+            except (GearError, TrainError) as exc:
+                raise TrainError(
+                    f"relation {r.name!r}: no efficiency from its gears at {torque:.6g} N m, "
+                    f"{speed:.6g} rpm: {exc}"
+                ) from None
+            if isinstance(e, bool) or not isinstance(e, numbers.Real) or not 0.0 < e <= 1.0:
+                raise TrainError(
+                    f"mesh_efficiency = {e!r} for {r.name!r} at {torque:.6g} N m, {speed:.6g} "
+                    "rpm; valid is a number in (0, 1]"
+                )
+            new[j] = float(e)
+        if max(abs(a - b) for a, b in zip(new, etas, strict=True)) <= 1e-12:
+            break
+        etas = new
+    return flow
 
 
 def _flow_request(

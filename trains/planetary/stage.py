@@ -482,8 +482,11 @@ class Planetary:
         fixed: str = "ring",
         input: str | None = None,
         output: str | None = None,
-        mesh_efficiency: float | None = None,
+        mesh_efficiency: Any = None,
         friction: float = 0.1,
+        *,
+        torque: float | None = None,
+        speed: float | None = None,
     ) -> float:
         """Efficiency input -> output by the relative-power (Kreines/Müller) method.
 
@@ -492,6 +495,11 @@ class Planetary:
         ``friction``), lost at whichever end drives in relative motion (Kreines / Müller; Ozols
         (14.26)). A negative value means self-locking in that direction.
 
+        ``mesh_efficiency="gears"`` (or a callable ``(pair, torque, speed) -> efficiency``)
+        takes each mesh's efficiency from its gears at the operating point,
+        :meth:`gears.GearPair.efficiency` (ISO/TR 14179-2), which needs the input's ``torque``
+        (N m) and ``speed`` (rpm).
+
         Examples
         --------
         Müller's relative-power rule: i0 = -4, eta0 = 0.97 gives eta_1H = 0.976.
@@ -499,14 +507,36 @@ class Planetary:
         >>> p = Planetary(20, 30, 80, n_planets=2)
         >>> round(p.efficiency(mesh_efficiency=0.97 ** 0.5), 6)
         0.976
+        >>> from gears import Gear
+        >>> p = Planetary(Gear(20, 2, face_width=20), Gear(31, 2, face_width=20),
+        ...               Gear(82, 2, internal=True, face_width=20), n_planets=3)
+        >>> round(p.efficiency(mesh_efficiency="gears", torque=60, speed=1500), 4)
+        0.9894
         """
         fixed, input, output = _default_roles(
             self._member(fixed),
             None if input is None else self._member(input),
             None if output is None else self._member(output),
         )
-        etas = {} if mesh_efficiency is None else {n: mesh_efficiency for n in self._pairs}
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        operating = isinstance(mesh_efficiency, str) or (
+            callable(mesh_efficiency) and not isinstance(mesh_efficiency, dict)
+        )
+        if operating:
+            if torque is None or speed is None:
+                raise TrainError(
+                    f"mesh_efficiency = {mesh_efficiency!r} needs the input's torque (N m) and "
+                    "speed (rpm): give torque= and speed="
+                )
+            for what, value in (("torque", torque), ("speed", speed)):
+                if (isinstance(value, bool) or not isinstance(value, int | float)
+                        or not (math.isfinite(value) and value > 0)):  # fmt: skip
+                    raise TrainError(f"{what} = {value!r}; valid is a finite number > 0")
+            flow = power_flow(self.train, name[input], name[output], fixed=[name[fixed]],
+                              mesh_efficiency=mesh_efficiency, input_torque=float(torque),
+                              input_speed=float(speed))  # fmt: skip
+            return float(flow.efficiency)
+        etas = {} if mesh_efficiency is None else {n: mesh_efficiency for n in self._pairs}
         flow = power_flow(self.train, name[input], name[output], fixed=[name[fixed]],
                           mesh_efficiency=etas,
                           friction=friction if mesh_efficiency is None else None)  # fmt: skip

@@ -1,0 +1,259 @@
+"""Layer 3, the load-dependent power loss of a mesh and its efficiency (ISO/TR 14179-2).
+
+The power lost by sliding in the mesh is $P_{VZP} = P\\,\\mu_{mz} H_V$: the input power, the
+mean coefficient of friction over the path of contact and the loss factor $H_V$ of the path of
+contact (ISO/TR 14179-2; Ohlendorf). The mesh efficiency is then $\\eta_z = 1 - \\mu_{mz} H_V$
+(the load-independent losses, churning and windage, and the bearings' are not counted).
+
+Loss factor (:func:`loss_factor`). Along the transverse path of contact the sliding speed grows
+linearly from the pitch point C, $v_g = |t|\\,p_{bt}\\,\\omega_1 (1 \\pm 1/u)$ at the position
+$t\\,p_{bt}$ from C ($+$ external, $-$ internal), and the load is shared equally by the tooth
+pairs in contact. The mean over one mesh cycle of $\\sum F_i v_{g,i} / (F_{bt} v_{bt})$ is
+
+$$H_V = \\frac{2\\pi (u \\pm 1)}{z_1 u \\cos\\beta_b}
+\\int_{-\\varepsilon_2}^{\\varepsilon_1} \\frac{|t|}{n(t)}\\,dt$$
+
+with $n(t)$ the number of pairs in contact when one is at $t$ ($\\lfloor\\varepsilon_\\alpha
+\\rfloor$ or one more). It is written here in closed form for any $\\varepsilon_\\alpha \\ge 1$;
+where the pitch point lies in single contact and $\\varepsilon_\\alpha < 2$ it is Ohlendorf's
+$H_V = \\pi (u+1)/(z_1 u \\cos\\beta_b)\\,(1 - \\varepsilon_\\alpha + \\varepsilon_1^2 +
+\\varepsilon_2^2)$. $\\varepsilon_1$, $\\varepsilon_2$ are the addendum contact ratios of gear 1
+(C to E, its tip) and gear 2 (A to C).
+
+Coefficient of friction (:func:`friction_coefficient`), the empirical equation of ISO/TR
+14179-2 (after Schlenk):
+$\\mu_{mz} = 0.048\\,\\left(\\frac{F_{bt}/b}{v_{\\Sigma C}\\,\\rho_{redC}}\\right)^{0.2}
+\\eta_{oil}^{-0.05} R_a^{0.25} X_L$, with $F_{bt}/b$ in N/mm, the sum of the rolling speeds at
+the pitch point $v_{\\Sigma C} = 2 v_t \\sin\\alpha_{wt}$ in m/s, the relative radius of
+curvature at the pitch point $\\rho_{redC}$ in mm (normal section), the oil's dynamic viscosity
+at its working temperature in mPa s, the mean roughness $R_a = (R_{a1} + R_{a2})/2$ in um and
+the lubricant factor $X_L$ (:data:`LUBRICANT_FACTORS`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from gears.errors import GearError
+from gears.meshing import line_positions, pair_geometry
+
+__all__ = [
+    "LUBRICANT_FACTORS",
+    "MeshLosses",
+    "friction_coefficient",
+    "loss_factor",
+    "lubricant_factor",
+    "mesh_losses",
+    "pair_losses",
+]
+
+#: Lubricant factor X_L of ISO/TR 14179-2 by base oil (as quoted from the report's table).
+LUBRICANT_FACTORS = {
+    "mineral": 1.0,
+    "polyalphaolefin": 0.8,
+    "polyglycol": 0.7,
+    "polyglycol-water-soluble": 0.6,
+    "traction": 1.5,
+    "phosphate-ester": 1.3,
+}
+
+#: Contact ratios above this are refused (the load-sharing sum runs over floor(eps) + 1 zones).
+MAX_CONTACT_RATIO = 8.0
+
+
+class MeshLosses(NamedTuple):
+    """The load-dependent mesh loss (arrays): ``loss_factor`` H_V, ``friction`` mu_mz,
+    ``efficiency`` eta_z = 1 - mu_mz H_V and ``power_loss`` P_VZP in W."""
+
+    loss_factor: np.ndarray
+    friction: np.ndarray
+    efficiency: np.ndarray
+    power_loss: np.ndarray
+
+
+def lubricant_factor(lubricant) -> float:
+    """X_L of a base oil named in :data:`LUBRICANT_FACTORS`, or a number > 0 given as is."""
+    if isinstance(lubricant, str):
+        if lubricant not in LUBRICANT_FACTORS:
+            raise GearError(
+                f"lubricant = {lubricant!r}; valid is one of {', '.join(LUBRICANT_FACTORS)} "
+                "or a factor X_L > 0"
+            )
+        return LUBRICANT_FACTORS[lubricant]
+    if isinstance(lubricant, bool) or not isinstance(lubricant, int | float | np.floating):
+        raise GearError(f"lubricant = {lubricant!r}; valid is a base oil name or X_L > 0")
+    x = float(lubricant)
+    if not (math.isfinite(x) and 0.0 < x <= 10.0):
+        raise GearError(f"lubricant factor X_L = {lubricant!r}; valid is 0 < X_L <= 10")
+    return x
+
+
+def _abs_integral(a, b):
+    """The integral of |t| from a to b (a <= b)."""
+    return 0.5 * (b * np.abs(b) - a * np.abs(a))
+
+
+def loss_factor(z1, u, epsilon_1, epsilon_2, base_helix_angle=0.0, internal=False):
+    """Loss factor H_V of the real path of contact (see the module docstring; arrays broadcast).
+
+    Parameters
+    ----------
+    z1 : array_like
+        Teeth of gear 1 (the pinion; u = z2 / z1).
+    u : array_like
+        Gear ratio z2 / z1 (> 0; for a rack, ``inf``).
+    epsilon_1, epsilon_2 : array_like
+        Addendum contact ratios: (C to E) / p_bt of gear 1's tip, (A to C) / p_bt of gear 2's
+        (either may be negative when the pitch point lies outside the path of contact); their
+        sum, the transverse contact ratio, must be >= 1.
+    base_helix_angle : array_like
+        beta_b, degrees.
+    internal : array_like
+        True where gear 2 is a ring (sliding speed ``omega_1 t (1 - 1/u)``).
+
+    Examples
+    --------
+    Ohlendorf's closed form: pi (u + 1) / (z1 u) (1 - eps + eps_1^2 + eps_2^2).
+
+    >>> round(float(loss_factor(20, 2.0, 0.8, 0.8)), 6)   # pi 3/40 (1 - 1.6 + 2 * 0.64)
+    0.160221
+    """
+    e1 = np.asarray(epsilon_1, float)
+    e2 = np.asarray(epsilon_2, float)
+    eps = e1 + e2
+    if not np.all(np.isfinite(eps) & (eps >= 1.0 - 1e-12) & (eps <= MAX_CONTACT_RATIO)):
+        bad = np.broadcast_to(eps, np.broadcast(eps, eps).shape)
+        bad = bad[~(np.isfinite(bad) & (bad >= 1.0 - 1e-12) & (bad <= MAX_CONTACT_RATIO))]
+        raise GearError(
+            f"transverse contact ratio epsilon_alpha = {bad.ravel()[:3].tolist()}; the loss "
+            f"factor H_V needs 1 <= epsilon_alpha <= {MAX_CONTACT_RATIO:g} (continuous mesh)"
+        )
+    eps = np.maximum(eps, 1.0)
+    n = np.floor(eps + 1e-12)  # pairs in contact outside the zones of one more pair
+    frac = np.maximum(eps - n, 0.0)
+    total = _abs_integral(-e2, e1)
+    extra = np.zeros(np.broadcast(e1, e2).shape)
+    for k in range(int(np.max(n)) + 1):  # zones [-eps_2 + k, -eps_2 + k + frac], k = 0 ... n
+        start = -e2 + k
+        extra = extra + np.where(k <= n, _abs_integral(start, start + frac), 0.0)
+    integral = total / n - (1.0 / n - 1.0 / (n + 1.0)) * extra
+    s = np.where(np.asarray(internal, bool), -1.0, 1.0)
+    with np.errstate(divide="ignore"):
+        inv_u = np.where(np.isinf(u), 0.0, 1.0 / np.asarray(u, float))
+    cos_bb = np.cos(np.radians(base_helix_angle))
+    return 2.0 * np.pi * (1.0 + s * inv_u) / (np.asarray(z1, float) * cos_bb) * integral
+
+
+def friction_coefficient(load_per_width, sum_velocity, curvature_radius, viscosity,
+                         roughness=1.0, lubricant_factor=1.0):  # fmt: skip
+    """Mean coefficient of friction mu_mz of the mesh, ISO/TR 14179-2 (see the module
+    docstring): ``load_per_width`` F_bt / b in N/mm, ``sum_velocity`` v_SigmaC in m/s,
+    ``curvature_radius`` rho_redC in mm, ``viscosity`` the oil's dynamic viscosity at its working
+    temperature in mPa s, ``roughness`` the mean Ra in um, ``lubricant_factor`` X_L (arrays
+    broadcast; every input > 0).
+
+    >>> round(float(friction_coefficient(500.0, 10.0, 10.0, 30.0, 1.0)), 5)
+    0.05587
+    """
+    w = np.asarray(load_per_width, float)
+    return (
+        0.048
+        * (w / (np.asarray(sum_velocity, float) * np.asarray(curvature_radius, float))) ** 0.2
+        * np.asarray(viscosity, float) ** -0.05
+        * np.asarray(roughness, float) ** 0.25
+        * np.asarray(lubricant_factor, float)
+    )
+
+
+def mesh_losses(torque, speed, z1, u, base_radius, working_pressure_angle, epsilon_1, epsilon_2,
+                face_width, base_helix_angle=0.0, internal=False, roughness=1.0, viscosity=30.0,
+                lubricant_factor=1.0) -> MeshLosses:  # fmt: skip
+    """The mesh loss from a pair's path of contact (arrays broadcast; no checks: see
+    :func:`pair_losses` and :meth:`gears.GearPair.efficiency`).
+
+    ``torque`` on gear 1 in N m, ``speed`` of gear 1 relative to the carrier in rpm,
+    ``base_radius`` r_b1 in mm, ``working_pressure_angle`` alpha_wt in degrees, ``face_width`` b
+    in mm, the rest as for :func:`loss_factor` and :func:`friction_coefficient`.
+    """
+    s = np.where(np.asarray(internal, bool), -1.0, 1.0)
+    rb1 = np.asarray(base_radius, float)
+    awt = np.radians(working_pressure_angle)
+    f_bt = 2000.0 * np.asarray(torque, float) / rb1 / 2.0  # F_bt = 2000 T / d_b1
+    rw1 = rb1 / np.cos(awt)
+    v_t = rw1 * 1e-3 * np.asarray(speed, float) * np.pi / 30.0  # m/s at the working circle
+    v_sum = 2.0 * v_t * np.sin(awt)
+    cos_bb = np.cos(np.radians(base_helix_angle))
+    rho1 = rb1 * np.tan(awt)
+    u = np.asarray(u, float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # rho_red = rho1 rho2 / (rho2 +- rho1), rho2 = u rho1: rho1 u / (u +- 1); a rack: rho1
+        rho_red = np.where(np.isinf(u), rho1, rho1 * u / (u + s)) / cos_bb
+    mu = friction_coefficient(f_bt / np.asarray(face_width, float), v_sum, rho_red, viscosity,
+                              roughness, lubricant_factor)  # fmt: skip
+    h_v = loss_factor(z1, u, epsilon_1, epsilon_2, base_helix_angle, internal)
+    loss = mu * h_v
+    power = np.asarray(torque, float) * np.asarray(speed, float) * np.pi / 30.0
+    return MeshLosses(h_v, mu, 1.0 - loss, power * loss)
+
+
+def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLike,
+                module: ArrayLike, face_width: ArrayLike, x1: ArrayLike = 0.0,
+                x2: ArrayLike = 0.0, pressure_angle: ArrayLike = 20.0,
+                helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
+                roughness: ArrayLike = 1.0, viscosity: ArrayLike = 30.0,
+                lubricant: str | float = "mineral") -> MeshLosses:  # fmt: skip
+    """The mesh loss of many pairs at once, from their tooth data (ISO 21771 geometry by
+    :func:`gears.meshing.pair_geometry`, tips shortened as there; arrays broadcast).
+
+    Raises
+    ------
+    GearError
+        Naming the value: a torque, speed, face width, roughness or viscosity not > 0, a pair
+        whose contact ratio is below 1, or a loss reaching the power (efficiency <= 0).
+
+    Examples
+    --------
+    >>> r = pair_losses([100.0, 200.0], 1500.0, 20, 50, 3.0, 30.0)
+    >>> [round(float(e), 4) for e in r.efficiency]
+    [0.9912, 0.9898]
+    """
+    for name, value in (("torque", torque), ("speed", speed), ("face_width", face_width),
+                        ("roughness", roughness), ("viscosity", viscosity)):  # fmt: skip
+        v = np.asarray(value, float)
+        if not np.all(np.isfinite(v) & (v > 0.0)):
+            bad = v[~(np.isfinite(v) & (v > 0.0))] if v.ndim else v
+            raise GearError(f"{name} = {np.ravel(bad)[:3].tolist()}; valid is a finite number > 0")
+    x_l = lubricant_factor(lubricant)
+    g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal)
+    s = np.where(np.asarray(internal, bool), -1.0, 1.0)
+    beta = np.radians(helix_angle)
+    at = np.arctan(np.tan(np.radians(pressure_angle)) / np.cos(beta))
+    mt = np.asarray(module, float) / np.cos(beta)
+    rb1 = np.asarray(z1, float) * mt * np.cos(at) / 2.0
+    rb2 = np.asarray(z2, float) * mt * np.cos(at) / 2.0
+    tw = np.tan(np.radians(g.working_pressure_angle))
+    u_a, u_e, _ = line_positions(g.tip_diameter_1 / 2, g.tip_diameter_2 / 2, rb1, rb2, tw, s)
+    pb = np.pi * mt * np.cos(at)
+    u_c = rb1 * tw
+    beta_b = np.degrees(np.arcsin(np.sin(beta) * np.cos(np.radians(pressure_angle))))
+    out = mesh_losses(torque, speed, z1, np.asarray(z2, float) / np.asarray(z1, float), rb1,
+                      g.working_pressure_angle, (u_e - u_c) / pb, (u_c - u_a) / pb, face_width,
+                      beta_b, internal, roughness, viscosity, x_l)  # fmt: skip
+    return _checked(out)
+
+
+def _checked(out: MeshLosses) -> MeshLosses:
+    """``out``, or a GearError where the loss reaches the power (the empirical friction at a
+    crawl, or a long path of contact)."""
+    if not np.all(np.isfinite(out.efficiency) & (out.efficiency > 0.0)):
+        bad = np.ravel(out.efficiency)[~(np.isfinite(np.ravel(out.efficiency))
+                                         & (np.ravel(out.efficiency) > 0.0))]  # fmt: skip
+        raise GearError(
+            f"mesh efficiency = {bad[:3].tolist()}: the friction loss mu_mz H_V reaches the "
+            "power; ISO/TR 14179-2's friction equation does not apply here (raise the speed)"
+        )
+    return out
