@@ -57,6 +57,7 @@ LAYERS = {
             "rating.losses",
             "search.cluster",
             "contact.analysis",
+            "contact.flank",
             "worm.geometry",
             "figures.forces",
             "noncircular.conjugate",
@@ -84,6 +85,7 @@ LAYERS = {
             "figures.drawing",
             "bevel.solid",
             "search.reduction",
+            "contact.plot",
         ],
         [
             "gear",

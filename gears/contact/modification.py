@@ -58,14 +58,13 @@ def profile_relief(u, root, tip, tip_relief, tip_length, root_relief, root_lengt
     into_tip = (u - (tip - toward_tip * tip_length)) * toward_tip
     into_root = ((root + toward_tip * root_length) - u) * toward_tip
     out = np.zeros(np.broadcast(u, tip, root).shape)
-    if np.any(np.asarray(tip_relief) > 0):
-        safe = np.where(np.asarray(tip_length) > 0, tip_length, 1.0)
-        out = out + np.where(tip_length > 0, tip_relief * relief_shape(into_tip / safe, kind), 0)
-    if np.any(np.asarray(root_relief) > 0):
-        safe = np.where(np.asarray(root_length) > 0, root_length, 1.0)
-        out = out + np.where(
-            root_length > 0, root_relief * relief_shape(into_root / safe, kind), 0.0
-        )
+    for amount, length, into in ((tip_relief, tip_length, into_tip),
+                                 (root_relief, root_length, into_root)):  # fmt: skip
+        if np.any(np.asarray(amount) > 0):
+            safe = np.where(np.asarray(length) > 0, length, 1.0)
+            with np.errstate(over="ignore"):  # a tiny length: a step, clipped to 1
+                ramp = relief_shape(into / safe, kind)
+            out = out + np.where(np.asarray(length) > 0, amount * ramp, 0.0)
     return out
 
 
@@ -81,7 +80,8 @@ def lead_relief(y, face_width, crowning=0.0, end_relief=0.0, end_length=0.0, hel
     half = face_width / 2.0
     out = crowning * (y / half) ** 2 + helix_slope * (y / face_width)
     if end_relief > 0 and end_length > 0:
-        into_end = (np.abs(y) - (half - end_length)) / end_length
+        with np.errstate(over="ignore"):  # a tiny length: a step, clipped to 1
+            into_end = (np.abs(y) - (half - end_length)) / end_length
         out = out + end_relief * relief_shape(into_end, kind)
     return out
 

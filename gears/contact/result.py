@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -25,6 +26,11 @@ from gears.contact.analysis import (
 )
 from gears.contact.modification import KINDS, Modification
 from gears.errors import GearError
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from numpy.typing import ArrayLike
 
 __all__ = ["MAX_CELLS", "Contact", "HarrisMap", "contact", "contact_geometry", "harris"]
 
@@ -93,12 +99,14 @@ def _checked(torque, positions, slices, geometry, extra=1):
     slices = check_integer("slices", slices, 1, 1000)
     g = geometry
     pairs = (g["path"] + g["face_width"] * abs(g["tan_base_helix"])) / g["base_pitch"]
-    cells = positions * slices * (math.ceil(pairs) + 1) * extra
+    per_position = slices * (math.ceil(pairs) + 1) * extra
+    cells = positions * per_position
     if cells > MAX_CELLS:
+        fits = MAX_CELLS // per_position
+        hint = f"positions <= {fits} at these slices" if fits >= 4 else "fewer slices"
         raise GearError(
             f"positions = {positions} x slices = {slices} (x {extra} loads and reliefs) makes "
-            f"about {cells:.3g} cells; valid is at most {MAX_CELLS:.3g}: fewer positions, "
-            "slices, loads or reliefs"
+            f"about {cells:.3g} cells; valid is at most {MAX_CELLS:.3g} cells: {hint}"
         )
     return torque, positions, slices
 
@@ -213,7 +221,7 @@ class Contact:
             live = a["active"][:, :, j]
             uj, pj = a["u"][:, :, j][live], p[:, :, j][live]
             order = np.argsort(uj)
-            out[j] = np.interp(grid, uj[order], pj[order], left=0.0, right=0.0)
+            out[j] = np.interp(grid, uj[order], pj[order])  # the ends held: within a step
         return grid, out
 
     @property
@@ -249,6 +257,14 @@ class Contact:
         """Transverse load factor: the heaviest tooth pair's line load against that of the
         ideal pair (no modification or misalignment) at the same load."""
         return self._factors[1]
+
+    def plot(self, kind: str = "te", ax: Axes | None = None) -> Figure:
+        """A matplotlib figure: ``"te"`` the transmission error and mesh stiffness over the
+        mesh cycle, ``"pattern"`` the contact pattern (:mod:`gears.contact.plot`)."""
+        from gears.contact.plot import pattern_figure, te_figure
+
+        kind = check_choice("kind", kind, ("te", "pattern"))
+        return (te_figure if kind == "te" else pattern_figure)(self, ax=ax)
 
     def __repr__(self) -> str:
         return (
@@ -326,9 +342,17 @@ class HarrisMap:
         """For each torque, the relief (mm) of the smallest peak-to-peak."""
         return self.reliefs[np.argmin(self.peak_to_peak, axis=0)]
 
+    def plot(self, ax: Axes | None = None) -> Figure:
+        """The map as a matplotlib figure (:func:`gears.contact.plot.harris_figure`)."""
+        from gears.contact.plot import harris_figure
 
-def harris(pair, torques, reliefs, *, relief_length: float | None = None, kind: str = "linear",
-           positions: int = 64, slices: int | None = None) -> HarrisMap:  # fmt: skip
+        return harris_figure(self, ax=ax)
+
+
+def harris(
+    pair, torques: ArrayLike, reliefs: ArrayLike, *, relief_length: float | None = None,
+    kind: str = "linear", positions: int = 64, slices: int | None = None,
+) -> HarrisMap:  # fmt: skip
     """The Harris map of ``pair``: transmission error peak to peak over tip ``reliefs`` (mm,
     on both gears) and ``torques`` (N m on gear 1), solved at once over arrays.
 
