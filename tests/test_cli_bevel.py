@@ -143,3 +143,14 @@ def test_property_differential_exit_status(capsys, side, pinion, n, module, glea
     code, _, err = _run(capsys, *argv)
     assert code in (0, 1, 2), err
     assert (code == 2) == bool(err)
+
+
+@pytest.mark.parametrize("z", [3, 4])
+def test_bevel_scene_of_a_few_tooth_pinion_is_written(capsys, tmp_path, z):
+    # issue 26: the solid of a 3- or 4-tooth pinion raised TypeError (exit 3, a traceback); it is
+    # a failing design (undercut), so the command writes it and exits 1
+    pytest.importorskip("trimesh")
+    stl = tmp_path / "pair.stl"
+    code, out, err = _run(capsys, "bevel", z, 40, "-m", 3, "-b", 10, "--scene", stl)
+    assert code == 1 and f"wrote {stl}" in out and "Traceback" not in err
+    assert stl.stat().st_size > 0

@@ -400,12 +400,27 @@ def _end_face(end: _End, idx, theta, eta, z: int, count: int, tolerance: float, 
     # band: row 0 of every tooth (k points each, ccw) down the end surface's lines
     row0 = grid[:, 0, :k].reshape(-1)
     ell_q = slant[0] - depth
+    if bore is None and not ell_q > 0.0:
+        # a pinion of very few teeth: its root reaches near the axis, so the band stops
+        # halfway between the axis and the lowest row point (still below every row chord)
+        ell_q = 0.5 * (float(slant[0]) if k == 1 else min(float(slant[0]), float(ell[0].min())))
     rho_q, z_q = end.meridian(ell_q)
     r_bore = 0.0 if bore is None else bore / 2.0
+    where = "front" if front else "back"
+    if not rho_q > 0.0:
+        if bore is None:
+            raise GearError(
+                f"z = {z}: the tooth spaces reach the gear's axis at its {where} end, so no solid "
+                "can be drawn; use more teeth or a positive profile shift"
+            )
+        raise GearError(
+            f"bore = {bore:g} mm does not fit: the rim below the teeth of this {z}-tooth gear "
+            f"reaches the axis at its {where} end; valid is no bore (bore=None)"
+        )
     if not rho_q > r_bore:
         raise GearError(
             f"bore = {bore:g} mm does not fit: the gear's rim below the teeth reaches down to a "
-            f"diameter of {2 * rho_q:.4f} mm at its {'front' if front else 'back'} end; valid is "
+            f"diameter of {2 * rho_q:.4f} mm at its {where} end; valid is "
             f"bore < {2 * rho_q:.4f} mm"
         )
     az0 = np.concatenate([

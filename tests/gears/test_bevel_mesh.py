@@ -180,6 +180,22 @@ def test_undercut_pinion_meshes():
     _valid(p.g1.mesh(tolerance=0.02))
 
 
+@pytest.mark.parametrize("z", [3, 4])
+@pytest.mark.parametrize("back_cone", [True, False])
+def test_pinions_of_three_and_four_teeth_mesh(z, back_cone):
+    # issue 26: the rim below the teeth of a 3- or 4-tooth pinion reached past the axis and its
+    # message formatted bore=None (TypeError); the band now stops above the axis. The solid must
+    # still be valid and, its flanks being the exact ones within the tolerance, its volume lies
+    # inside the blank's face cone: below pi R_a^2 times the axial face width plus the rim
+    p = BevelPair(z, 40, 3, 10)
+    m = p.g1.mesh(tolerance=0.01, back_cone=back_cone)
+    _valid(m)
+    r_a = p.g1.tip_diameter / 2.0
+    assert 0.0 < m.volume < math.pi * r_a**2 * float(np.ptp(m.vertices[:, 2]))
+    with pytest.raises(GearError, match=r"bore = 1 mm does not fit.*valid is no bore"):
+        p.g1.mesh(tolerance=0.01, bore=1.0, back_cone=back_cone)
+
+
 @pytest.mark.parametrize("profile", ["octoid", "spherical_involute"])
 @pytest.mark.parametrize("clearance", ["tapered", "constant"])
 def test_flank_within_tolerance_of_the_exact_surface_on_spherical_sections(profile, clearance):
