@@ -30,7 +30,10 @@ wheel).
 * **Virtual (Tredgold) spur gears** at the mean cone (Ozols (21.35)/(21.36), ISO 10300):
   ``z_v = z / cos delta``, ``d_v = d_m / cos delta``, module ``m_m``; their contact ratio and
   checks stand for the bevel pair's. A wheel with ``delta = 90`` deg is a crown gear (its
-  virtual gear a rack); ``delta > 90`` deg an internal bevel gear (a virtual ring).
+  virtual gear a rack); ``delta > 90`` deg an internal bevel gear (a virtual ring). Whether a
+  gear is a crown gear is decided once, by :func:`is_crown` (within :data:`CROWN_TOLERANCE`),
+  and :func:`pitch_angles` returns such an angle as exactly 90 deg, so every check and solid
+  agrees (``Sigma - delta_1`` of a crown wheel rounds to 89.99999999999999).
 
 The Gleason straight-bevel proportions (KHK Table 4.11: working depth 2 m, whole depth
 2.188 m, the wheel's addendum ``0.54 m + 0.46 m / (z_2 cos delta_1 / (z_1 cos delta_2))``, all at
@@ -58,6 +61,7 @@ from gears.errors import GearError
 
 __all__ = [
     "CLEARANCES",
+    "CROWN_TOLERANCE",
     "BevelGeometry",
     "axial_section",
     "bevel_geometry",
@@ -66,6 +70,7 @@ __all__ = [
     "face_width_margins",
     "full_round_radius",
     "gleason_coefficients",
+    "is_crown",
     "max_face_width",
     "pitch_angles",
     "virtual_teeth",
@@ -80,21 +85,41 @@ def _out(a):
     return a[()] if a.ndim == 0 else a
 
 
+#: A pitch angle within this many degrees of 90 is a crown gear's (:func:`is_crown`): far
+#: below any shaft angle a drawing or a machine can hold (a wheel of 40 teeth 1e-9 deg from
+#: 90 would have z_v = 2e12), far above the rounding of ``Sigma - delta_1`` (1e-14 deg).
+CROWN_TOLERANCE = 1e-9
+
+
+def is_crown(pitch_angle):
+    """True where a pitch angle (degrees) is a crown gear's, ``|delta - 90| <= CROWN_TOLERANCE``:
+    the one decision that the virtual gears, the checks and the solids share.
+
+    >>> bool(is_crown(89.99999999999999)), bool(is_crown(89.9999))
+    (True, False)
+    """
+    return _out(np.abs(np.asarray(pitch_angle, float) - 90.0) <= CROWN_TOLERANCE)
+
+
 def pitch_angles(z1, z2, shaft_angle=90.0):
     """Pitch cone angles ``(delta_1, delta_2)`` in degrees (Ozols (21.34)).
 
     ``tan delta_1 = sin Sigma / (z_2/z_1 + cos Sigma)``, ``delta_2 = Sigma - delta_1``; arctan2
-    keeps ``delta_1`` in (0, 180) for any ``0 < Sigma < 180``.
+    keeps ``delta_1`` in (0, 180) for any ``0 < Sigma < 180``. A crown gear's angle
+    (:func:`is_crown`) is returned as exactly 90.
 
     Examples
     --------
     >>> [round(float(d), 4) for d in pitch_angles(20, 60, 60.0)]   # Ozols (21.34): i = 3
     [13.8979, 46.1021]
+    >>> float(pitch_angles(20, 40, 120.0)[1])   # a crown wheel: Sigma - delta_1 = 90
+    90.0
     """
     s = np.radians(np.asarray(shaft_angle, float))
     z1, z2 = np.asarray(z1, float), np.asarray(z2, float)
     d1 = np.degrees(np.arctan2(np.sin(s), z2 / z1 + np.cos(s)))
-    return _out(d1), _out(np.degrees(s) - d1)
+    d2 = np.degrees(s) - d1
+    return _out(np.where(is_crown(d1), 90.0, d1)), _out(np.where(is_crown(d2), 90.0, d2))
 
 
 def cone_distance(z, module, pitch_angle):
@@ -108,7 +133,7 @@ def virtual_teeth(z, pitch_angle):
     internal bevel gear (``delta > 90`` deg), infinite for a crown gear."""
     c = np.cos(np.radians(np.asarray(pitch_angle, float)))
     with np.errstate(divide="ignore"):
-        return _out(np.asarray(z, float) / np.where(np.abs(c) < 1e-12, 0.0, c))
+        return _out(np.asarray(z, float) / np.where(is_crown(pitch_angle), 0.0, c))
 
 
 def full_round_radius(addendum, dedendum, pressure_angle=20.0):
@@ -240,8 +265,7 @@ def bevel_geometry(
     s_m = m_m * (np.pi / 2.0 + 2.0 * x * np.tan(alpha) + xs)
     d_m = m_m * z
     with np.errstate(divide="ignore"):
-        c = np.cos(dr)
-        c = np.where(np.abs(c) < 1e-12, 0.0, c)
+        c = np.where(is_crown(delta), 0.0, np.cos(dr))
         z_v = z / c
         d_v = d_m / c
     return BevelGeometry(*(_out(v) for v in (

@@ -30,6 +30,7 @@ from gears.bevel.cone import (
     bevel_geometry,
     face_width_margins,
     gleason_coefficients,
+    is_crown,
     pitch_angles,
     virtual_teeth,
 )
@@ -212,6 +213,37 @@ def test_crown_and_internal_virtual_pairs():
     )
     assert ring.contact_ratio > 1.0
     assert ring.check()["contact_ratio"].ok
+
+
+@settings(max_examples=30, deadline=None)
+@given(z1=st.integers(5, 60), extra=st.integers(1, 60))
+def test_a_crown_wheel_is_one_decision(z1, extra):
+    # issue 26: delta2 = Sigma - delta1 = 90 deg rounded to 89.99999999999999, so the checks
+    # took a crown wheel (z_v infinite) while the solid was drawn inside out (volume -493 mm^3).
+    # A crown wheel (derivation: equal cone distances z1 / sin delta1 = z2 / sin 90 give
+    # sin delta1 = z1 / z2 and Sigma = 90 + delta1): its pitch angle is within the tolerance of
+    # 90, the checks see a rack and the solid is refused, never drawn with a negative volume
+    z2 = z1 + extra
+    shaft = 90.0 + math.degrees(math.asin(z1 / z2))
+    d2 = float(pitch_angles(z1, z2, shaft)[1])
+    assert abs(d2 - 90.0) <= 1e-9 and is_crown(d2)
+    try:
+        p = BevelPair(z1, z2, 3, 1.0, shaft)
+    except GearError:
+        return
+    assert math.isinf(p.virtual_teeth[1]) and not p.g2.internal
+    assert p.virtual_pair.is_rack
+    with pytest.raises(GearError, match="crown"):
+        p.g2.mesh(0.05)
+
+
+def test_the_crown_wheel_of_the_issue_is_refused_by_the_cli(capsys, tmp_path):
+    from trains.cli.app import main
+
+    out = tmp_path / "crown.stl"
+    argv = ["bevel", "20", "40", "-m", "3", "-b", "10", "--shaft-angle", "120", "--scene", out]
+    assert main([str(a) for a in argv]) == 2
+    assert "crown" in capsys.readouterr().err and not out.exists()
 
 
 def test_virtual_gears_have_no_outline_and_gears_keep_whole_teeth():
