@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Callable, Iterable
+from decimal import Decimal
 
 import numpy as np
 
@@ -93,6 +94,37 @@ def _is_real(value) -> bool:
     return isinstance(value, numbers.Real) and not isinstance(value, bool | np.bool_)
 
 
+def _float(value) -> float:
+    """``float(value)``, or an infinity of its sign for an int or Fraction beyond the float
+    range (``float(10**400)`` raises OverflowError)."""
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
+def _show(value) -> str:
+    """``value`` for a message: its repr, or ``1.000e+400`` for a number too long to print
+    (an int of 10**400 overflows a float; one of 10**5000 cannot even be printed)."""
+    if isinstance(value, numbers.Rational) and not isinstance(value, bool | np.bool_):
+        big = abs(value.numerator) > 10**16 * abs(value.denominator)
+        if big:
+            return format(Decimal(value.numerator) / Decimal(value.denominator), ".3e")
+    try:
+        return repr(value)
+    except ValueError:  # a container holding such a number
+        return f"a {type(value).__name__} holding a number too long to print"
+
+
+def _whole(value) -> int | None:
+    """``value`` as an int when it is a whole real number (int-valued floats and Fractions too,
+    of any size), else None."""
+    if isinstance(value, numbers.Rational):
+        return int(value) if value.denominator == 1 else None
+    v = float(value)
+    return int(v) if math.isfinite(v) and v == int(v) else None
+
+
 def check_real(name: str, value, low=None, high=None, low_open=True, high_open=True) -> float:
     """``value`` as a finite float within ``(low, high)`` (ends open unless told), or a
     :class:`GearError` naming it and the valid range.
@@ -105,17 +137,20 @@ def check_real(name: str, value, low=None, high=None, low_open=True, high_open=T
     gears.errors.GearError: helix_angle = 60; valid is helix_angle < 60
     """
     if not _is_real(value):
-        raise GearError(f"{name} must be a real number; got {value!r}")
-    v = float(value)
-    if not math.isfinite(v):
-        raise GearError(f"{name} = {v} is not finite")
+        raise GearError(f"{name} must be a real number; got {_show(value)}")
+    v = _float(value)
+    shown = f"{v:g}" if math.isfinite(v) else _show(value)
+    if math.isnan(v) or (math.isinf(v) and isinstance(value, float | np.floating)):
+        raise GearError(f"{name} = {v} is not finite; valid is a finite number")
     if low is not None and (v <= low if low_open else v < low):
         rel = ">" if low_open else ">="
         top = "" if high is None else f" and {'<' if high_open else '<='} {high:g}"
-        raise GearError(f"{name} = {v:g}; valid is {name} {rel} {low:g}{top}")
+        raise GearError(f"{name} = {shown}; valid is {name} {rel} {low:g}{top}")
     if high is not None and (v >= high if high_open else v > high):
         rel = "<" if high_open else "<="
-        raise GearError(f"{name} = {v:g}; valid is {name} {rel} {high:g}")
+        raise GearError(f"{name} = {shown}; valid is {name} {rel} {high:g}")
+    if not math.isfinite(v):
+        raise GearError(f"{name} = {shown}; valid is a finite number (at most 1.8e308 in size)")
     return v
 
 
@@ -123,31 +158,35 @@ def check_integer(name: str, value, low: int = 1, high: int | None = None) -> in
     """``value`` as an int in ``low ... high`` (int-valued floats are accepted)."""
     span = f"an integer {low} ... {high}" if high is not None else f"an integer >= {low}"
     if not _is_real(value):
-        raise GearError(f"{name} = {value!r}; valid is {span}")
-    v = float(value)
-    if not math.isfinite(v) or v != int(v):
-        raise GearError(f"{name} = {value!r} is not a whole number; valid is {span}")
-    if int(v) < low or (high is not None and int(v) > high):
-        raise GearError(f"{name} = {int(v)}; valid is {span}")
-    return int(v)
+        raise GearError(f"{name} = {_show(value)}; valid is {span}")
+    v = _whole(value)
+    if v is None:
+        raise GearError(f"{name} = {_show(value)} is not a whole number; valid is {span}")
+    if v < low or (high is not None and v > high):
+        raise GearError(f"{name} = {_show(v)}; valid is {span}")
+    return v
 
 
 def check_teeth(name: str, z) -> int:
     """Validate a tooth count: an integer 1 ... :data:`MAX_TEETH` (int-valued floats are
     accepted)."""
     if not _is_real(z):
-        raise GearError(f"{name} must be an integer >= 1; got {z!r}")
-    if not math.isfinite(float(z)) or float(z) != int(z):
-        raise GearError(f"{name} = {z!r} is not a whole number of teeth; valid is an integer >= 1")
-    if not 1 <= int(z) <= MAX_TEETH:
-        raise GearError(f"{name} = {int(z)}; valid is an integer 1 ... {MAX_TEETH}")
-    return int(z)
+        raise GearError(f"{name} must be an integer >= 1; got {_show(z)}")
+    v = _whole(z)
+    if v is None:
+        raise GearError(
+            f"{name} = {_show(z)} is not a whole number of teeth; valid is an integer 1 ... "
+            f"{MAX_TEETH}"
+        )
+    if not 1 <= v <= MAX_TEETH:
+        raise GearError(f"{name} = {_show(v)}; valid is an integer 1 ... {MAX_TEETH}")
+    return v
 
 
 def check_positive(name: str, value, unit: str = "mm") -> float:
     """``value`` as a finite float > 0, or a :class:`GearError` naming it."""
-    if not _is_real(value) or not (math.isfinite(float(value)) and float(value) > 0.0):
-        raise GearError(f"{name} = {value!r}; valid is a finite number > 0 ({unit})")
+    if not _is_real(value) or not (math.isfinite(_float(value)) and _float(value) > 0.0):
+        raise GearError(f"{name} = {_show(value)}; valid is a finite number > 0 ({unit})")
     return float(value)
 
 
@@ -180,16 +219,16 @@ def check_length(name: str, value, scale: float, of: str = "the module") -> floa
     lo, hi = (f * scale for f in LENGTH_RANGE)
     if not lo <= v <= hi:
         raise GearError(
-            f"{name} = {value!r} mm; valid is {lo:.3g} ... {hi:.3g} mm ({LENGTH_RANGE[0]:g} ... "
-            f"{LENGTH_RANGE[1]:g} times {of}, {scale:.6g} mm)"
+            f"{name} = {_show(value)} mm; valid is {lo:.3g} ... {hi:.3g} mm "
+            f"({LENGTH_RANGE[0]:g} ... {LENGTH_RANGE[1]:g} times {of}, {scale:.6g} mm)"
         )
     return v
 
 
 def check_angle(name: str, value) -> float:
     """An angle in degrees: any finite real number."""
-    if not _is_real(value) or not math.isfinite(float(value)):
-        raise GearError(f"{name} = {value!r}; valid is a finite number of degrees")
+    if not _is_real(value) or not math.isfinite(_float(value)):
+        raise GearError(f"{name} = {_show(value)}; valid is a finite number of degrees")
     return float(value)
 
 
@@ -214,12 +253,12 @@ def check_tolerance(
     outline takes its floor from the outline's size)."""
     floor = min_tolerance(module) if floor is None else floor
     if not _is_real(tolerance):
-        raise GearError(f"{name} = {tolerance!r}; valid is a number of mm >= {floor:g}")
-    t = float(tolerance)
+        raise GearError(f"{name} = {_show(tolerance)}; valid is a number of mm >= {floor:g}")
+    t = _float(tolerance)
     if not (math.isfinite(t) and t >= floor):
         raise GearError(
-            f"{name} = {tolerance!r} mm; valid is a finite tolerance >= {floor:g} mm (the finest "
-            "this library honours; 1e-4 mm already exceeds any grinder)"
+            f"{name} = {_show(tolerance)} mm; valid is a finite tolerance >= {floor:g} mm "
+            "(the finest this library honours; 1e-4 mm already exceeds any grinder)"
         )
     return t
 
@@ -227,19 +266,20 @@ def check_tolerance(
 def check_frames(frames, name: str = "frames") -> int:
     """``frames`` as an int in ``1 ... MAX_FRAMES``, or a :class:`GearError` naming the range."""
     if not _is_real(frames):
-        raise GearError(f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES}")
-    if not (math.isfinite(frames) and frames == int(frames) and 1 <= frames <= MAX_FRAMES):
+        raise GearError(f"{name} = {_show(frames)}; valid is an integer 1 ... {MAX_FRAMES}")
+    n = _whole(frames)
+    if n is None or not 1 <= n <= MAX_FRAMES:
         raise GearError(
-            f"{name} = {frames!r}; valid is an integer 1 ... {MAX_FRAMES} (a longer animation "
+            f"{name} = {_show(frames)}; valid is an integer 1 ... {MAX_FRAMES} (a longer animation "
             "takes minutes to render; lower the count)"
         )
-    return int(frames)
+    return n
 
 
 def check_fps(fps, name: str = "fps") -> float:
     """Frames per second within :data:`MIN_FPS` ... :data:`MAX_FPS`."""
-    if not _is_real(fps) or not MIN_FPS <= float(fps) <= MAX_FPS:  # NaN fails too
-        raise GearError(f"{name} = {fps!r}; valid is a number {MIN_FPS:g} ... {MAX_FPS:g}")
+    if not _is_real(fps) or not MIN_FPS <= _float(fps) <= MAX_FPS:  # NaN fails too
+        raise GearError(f"{name} = {_show(fps)}; valid is a number {MIN_FPS:g} ... {MAX_FPS:g}")
     return float(fps)
 
 
@@ -247,7 +287,7 @@ def check_flag(name: str, value) -> bool:
     """``True`` or ``False`` (numpy booleans too); anything else is refused, so that a string
     such as ``"no"`` never counts as true."""
     if not isinstance(value, bool | np.bool_):
-        raise GearError(f"{name} = {value!r}; valid is True or False")
+        raise GearError(f"{name} = {_show(value)}; valid is True or False")
     return bool(value)
 
 
@@ -255,23 +295,25 @@ def check_choice(name: str, value, options: Iterable[str]) -> str:
     """One of ``options`` (strings)."""
     options = tuple(options)
     if not isinstance(value, str) or value not in options:
-        raise GearError(f"{name} = {value!r}; valid are {', '.join(map(repr, options))}")
+        raise GearError(f"{name} = {_show(value)}; valid are {', '.join(map(repr, options))}")
     return value
 
 
 def check_callback(name: str, value) -> Callable | None:
     """None or a callable (a ``progress`` callback)."""
     if value is not None and not callable(value):
-        raise GearError(f"{name} = {value!r}; valid is None or a callable such as f(done, total)")
+        raise GearError(
+            f"{name} = {_show(value)}; valid is None or a callable such as f(done, total)"
+        )
     return value
 
 
 def check_point(name: str, value) -> tuple[float, float]:
     """A pair of finite coordinates in mm."""
     try:
-        ok = len(value) == 2 and all(_is_real(v) and math.isfinite(float(v)) for v in value)
+        ok = len(value) == 2 and all(_is_real(v) and math.isfinite(_float(v)) for v in value)
     except TypeError:
         ok = False
     if not ok:
-        raise GearError(f"{name} = {value!r}; valid is a pair of finite coordinates (mm)")
+        raise GearError(f"{name} = {_show(value)}; valid is a pair of finite coordinates (mm)")
     return float(value[0]), float(value[1])

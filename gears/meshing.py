@@ -134,8 +134,8 @@ def pair_geometry(
 
 
 _ROWS = (
-    ("z1", lambda a: (a[0] >= 1) & (a[0] < 1e9), "a tooth count >= 1"),
-    ("z2", lambda a: (a[1] >= 1) & (a[1] < 1e9), "a tooth count >= 1"),
+    ("z1", lambda a: (a[0] >= 1) & (a[0] < 1e9), "a tooth count 1 <= z1 < 1e9"),
+    ("z2", lambda a: (a[1] >= 1) & (a[1] < 1e9), "a tooth count 1 <= z2 < 1e9"),
     ("module", lambda a: (a[2] > 0) & (a[2] < 1e6), "0 < module (mm)"),
     ("x1", lambda a: np.abs(a[3]) < 1e3, "a finite shift"),
     ("x2", lambda a: np.abs(a[4]) < 1e3, "a finite shift"),

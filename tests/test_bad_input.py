@@ -406,3 +406,61 @@ def test_pair_outlines_report_progress_as_one_sequence():
     pair.outlines(tolerance=0.01, method="rack", progress=lambda d, n: calls.append((d, n)))
     done = [d for d, _ in calls]
     assert done == sorted(done) and done[-1] == calls[-1][1]  # one run up to its total
+
+
+# ------------------------------------------------------------------------------ beyond floats
+@pytest.mark.parametrize(
+    ("call", "words"),
+    [
+        (lambda: Gear(10**400, 2), ["teeth = 1.000e+400", "1 ... 10000000"]),
+        (lambda: Gear(20, 10**400), ["module = 1.000e+400", "module <= 1e+06"]),
+        (lambda: Gear(20, 2, profile_shift=-(10**400)), ["profile_shift = -1.000e+400"]),
+        (lambda: Gear(20, 2, face_width=10**400), ["face_width = 1.000e+400"]),
+        (lambda: Gear(20, 2, helix_angle=10**400), ["helix_angle = 1.000e+400"]),
+        (lambda: Gear(1e30, 2), ["teeth = 1.000e+30", "1 ... 10000000"]),
+        (lambda: Gear(20, 2).outline(tolerance=10**5000), ["tolerance = 1.000e+5000"]),
+    ],
+)
+def test_integers_beyond_the_float_range_are_refused_naming_them(call, words):
+    # issue 26: 10**400 (a Python int or Fraction that no float holds) raised OverflowError in
+    # the argument checks; it is refused like any value out of range, shown in e-notation (an
+    # int of 5000 digits cannot even be printed by repr)
+    refused(GearError, call, *words)
+
+
+@SETTINGS
+@given(
+    value=st.one_of(
+        st.integers(-(10**500), 10**500),
+        st.fractions(),
+        st.floats(),
+        st.sampled_from([10**400, -(10**400), 5e-324, 1e308, -1e308]),
+    )
+)
+def test_argument_checks_give_a_float_or_a_gear_error(value):
+    # every checker of gears.arguments returns its canonical type or refuses with GearError:
+    # no OverflowError, ValueError of int printing, or RuntimeWarning (an error in this suite)
+    from gears import arguments as a
+
+    calls = [
+        lambda: a.check_real("x", value, -10, 10),
+        lambda: a.check_real("x", value),
+        lambda: a.check_integer("n", value, 1, 100),
+        lambda: a.check_teeth("z", value),
+        lambda: a.check_positive("b", value),
+        lambda: a.check_module(value),
+        lambda: a.check_pressure_angle(value),
+        lambda: a.check_length("b", value, 10.0),
+        lambda: a.check_angle("angle", value),
+        lambda: a.check_tolerance(value),
+        lambda: a.check_frames(value),
+        lambda: a.check_fps(value),
+        lambda: a.check_point("p", (value, 0.0)),
+    ]
+    for call in calls:
+        try:
+            out = call()
+        except GearError as exc:
+            assert str(exc)
+            continue
+        assert all(math.isfinite(v) for v in np.atleast_1d(out))

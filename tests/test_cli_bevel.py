@@ -154,3 +154,24 @@ def test_bevel_scene_of_a_few_tooth_pinion_is_written(capsys, tmp_path, z):
     code, out, err = _run(capsys, "bevel", z, 40, "-m", 3, "-b", 10, "--scene", stl)
     assert code == 1 and f"wrote {stl}" in out and "Traceback" not in err
     assert stl.stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    ("z1", "match"),
+    [
+        ("1e30", "Z1 = 1.000e+30; valid is an integer 1 ... 10000000"),
+        ("20.5", "Z1 20.5 is not a whole number"),
+        ("1e999", "Z1 1e999 is not a finite number"),
+    ],
+)
+def test_teeth_in_float_notation_are_whole_numbers_or_named(capsys, z1, match):
+    # issue 26: 1e30 teeth were "not a whole number"; a whole number in float notation is an
+    # integer, refused here for its size alone
+    code, _, err = _run(capsys, "bevel", z1, 40, "--module", 3, "--face-width", 10)
+    assert code == 2 and match in err
+
+
+def test_twenty_teeth_written_as_a_float_are_twenty(capsys):
+    code, out, _ = _run(capsys, "bevel", "20.0", "4e1", "--module", 3, "--face-width", 22,
+                        "--clearance", "tapered")  # fmt: skip
+    assert code == 0 and "26.56505" in out  # KHK Table 4.10: delta_1 of 20/40

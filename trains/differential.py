@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from gears import BevelPair, GearError, Report
+from gears.arguments import MAX_TEETH, check_integer, check_real
 from gears.bevel.drawing import bevel_svg
 from gears.bevel.solid import rotation
 from trains.errors import TrainError
@@ -51,10 +52,15 @@ _M0[:3, :3] = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 COLOURS = {"side": (222, 140, 60, 255), "pinion": (70, 130, 180, 255)}
 
 
-def _count(name: str, value: Any, low: int = 1) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < low:
-        raise TrainError(f"{name} = {value!r}; valid is an integer >= {low}")
-    return int(value)
+def _count(name: str, value: Any) -> int:
+    """A count of teeth or pinions: an integer 1 ... MAX_TEETH (a larger one is no gear, and
+    10**400 would overflow every float formula)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TrainError(f"{name} = {value!r}; valid is an integer 1 ... {MAX_TEETH}")
+    try:
+        return check_integer(name, value, 1, MAX_TEETH)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None
 
 
 class Differential:
@@ -109,7 +115,9 @@ class Differential:
             self.pair = build(self.pinion, self.side, module, face_width, 90.0, pressure_angle,
                               **kwargs)  # fmt: skip
         except GearError as exc:
-            raise TrainError(f"differential {self.side}/{self.pinion}: {exc}") from None
+            raise TrainError(
+                f"differential side = {self.side}, pinion = {self.pinion}: {exc}"
+            ) from None
         t = Train()
         t.name = f"bevel differential {self.side}/{self.pinion}, {self.n_pinions} pinions"
         t.mesh("pinion", "right", pair=self.pair, carrier="case", name="pinion-right")
@@ -154,10 +162,14 @@ class Differential:
     def _angles(self, angle: float, left: float, right: float):
         """Each member's turn in degrees: ``angle`` times its speed over the faster wheel's."""
         for name, v in (("angle", angle), ("left", left), ("right", right)):
-            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
-                raise TrainError(f"{name} = {v!r}; valid is a finite number")
+            try:
+                check_real(name, v)
+            except GearError as exc:
+                raise TrainError(str(exc)) from None
         if not abs(angle) <= 1e12:
-            raise TrainError(f"angle = {angle!r}; valid is a finite angle of at most 1e12 deg")
+            raise TrainError(
+                f"angle = {float(angle):g}; valid is a finite angle of at most 1e12 deg"
+            )
         top = max(abs(float(left)), abs(float(right)))
         if top == 0.0:
             return 0.0, 0.0, 0.0
@@ -211,13 +223,32 @@ class Differential:
             self._meshes[key] = (side, pinion)
         return self._meshes[key]
 
+    def _refuse_failing(self, check: bool, what: str) -> None:
+        """Refuse to draw a design that fails :meth:`check` (its pinions may collide, its teeth
+        interfere) unless ``check`` is False."""
+        from gears.arguments import check_flag
+
+        try:
+            check = check_flag("check", check)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
+        if check:
+            failed = self.check().failed()
+            if failed:
+                names = ", ".join(failed)
+                raise TrainError(
+                    f"{self!r} fails its checks ({names}: see check()), so its {what} would show "
+                    "what cannot be built; fix the design, or pass check=False to draw it anyway"
+                )
+
     def scene(
         self, angle: float = 0.0, left: float = 1.0, right: float = 1.0, tolerance: float = 0.02,
-        backlash: float = 0.0, bore: float | None = None,
+        backlash: float = 0.0, bore: float | None = None, check: bool = True,
     ) -> trimesh.Scene:  # fmt: skip
         """The side gears and pinions as a ``trimesh.Scene`` (:meth:`placements`): the two side
         gears share one mesh, the pinions another (instanced). ``bore`` is the side gears' bore
-        (the axle), mm.
+        (the axle), mm. A design that fails :meth:`check` (pinions that collide, teeth that
+        interfere) is refused unless ``check=False``.
 
         Examples
         --------
@@ -230,6 +261,7 @@ class Differential:
         from gears.solid.mesh import scene
 
         place = self.placements(angle, left, right)
+        self._refuse_failing(check, "scene")
         try:
             tolerance = check_tolerance(tolerance, module=self.module)
             check_budget(
@@ -250,14 +282,15 @@ class Differential:
         self, path: str | os.PathLike[str], frames: int = 48, left: float = 0.9,
         right: float = 1.1, turn: float | None = None, tolerance: float = 0.05, fps: float = 16.0,
         elevation: float = 20.0, azimuth: float = -35.0, size: int = 400,
-        progress: Callable[[int, int], object] | None = None,
+        progress: Callable[[int, int], object] | None = None, check: bool = True,
     ) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4) of the differential turning through a corner: the wheels at the
         speeds ``left`` and ``right`` (the outer wheel faster), the faster one turning by
         ``turn`` degrees over the animation (default two pinion pitches, ``720 / z_pinion``),
         every member in proportion (:meth:`placements`), seen from ``elevation`` and ``azimuth``
         degrees, ``size`` pixels square (:func:`gears.solid.render.write_animation_3d`;
-        ``progress(i, n)`` after each frame)."""
+        ``progress(i, n)`` after each frame). A design that fails :meth:`check` is refused
+        unless ``check=False`` (:meth:`scene`)."""
         from gears.arguments import check_frames, check_tolerance
         from gears.bevel.pair import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
         from gears.budget import check_budget
@@ -278,6 +311,7 @@ class Differential:
             raise TrainError(str(exc)) from None
         turn = 2 * 360.0 / self.pinion if turn is None else turn
         self.placements(0.0, left, right)  # refuse bad speeds and unassemblable pinions now
+        self._refuse_failing(check, "animation")
         if isinstance(turn, bool) or not isinstance(turn, numbers.Real) or not math.isfinite(turn):
             raise TrainError(f"turn = {turn!r}; valid is a finite number of degrees")
         side, pinion = self._solids(tolerance, 0.0, None)

@@ -96,10 +96,12 @@ def test_scene_is_overlap_free_through_a_turn(side, pinion, n):
     d = Differential(side, pinion, n_pinions=n, **GLEASON)
     tol = 0.02
     for angle in (0.0, 7.0, 23.0, 41.0):
-        worst, gaps = _overlaps(d.scene(angle, left=0.8, right=1.2, tolerance=tol))
+        # 15/10 fails only its pinion's undercut check: drawn on request, and still engaged
+        sc = d.scene(angle, left=0.8, right=1.2, tolerance=tol, check=False)
+        worst, gaps = _overlaps(sc)
         assert worst <= 1e-6, angle  # no interpenetration ...
         assert len(gaps) == 2 * n and max(gaps.values()) <= tol  # ... and every mesh engaged
-    sc = d.scene(tolerance=tol)
+    sc = d.scene(tolerance=tol, check=False)
     assert sorted(sc.graph.nodes_geometry)[:2] == ["left", "pinion1"]
     assert len(sc.geometry) == 2  # one side-gear mesh, one pinion mesh, instanced
 
@@ -248,3 +250,62 @@ def test_the_design_documents_call():
     # DESIGN.md's public surface: trains.Differential(side=24, pinion=16, n_pinions=2, module=3)
     d = Differential(side=24, pinion=16, n_pinions=2, module=3)
     assert d.solve(left=0, right=2)["case"] == 1 and d.check()["pinion.assembly"].ok
+
+
+def test_a_failing_design_is_drawn_only_when_asked():
+    # issue 26: 8 pinions on 16/10 (they assemble: 32 / 8 = 4) collide, which only check()
+    # said; the scene drew them silently. The collision is measured by manifold3d's boolean
+    # volume of neighbouring pinions (as _overlaps above)
+    pytest.importorskip("manifold3d")
+    from gears.solid.mesh import to_manifold
+
+    d = Differential(16, 10, n_pinions=8, **GLEASON)
+    assert d.check().failed() == ["pinion.neighbour"]
+    with pytest.raises(TrainError, match=r"fails its checks \(pinion.neighbour.*check=False"):
+        d.scene(tolerance=0.2)
+    with pytest.raises(TrainError, match=r"pinion.neighbour.*check=False"):
+        d.animate("never.gif", frames=2, tolerance=0.3)
+    sc = d.scene(tolerance=0.2, check=False)
+    p1, p2 = (
+        to_manifold(sc.geometry[sc.graph[n][1]], sc.graph[n][0]) for n in ("pinion1", "pinion2")
+    )
+    assert (p1 ^ p2).volume() > 1.0  # mm^3: the drawing shows the collision check() reports
+    with pytest.raises(TrainError, match="check"):
+        d.scene(tolerance=0.2, check="no")
+
+
+def test_the_cli_writes_a_failing_differential_and_exits_1(capsys, tmp_path):
+    from trains.cli.app import main
+
+    out = tmp_path / "diff.stl"
+    argv = ["differential", "--side", "16", "--pinion", "10", "--pinions", "8", "--module", "3",
+            "--gleason", "--scene", str(out)]  # fmt: skip
+    assert main(argv) == 1
+    assert "[FAIL] pinion.neighbour" in capsys.readouterr().out and out.stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"n_pinions": 10**400}, r"n_pinions = 1\.000e\+400; valid is an integer 1 \.\.\. 1"),
+        ({"side": 10**400}, r"side = 1\.000e\+400; valid is an integer 1 \.\.\. 10000000"),
+        ({"pinion": 10**7 + 1}, r"pinion = 10000001; valid is an integer 1 \.\.\. 10000000"),
+        # z_side = 10^7 on a 10-tooth pinion: the virtual wheel has z / cos delta = 1e13 teeth;
+        # the message names side and a range that 1e13 is outside of (it said ">= 1")
+        ({"side": 10**7}, r"side = 10000000, pinion = 10: .*z2 = 1e\+13; valid is a tooth count "
+                          r"1 <= z2 < 1e9"),
+    ],
+)  # fmt: skip
+def test_huge_counts_are_refused_naming_them(kwargs, match):
+    # issue 26: 10**400 raised OverflowError (in check(), for n_pinions); a side of 10^7 gave a
+    # message that contradicted itself and did not name side
+    with pytest.raises(TrainError, match=match):
+        Differential(**{"side": 16, "pinion": 10, "module": 3, "face_width": 20, **kwargs})
+
+
+@pytest.mark.parametrize("where", ["angle", "left", "right"])
+def test_placements_refuse_numbers_beyond_floats(where):
+    d = Differential(16, 10, **GLEASON)
+    args = {"angle": 0.0, "left": 1.0, "right": 1.0, where: 10**400}
+    with pytest.raises(TrainError, match=rf"{where} = 1\.000e\+400; valid is a finite number"):
+        d.placements(**args)

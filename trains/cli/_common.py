@@ -92,6 +92,19 @@ def non_negative(name: str, unit: str = "") -> Callable[[str], float]:
     return bounded(name, 0, unit=unit)
 
 
+def _whole_number(name: str, text: str, valid: str) -> int:
+    """A whole number in float notation (``1e3``, ``20.0``) as an int."""
+    try:
+        f = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{name} {text!r} is not an integer") from None
+    if not math.isfinite(f):
+        raise argparse.ArgumentTypeError(f"{name} {text} is not a finite number; {valid}")
+    if f != int(f):
+        raise argparse.ArgumentTypeError(f"{name} {text} is not a whole number; {valid}")
+    return int(f)
+
+
 def integer(name: str, low: int = 1, high: int | None = None) -> Callable[[str], int]:
     """An option type: an integer in ``[low, high]``.
 
@@ -106,7 +119,7 @@ def integer(name: str, low: int = 1, high: int | None = None) -> Callable[[str],
         try:
             v = int(text.strip())
         except ValueError:
-            raise argparse.ArgumentTypeError(f"{name} {text!r} is not an integer") from None
+            v = _whole_number(name, text, valid)
         if v < low or (high is not None and v > high):
             raise argparse.ArgumentTypeError(f"{name} {text} is out of range; {valid}")
         return v
