@@ -47,6 +47,7 @@ LAYERS = {
             "contact.modification",
             "worm.crossed",
             "noncircular.centrode",
+            "noncircular.cycloid",
         ],
         [
             "rack",
@@ -116,6 +117,7 @@ LAYERS = {
         ["catalog", "differential", "planetary.stage"],
         [
             "toml_format",
+            "cycloidal",
             "design.synthesis",
             "design.sizing",
             "design.plan",

@@ -33,6 +33,7 @@ _WHERE = {
     "TrainError": "trains.errors",
     "bevel_differential": "trains.catalog",
     "biplanetary": "trains.catalog",
+    "CycloidalDrive": "trains.cycloidal",
     "Differential": "trains.differential",
     "coaxial_shifts": "trains.coaxial",
     "double_planet": "trains.catalog",
