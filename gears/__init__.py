@@ -18,6 +18,7 @@ from gears.bevel.pair import BevelPair
 from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
 from gears.cutting.cutter import ShaperCutter
 from gears.errors import GearError
+from gears.forces import PairForces
 from gears.gear import Gear
 from gears.mating import Rack
 from gears.meshing import PairGeometry, pair_geometry
@@ -48,6 +49,7 @@ __all__ = [
     "GearPair",
     "Material",
     "NonCircularPair",
+    "PairForces",
     "PairGeometry",
     "PairMargins",
     "PairRatings",

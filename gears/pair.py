@@ -41,7 +41,6 @@ from gears.checks import (
 from gears.cutting.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.errors import GearError
 from gears.figures.drawing import pair_svg
-from gears.figures.forces import pair_forces_figure
 from gears.files import check_output
 from gears.forces import PairForces, pair_forces
 from gears.gear import Gear
@@ -507,27 +506,14 @@ class GearPair:
 
     # --- forces ----------------------------------------------------------------------------------
     def forces(self, torque: float, friction: float = 0.0) -> PairForces:
-        """The mesh forces under ``torque`` N m on gear 1 (signed about its axis): tangential
-        ``2000 T / d_w1``, radial ``F_t tan alpha_wt``, axial ``F_t tan beta_w``, normal, as
-        vectors on each gear in the pair's frame (:mod:`gears.forces`); ``friction`` leans the
-        force at the pitch point by ``atan f`` (Ozols (21.17), (21.18); spur pairs).
+        """The mesh forces under ``torque`` N m on gear 1, signed about its axis
+        (:func:`gears.forces.pair_forces`; ``friction``: Ozols (21.17), spur pairs).
 
-        Examples
-        --------
-        Ozols section 11-2: M1 = 100 N m, r1 = 50 mm, alpha = 20 deg.
-
-        >>> f = GearPair(Gear(20, 5), Gear(40, 5)).forces(100)
+        >>> f = GearPair(Gear(20, 5), Gear(40, 5)).forces(100)    # Ozols section 11-2
         >>> round(f.normal[0], 2), round(f.torque_2, 6)     # R = M1 / (r1 cos alpha), M2
         (2128.36, 200.0)
         """
         return pair_forces(self, torque, friction)
-
-    def forces_figure(self, torque: float, friction: float = 0.0, tolerance: float = 0.01,
-                      ax=None):  # fmt: skip
-        """:meth:`forces` drawn on :meth:`outlines` (matplotlib, the ``plot`` extra): the mesh
-        force on each gear at the pitch point and each bearing's reaction."""
-        forces = self.forces(torque, friction)
-        return pair_forces_figure(forces, self.outlines(tolerance=tolerance), ax)
 
     def efficiency(
         self, torque: float, speed: float, *, face_width: float | None = None,

@@ -153,10 +153,10 @@ class TrainLoads:
         members = [
             (
                 b.name,
-                f"{b.torque:.4f}",
+                f"{round(b.torque, 4) + 0.0:.4f}",
                 f"{b.radial_load:.2f}",
                 f"{abs(b.bearing[2]):.2f}",
-                f"{b.moment:.4f}",
+                f"{round(b.moment, 4) + 0.0:.4f}",
                 b.carried_by if b.copies == 1 else f"{b.carried_by} x{b.copies}",
             )
             for b in self.members.values()
@@ -199,7 +199,7 @@ class TrainLoads:
             )
         )
 
-    def figure(self, outlines: Iterable[Any] = (), ax: Any = None):
+    def figure(self, outlines: Iterable[Any] = (), ax: Any = None) -> Any:
         """The mesh force on each mesh's first member at every pitch point (red) and every
         member's bearing reaction at its axis (blue; a planet's pin at its first copy), drawn
         on ``outlines`` (shapely polygons in the same frame, e.g. ``Planetary.outlines()``

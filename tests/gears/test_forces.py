@@ -265,6 +265,9 @@ def test_pair_forces_figure_method():
     pytest.importorskip("matplotlib")
     import matplotlib.pyplot as plt
 
-    fig = GearPair(Gear(20, 5), Gear(40, 5)).forces_figure(100.0, tolerance=0.05)
+    from gears.figures.forces import pair_forces_figure
+
+    pair = GearPair(Gear(20, 5), Gear(40, 5))
+    fig = pair_forces_figure(pair.forces(100.0), pair.outlines(tolerance=0.05))
     assert len(fig.axes[0].texts) == 8
     plt.close(fig)
