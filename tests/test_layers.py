@@ -112,6 +112,7 @@ LAYERS = {
             "planetary.placement",
             "planetary.scene",
             "layout",
+            "cycle",
         ],
         ["capacity", "loading"],
         ["catalog", "differential", "planetary.stage"],
