@@ -30,6 +30,7 @@ __getattr__, __dir__, __all__ = attach(
         "kind_code": "gears.rating.materials",
         "KINDS": "gears.rating.materials",
         "Load": "gears.rating.sizing",
+        "light_load_factor": "gears.rating.load_factors",
         "load_case": "gears.rating.sizing",
         "load_diameters": "gears.rating.capacity",
         "load_point": "gears.rating.bending",

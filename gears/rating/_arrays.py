@@ -20,9 +20,15 @@ def out(a):
     return a[()] if a.ndim == 0 else a
 
 
+_NUMBERS = frozenset({float, int, bool, np.float64, np.bool_, np.int64})
+
+
 def scalar(v) -> bool:
     """Whether ``v`` is one number (``np.ndim(v) == 0`` without its cost on numbers)."""
-    if type(v) is np.ndarray:
+    t = type(v)
+    if t in _NUMBERS:
+        return True
+    if t is np.ndarray:
         return v.ndim == 0
     return isinstance(v, (float, int, np.generic)) or np.ndim(v) == 0
 

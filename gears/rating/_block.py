@@ -7,6 +7,12 @@ loads), the load factors of ISO 6336-1, pitting (ISO 6336-2), bending (ISO 6336-
 validity of each method (the ``reason`` codes of :data:`gears.rating.iso6336.REASONS`). Each
 part reads and writes the dict ``q`` of quantities, keyed by the names of
 :class:`gears.rating.iso6336.PairRatings` where they are reported.
+
+The parts that depend on the gears alone (geometry, stiffness without the load, deviations,
+Z_H, Z_E, Z_B, Z_D, Z_R, the root forms and Y factors, the validity of the methods) run first
+and do not see the load (torque, speed, life, K_A, K_gamma: :data:`LOAD`); given a ``cache``
+(one pair), they are kept by their arguments, so that rating the same pair at other loads runs
+the load's part only.
 """
 
 from __future__ import annotations
@@ -33,6 +39,7 @@ from gears.rating.load_factors import (
     face_load_factor,
     face_load_factor_root,
     helix_running_in,
+    light_load_factor,
     mesh_stiffness,
     profile_running_in,
     single_stiffness,
@@ -50,34 +57,71 @@ from gears.rating.pitting import (
 )
 
 _ROOT = ("s_Fn", "rho_F", "h_Fe", "alpha_Fen")
+#: the arguments of the load: the gears' part never reads them
+LOAD = frozenset({"T", "n", "life", "K_A", "K_gamma", "o_K_A", "o_K_gamma"})
+_CACHE_SIZE = 256
+_NOT_FINITE = 9  # the last reason (gears.rating.iso6336.REASONS)
 
 
-def rate_block(a, mats, fields):
+def rate_block(a, mats, fields, cache=None):
     """Every formula of ISO 6336 method B on one block: ``a`` the checked arguments (overrides
     as ``o_<name>``), ``mats`` the two :class:`gears.rating.materials.Material`; returns the dict
     of every quantity, the ``fields`` broadcast to the block and masked by ``valid`` (zero
     safeties, NaN elsewhere). Rows outside a method's validity may produce NaN or inf on the
-    way."""
+    way. ``cache`` (a dict, for one pair of scalar arguments) keeps the gears' part."""
+    gears = {k: v for k, v in a.items() if k not in LOAD}
+    key = None
+    if cache is not None:
+        key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
+        q = cache.get(key)
+    if key is None or q is None:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            q = _gears(gears, mats)
+        if key is not None:
+            if len(cache) >= _CACHE_SIZE:
+                cache.clear()
+            cache[key] = q
+    q = dict(q)
+    given = _given(a)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        _load(q, a, given)
+        _load_factors(q, a, mats, given)
+        _pitting(q, a, mats, given)
+        _bending(q, a, mats, given)
+        return _results(q, a, fields)
+
+
+def _hashable(v):
+    return v.item() if type(v) is np.ndarray else v
+
+
+def _given(a):
     o = {k[2:]: v for k, v in a.items() if k.startswith("o_")}
 
     def given(name, value):
         return o[name] if name in o else value
 
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        q = _pair(a, given)
-        _load_factors(q, a, mats, given)
-        _pitting(q, a, mats, given)
-        _root_forms(q, a)
-        _bending(q, a, mats, given)
-        return _results(q, a, fields)
+    return given
 
 
-def _pair(a, given):
-    """Diameters, contact ratios, the nominal load, speed and line load of the pairs."""
+def _gears(a, mats):
+    """The gears' part: everything that does not depend on the load."""
+    given = _given(a)
+    q = _pair(a)
+    _stiffness(q, a, mats, given)
+    _contact(q, a, mats, given)
+    _root_forms(q, a)
+    _root(q, a, mats, given)
+    q["reason"] = _methods(q, a)
+    return q
+
+
+def _pair(a):
+    """Diameters and contact ratios of the pairs."""
     z1, z2, m, x1, x2 = a["z1"], a["z2"], a["m"], a["x1"], a["x2"]
     internal = a["internal"]
     s = _where(internal, -1.0, 1.0)
-    b, T, n = a["b"], a["T"], a["n"]
+    b = a["b"]
     an = np.radians(a["pa"])
     beta = np.radians(np.abs(a["helix"]))
     cos_b = np.cos(beta)
@@ -97,132 +141,64 @@ def _pair(a, given):
     p_bt = np.pi * m / cos_b * cos_at
     ea = contact_ratio(da1 / 2, da2 / 2, db1 / 2, db2 / 2, tan_wt, s, p_bt)
     eb = b * np.sin(beta) / (np.pi * m)
-    K_A = given("K_A", a["K_A"])
-    K_g = given("K_gamma", a["K_gamma"])
-    F_t = 2000.0 * T / d1
     return {
         "z1": z1, "z2": z2, "m": m, "x1": x1, "x2": x2, "internal": internal, "s": s, "b": b,
-        "n": n, "beta": beta, "cos_b": cos_b, "at": at, "cos_at": cos_at, "bb": bb,
+        "beta": beta, "cos_b": cos_b, "at": at, "cos_at": cos_at, "bb": bb,
         "cbb2": cbb2, "tan_wt": tan_wt, "d1": d1, "d2": d2, "db1": db1, "db2": db2, "da1": da1,
         "da2": da2, "df1": df1, "df2": df2, "eps_alpha": ea, "eps_beta": eb,
-        "eps_gamma": ea + eb, "u": z2 / z1, "K_A": K_A, "K_gamma": K_g, "F_t": F_t,
-        "v": np.pi * d1 * n / 60000.0, "w": F_t * K_g * K_A / b,  # w: line load, N/mm
+        "eps_gamma": ea + eb, "u": z2 / z1,
         "zn1": z1 / (cbb2 * cos_b), "zn2": z2 / (cbb2 * cos_b),
     }  # fmt: skip
 
 
-def _load_factors(q, a, mats, given):
-    """Stiffness, deviations, K_v, K_Hbeta, K_Fbeta, Z_eps, K_Halpha, K_Falpha (ISO 6336-1)."""
+def _stiffness(q, a, mats, given):
+    """The single stiffness above 100 N/mm, the deviations, the reduced mass and Z_eps
+    (ISO 6336-1 §9, ISO 1328-1, §6.5; ISO 6336-2 §8)."""
     m1, m2 = mats
-    code1, code2 = m1.code, m2.code
-    m, b, d1, ea, eg, w, v = q["m"], q["b"], q["d1"], q["eps_alpha"], q["eps_gamma"], q["w"], q["v"]
-
-    # stiffness (ISO 6336-1 §9); C_B is linear in h_fP: the mean of both gears' C_B is C_B of
-    # the mean dedendum
-    c_p = single_stiffness(q["zn1"], q["zn2"], q["x1"], q["x2"], a["helix"],
-                           (a["hf1"] + a["hf2"]) / 2, a["pa"], q["internal"], w)  # fmt: skip
-    c_p = given("c_prime", c_p)
-    c_ga, c_gb = mesh_stiffness(c_p, ea)
-    c_ga = given("c_gamma_alpha", c_ga)
-    c_gb = given("c_gamma_beta", c_gb)
-
-    # deviations and running-in (ISO 1328-1; ISO 6336-1 §8.3.3)
+    m, b, d1 = q["m"], q["b"], q["d1"]
+    # C_B is linear in h_fP: the mean of both gears' C_B is C_B of the mean dedendum
+    q["c_th"] = single_stiffness(q["zn1"], q["zn2"], q["x1"], q["x2"], a["helix"],
+                                 (a["hf1"] + a["hf2"]) / 2, a["pa"], q["internal"])  # fmt: skip
     fpt1, ff1, fh1 = tolerances(m, d1, b, a["Q"])
     fpt2, ff2, fh2 = tolerances(m, q["d2"], b, a["Q"])
-    f_pb = np.maximum(fpt1, fpt2) * q["cos_at"]
-    f_f = np.maximum(ff1, ff2)
-    f_hb = np.maximum(fh1, fh2)
-    sH1, sH2 = a["sH1"], a["sH2"]
-    y_a = 0.5 * (profile_running_in(f_pb, code1, sH1, v) + profile_running_in(f_pb, code2, sH2, v))
-    y_f = 0.5 * (profile_running_in(f_f, code1, sH1, v) + profile_running_in(f_f, code2, sH2, v))
+    q["f_pb"] = np.maximum(fpt1, fpt2) * q["cos_at"]
+    q["f_f"] = np.maximum(ff1, ff2)
+    q["f_hb"] = np.maximum(fh1, fh2)
     if "C_a" in a:
-        c_a = a["C_a"]
+        q["C_a"] = a["C_a"]
     else:  # running-in tip relief C_ay (ISO 6336-1 Table 8), mean of both gears
-        c_a = 0.5 * sum((sh / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for sh in (sH1, sH2))
-
-    # K_v, method B (ISO 6336-1 §6.5): solid gears, the ring's mass infinite
+        q["C_a"] = 0.5 * sum((sh / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for sh in (a["sH1"], a["sH2"]))
+    # solid gears, the ring's mass infinite
     dm1, dm2 = (q["da1"] + q["df1"]) / 2, (q["da2"] + q["df2"]) / 2
     mass1 = np.pi / 8 * m1.density * dm1**4 / q["db1"] ** 2 / a["c1"]
     mass2 = np.pi / 8 * m2.density * dm2**4 / q["db2"] ** 2 / a["c2"]
-    m_red = _where(q["internal"], mass1, mass1 * mass2 / (mass1 + mass2))
-    n_e1 = 30000.0 / (np.pi * q["z1"]) * np.sqrt(c_ga / m_red)
-    N = q["n"] / n_e1
-    # ISO 6336-1 takes F_t K_A / b >= 100 N/mm in K_v and the transverse load factors
-    w100 = np.maximum(w, 100.0)
-    K_v = given("K_v", dynamic_factor(N, w100, c_p, f_pb - y_a, f_f - y_f, c_a, eg))
-
-    # K_Hbeta method C, K_Fbeta (ISO 6336-1 §7.6, §7.8)
-    fmb = w * K_v
-    if "F_bx" in a:
-        f_bx = a["F_bx"]
-    else:
-        f_sh = fmb * 0.023 * (b / d1) ** 2
-        f_bx = np.maximum(1.33 * f_sh + f_hb, np.maximum(0.005 * fmb, 0.5 * f_hb))
-    y_b = 0.5 * (helix_running_in(f_bx, code1, sH1, v) + helix_running_in(f_bx, code2, sH2, v))
-    K_Hb = given("K_Hbeta", face_load_factor(np.maximum(f_bx - y_b, 0.0), c_gb, fmb))
+    q["m_red"] = _where(q["internal"], mass1, mass1 * mass2 / (mass1 + mass2))
     h1 = (q["da1"] - q["df1"]) / 2
     h2 = np.abs(q["da2"] - q["df2"]) / 2
-    K_Fb = given("K_Fbeta", face_load_factor_root(K_Hb, b, np.maximum(h1, h2)))
-
-    # transverse load factors (ISO 6336-1 §8.3)
-    Z_eps = given("Z_eps", contact_ratio_factor(ea, q["eps_beta"]))
-    K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, w100 * K_v * K_Hb, ea, eg, Z_eps)
-    # one K_alpha (ISO 6336-1 §8.3): a given K_Halpha sets K_Falpha within its bound, and back
-    if "o_K_Halpha" in a and "o_K_Falpha" not in a:
-        K_Fa = np.minimum(np.maximum(a["o_K_Halpha"], 1.0), eg / (0.25 * ea + 0.75))
-    elif "o_K_Falpha" in a and "o_K_Halpha" not in a:
-        K_Ha = np.minimum(np.maximum(a["o_K_Falpha"], 1.0), eg / (ea * Z_eps**2))
-    q.update({
-        "c_prime": c_p, "c_gamma_alpha": c_ga, "c_gamma_beta": c_gb, "N": N, "K_v": K_v,
-        "K_Hbeta": K_Hb, "K_Fbeta": K_Fb, "Z_eps": Z_eps, "K_Halpha": given("K_Halpha", K_Ha),
-        "K_Falpha": given("K_Falpha", K_Fa),
-    })  # fmt: skip
+    q["h"] = np.maximum(h1, h2)
+    q["Z_eps"] = given("Z_eps", contact_ratio_factor(q["eps_alpha"], q["eps_beta"]))
 
 
-def _pitting(q, a, mats, given):
-    """sigma_H0, sigma_H, sigma_HP and the Z factors (ISO 6336-2)."""
+def _contact(q, a, mats, given):
+    """Z_H, Z_E, Z_beta, Z_B, Z_D, Z_R, Z_X (ISO 6336-2): the factors of the gears alone."""
     m1, m2 = mats
-    code1, code2 = m1.code, m2.code
-    ea, eb, v, n, u, s = q["eps_alpha"], q["eps_beta"], q["v"], q["n"], q["u"], q["s"]
-    sH1, sH2 = a["sH1"], a["sH2"]
-    Z_H = given("Z_H", zone_factor(np.degrees(q["at"]), a["alpha_wt"], np.degrees(q["bb"])))
-    Z_E = given("Z_E", elasticity_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus,
-                                         m2.poisson))  # fmt: skip
-    Z_beta = given("Z_beta", 1.0 / np.sqrt(q["cos_b"]))
+    ea, eb, s = q["eps_alpha"], q["eps_beta"], q["s"]
+    q["Z_H"] = given("Z_H", zone_factor(np.degrees(q["at"]), a["alpha_wt"], np.degrees(q["bb"])))
+    q["Z_E"] = given("Z_E", elasticity_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus,
+                                              m2.poisson))  # fmt: skip
+    q["Z_beta"] = given("Z_beta", 1.0 / np.sqrt(q["cos_b"]))
     Z_B, Z_D = single_pair_factors(q["z1"], q["z2"], q["da1"], q["da2"], q["db1"], q["db2"],
                                    a["alpha_wt"], ea, eb, q["internal"])  # fmt: skip
     q["interferes"] = (np.isnan(Z_B) & ("o_Z_B" not in a)) | (np.isnan(Z_D) & ("o_Z_D" not in a))
-    Z_B = given("Z_B", _where(np.isnan(Z_B), 1.0, Z_B))
-    Z_D = given("Z_D", _where(np.isnan(Z_D), 1.0, Z_D))
-    s_min = np.minimum(sH1, sH2)
-    Z_L, Z_v = lubrication_factors(s_min, a["nu40"], v)
-    Z_L, Z_v = given("Z_L", Z_L), given("Z_v", Z_v)
+    q["Z_B"] = given("Z_B", _where(np.isnan(Z_B), 1.0, Z_B))
+    q["Z_D"] = given("Z_D", _where(np.isnan(Z_D), 1.0, Z_D))
+    q["s_min"] = np.minimum(a["sH1"], a["sH2"])
     rho1 = q["db1"] / 2 * q["tan_wt"]
     rho2 = q["db2"] / 2 * q["tan_wt"]
-    rho_red = rho1 * rho2 / (rho2 + s * rho1)
-    rz = 6.0 * a["Ra"]
-    Z_R = given("Z_R", roughness_factor(s_min, rz, rho_red))
-    Z_W1, Z_W2 = work_hardening_factors(code1, code2, m1.hardness, m2.hardness, rz, rho_red,
-                                        a["nu40"], v)  # fmt: skip
-    Z_W1, Z_W2 = given("Z_W1", Z_W1), given("Z_W2", Z_W2)
-    Z_X = given("Z_X", np.ones_like(q["F_t"]))
-    N_L1 = 60.0 * a["life"] * n * a["c1"]
-    N_L2 = 60.0 * a["life"] * n / u * a["c2"]
-    Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
-    Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
-    us = s * u
-    sigma_H0 = (
-        Z_H * Z_E * q["Z_eps"] * Z_beta * np.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
-    )
-    load = np.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
-    common = Z_L * Z_v * Z_R * Z_X
-    q.update({
-        "Z_H": Z_H, "Z_E": Z_E, "Z_beta": Z_beta, "Z_B": Z_B, "Z_D": Z_D, "Z_L": Z_L,
-        "Z_v": Z_v, "Z_R": Z_R, "Z_W1": Z_W1, "Z_W2": Z_W2, "Z_X": Z_X, "N_L1": N_L1,
-        "N_L2": N_L2, "Z_NT1": Z_NT1, "Z_NT2": Z_NT2, "u": us, "sigma_H0": sigma_H0,
-        "sigma_H1": Z_B * sigma_H0 * load, "sigma_H2": Z_D * sigma_H0 * load,
-        "sigma_HP1": sH1 * Z_NT1 * common * Z_W1, "sigma_HP2": sH2 * Z_NT2 * common * Z_W2,
-    })  # fmt: skip
+    q["rho_red"] = rho1 * rho2 / (rho2 + s * rho1)
+    q["rz"] = 6.0 * a["Ra"]
+    q["Z_R"] = given("Z_R", roughness_factor(q["s_min"], q["rz"], q["rho_red"]))
+    q["Z_X"] = given("Z_X", np.float64(1.0))
 
 
 def _root_forms(q, a):
@@ -249,16 +225,15 @@ def _root_forms(q, a):
             q[f"{key}{i}"] = value
 
 
-def _bending(q, a, mats, given):
-    """sigma_F0, sigma_F, sigma_FP and the Y factors (ISO 6336-3)."""
-    m1, m2 = mats
+def _root(q, a, mats, given):
+    """The Y factors of the gears alone (ISO 6336-3): form, stress correction, helix, deep
+    tooth, rim, notch sensitivity, surface, size, mean stress."""
     m, pa = q["m"], a["pa"]
-    for i, mat in ((1, m1), (2, m2)):
+    for i, mat in ((1, mats[0]), (2, mats[1])):
         Y_F, Y_S, q[f"q_s{i}"] = form_factors(q[f"s_Fn{i}"], q[f"rho_F{i}"], q[f"h_Fe{i}"],
                                               q[f"alpha_Fen{i}"], m, pa)  # fmt: skip
         q[f"Y_F{i}"], q[f"Y_S{i}"] = given(f"Y_F{i}", Y_F), given(f"Y_S{i}", Y_S)
-        q[f"Y_B{i}"] = given(f"Y_B{i}", np.ones_like(q["F_t"]))
-        q[f"Y_NT{i}"] = given(f"Y_NT{i}", bending_life_factor(q[f"N_L{i}"], mat.code))
+        q[f"Y_B{i}"] = given(f"Y_B{i}", np.float64(1.0))
         delta = notch_sensitivity_factor(q[f"q_s{i}"], mat.slip_layer)
         q[f"Y_deltarelT{i}"] = given(f"Y_deltarelT{i}", delta)
         q[f"Y_RrelT{i}"] = given(f"Y_RrelT{i}", root_surface_factor(6.0 * a["Ra_root"], mat.code))
@@ -266,28 +241,123 @@ def _bending(q, a, mats, given):
         q[f"Y_M{i}"] = given(f"Y_M{i}", _where(a[f"idler{i}"], 0.7, 1.0))
     q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], np.degrees(q["beta"])))
     q["Y_DT"] = given("Y_DT", deep_tooth_factor(a["Q"], q["eps_alpha"] / q["cbb2"]))
-    q["Y_ST"] = given("Y_ST", np.full_like(q["F_t"], 2.0))
-    nominal = q["F_t"] / (q["b"] * m) * q["Y_beta"] * q["Y_DT"]
+    q["Y_ST"] = given("Y_ST", np.float64(2.0))
+
+
+def _load(q, a, given):
+    """The nominal load, the pitch-line speed and the line load."""
+    K_A = given("K_A", a["K_A"])
+    K_g = given("K_gamma", a["K_gamma"])
+    F_t = 2000.0 * a["T"] / q["d1"]
+    q.update({
+        "n": a["n"], "K_A": K_A, "K_gamma": K_g, "F_t": F_t,
+        "v": np.pi * q["d1"] * a["n"] / 60000.0, "w": F_t * K_g * K_A / q["b"],  # w: N/mm
+    })  # fmt: skip
+
+
+def _load_factors(q, a, mats, given):
+    """Stiffness at the load, K_v, K_Hbeta, K_Fbeta, K_Halpha, K_Falpha (ISO 6336-1)."""
+    m1, m2 = mats
+    code1, code2 = m1.code, m2.code
+    b, d1, ea, eg, w, v = q["b"], q["d1"], q["eps_alpha"], q["eps_gamma"], q["w"], q["v"]
+    f_pb, f_f, Z_eps = q["f_pb"], q["f_f"], q["Z_eps"]
+
+    # stiffness (ISO 6336-1 §9), lower below 100 N/mm
+    c_p = given("c_prime", q["c_th"] * light_load_factor(w))
+    c_ga, c_gb = mesh_stiffness(c_p, ea)
+    c_ga = given("c_gamma_alpha", c_ga)
+    c_gb = given("c_gamma_beta", c_gb)
+
+    # running-in (ISO 6336-1 §8.3.3)
+    sH1, sH2 = a["sH1"], a["sH2"]
+    y_a = 0.5 * (profile_running_in(f_pb, code1, sH1, v) + profile_running_in(f_pb, code2, sH2, v))
+    y_f = 0.5 * (profile_running_in(f_f, code1, sH1, v) + profile_running_in(f_f, code2, sH2, v))
+
+    # K_v, method B (ISO 6336-1 §6.5)
+    n_e1 = 30000.0 / (np.pi * q["z1"]) * np.sqrt(c_ga / q["m_red"])
+    N = q["n"] / n_e1
+    # ISO 6336-1 takes F_t K_A / b >= 100 N/mm in K_v and the transverse load factors
+    w100 = np.maximum(w, 100.0)
+    K_v = given("K_v", dynamic_factor(N, w100, c_p, f_pb - y_a, f_f - y_f, q["C_a"], eg))
+
+    # K_Hbeta method C, K_Fbeta (ISO 6336-1 §7.6, §7.8)
+    fmb = w * K_v
+    if "F_bx" in a:
+        f_bx = a["F_bx"]
+    else:
+        f_sh = fmb * 0.023 * (b / d1) ** 2
+        f_bx = np.maximum(1.33 * f_sh + q["f_hb"], np.maximum(0.005 * fmb, 0.5 * q["f_hb"]))
+    y_b = 0.5 * (helix_running_in(f_bx, code1, sH1, v) + helix_running_in(f_bx, code2, sH2, v))
+    K_Hb = given("K_Hbeta", face_load_factor(np.maximum(f_bx - y_b, 0.0), c_gb, fmb))
+    K_Fb = given("K_Fbeta", face_load_factor_root(K_Hb, b, q["h"]))
+
+    # transverse load factors (ISO 6336-1 §8.3)
+    K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, w100 * K_v * K_Hb, ea, eg, Z_eps)
+    # one K_alpha (ISO 6336-1 §8.3): a given K_Halpha sets K_Falpha within its bound, and back
+    if "o_K_Halpha" in a and "o_K_Falpha" not in a:
+        K_Fa = np.minimum(np.maximum(a["o_K_Halpha"], 1.0), eg / (0.25 * ea + 0.75))
+    elif "o_K_Falpha" in a and "o_K_Halpha" not in a:
+        K_Ha = np.minimum(np.maximum(a["o_K_Falpha"], 1.0), eg / (ea * Z_eps**2))
+    q.update({
+        "c_prime": c_p, "c_gamma_alpha": c_ga, "c_gamma_beta": c_gb, "N": N, "K_v": K_v,
+        "K_Hbeta": K_Hb, "K_Fbeta": K_Fb, "K_Halpha": given("K_Halpha", K_Ha),
+        "K_Falpha": given("K_Falpha", K_Fa),
+    })  # fmt: skip
+
+
+def _pitting(q, a, mats, given):
+    """Z_L, Z_v, Z_W, Z_NT and sigma_H0, sigma_H, sigma_HP (ISO 6336-2)."""
+    m1, m2 = mats
+    code1, code2 = m1.code, m2.code
+    v, n, u, s = q["v"], q["n"], q["u"], q["s"]
+    Z_L, Z_v = lubrication_factors(q["s_min"], a["nu40"], v)
+    Z_L, Z_v = given("Z_L", Z_L), given("Z_v", Z_v)
+    Z_W1, Z_W2 = work_hardening_factors(code1, code2, m1.hardness, m2.hardness, q["rz"],
+                                        q["rho_red"], a["nu40"], v)  # fmt: skip
+    Z_W1, Z_W2 = given("Z_W1", Z_W1), given("Z_W2", Z_W2)
+    N_L1 = 60.0 * a["life"] * n * a["c1"]
+    N_L2 = 60.0 * a["life"] * n / u * a["c2"]
+    Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
+    Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
+    us = s * u
+    root = np.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
+    sigma_H0 = q["Z_H"] * q["Z_E"] * q["Z_eps"] * q["Z_beta"] * root
+    load = np.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
+    common = Z_L * Z_v * q["Z_R"] * q["Z_X"]
+    q.update({
+        "Z_L": Z_L, "Z_v": Z_v, "Z_W1": Z_W1, "Z_W2": Z_W2, "N_L1": N_L1, "N_L2": N_L2,
+        "Z_NT1": Z_NT1, "Z_NT2": Z_NT2, "u": us, "sigma_H0": sigma_H0,
+        "sigma_H1": q["Z_B"] * sigma_H0 * load, "sigma_H2": q["Z_D"] * sigma_H0 * load,
+        "sigma_HP1": a["sH1"] * Z_NT1 * common * Z_W1,
+        "sigma_HP2": a["sH2"] * Z_NT2 * common * Z_W2,
+    })  # fmt: skip
+
+
+def _bending(q, a, mats, given):
+    """Y_NT and sigma_F0, sigma_F, sigma_FP (ISO 6336-3)."""
+    nominal = q["F_t"] / (q["b"] * q["m"]) * q["Y_beta"] * q["Y_DT"]
     kf = q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Fbeta"] * q["K_Falpha"]
-    for i in (1, 2):
+    for i, code in ((1, mats[0].code), (2, mats[1].code)):
+        q[f"Y_NT{i}"] = given(f"Y_NT{i}", bending_life_factor(q[f"N_L{i}"], code))
         q[f"sigma_F0{i}"] = nominal * q[f"Y_F{i}"] * q[f"Y_S{i}"] * q[f"Y_B{i}"]
         q[f"sigma_F{i}"] = q[f"sigma_F0{i}"] * kf
         allowable = a[f"sF{i}"] * q["Y_ST"] * q[f"Y_NT{i}"] * q[f"Y_deltarelT{i}"]
         q[f"sigma_FP{i}"] = allowable * q[f"Y_RrelT{i}"] * q[f"Y_X{i}"] * q[f"Y_M{i}"]
 
 
-def _validity(q, a, shape):
-    """``(valid, reason)``: the first failed check in the order of REASONS (0 = rated)."""
+def _methods(q, a):
+    """The reason code of each pair from its gears (0 = every method applies): the first
+    failed check in the order of REASONS, the last of which (a finite result) waits for the
+    load."""
     m, pa, internal = q["m"], a["pa"], q["internal"]
     da1, da2, db1, db2 = q["da1"], q["da2"], q["db1"], q["db2"]
-    pointed = np.zeros(shape, bool)
+    pointed = False  # booleans broadcast to the rows as the checks combine
     for z, x, da, db, inside in ((q["z1"], q["x1"], da1, db1, False),
                                  (q["z2"], q["x2"], da2, db2, internal)):  # fmt: skip
         thick = tooth_thickness(np.maximum(da, db), z, m, x, pa, a["helix"], inside, signed=True)
         pointed |= (da >= db) & ~(thick > 0)
     below_base = ~((da1 >= db1) & (da2 >= db2))
-    root_ok = np.ones(shape, bool)
-    qs_ok = np.ones(shape, bool)
+    root_ok = qs_ok = True
     for i in (1, 2):
         root_ok &= (q[f"s_Fn{i}"] > 0) & (q[f"h_Fe{i}"] > 0) & (q[f"rho_F{i}"] > 0)
         if f"o_Y_S{i}" not in a:
@@ -301,31 +371,32 @@ def _validity(q, a, shape):
         qs_ok,
         ~q["interferes"],
         (q["Z_eps"] > 0) | ("o_Z_eps" in a),
-        _finite(q),
     ]
-    reason = np.zeros(shape, int)
+    reason = 0
     for code, ok in reversed(list(enumerate(checks, 1))):
         reason = _where(ok, reason, code)
-    return reason == 0, reason
-
-
-def _finite(q):
-    """Every safety a finite number > 0 (a last guard: no NaN or inf leaves the rating)."""
-    ok = True
-    for key in ("S_H1", "S_H2", "S_F1", "S_F2"):
-        ok = ok & np.isfinite(q[key]) & (q[key] > 0)
-    return ok
+    return np.asarray(reason)[()] if type(reason) is int else reason
 
 
 def _results(q, a, fields):
     """The safeties, then ``fields`` broadcast to the block and masked by ``valid``."""
-    shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
     for i in (1, 2):
         q[f"S_H{i}"] = q[f"sigma_HP{i}"] / q[f"sigma_H{i}"]
         q[f"S_F{i}"] = q[f"sigma_FP{i}"] / q[f"sigma_F{i}"]
-    valid, reason = _validity(q, a, shape)
+    # a last guard: every safety a finite number > 0 (no NaN or inf leaves the rating)
+    finite = True
+    for key in ("S_H1", "S_H2", "S_F1", "S_F2"):
+        finite = finite & np.isfinite(q[key]) & (q[key] > 0)
+    reason = q["reason"]
+    reason = _where((reason == 0) & ~finite, _NOT_FINITE, reason)
+    valid = reason == 0
     q["alpha_Fen1"] = np.degrees(q["alpha_Fen1"])
     q["alpha_Fen2"] = np.degrees(q["alpha_Fen2"])
+    if type(valid) is np.bool_ and valid:  # one pair, rated: nothing to broadcast or mask
+        q["valid"], q["reason"] = valid, reason
+        return q
+    shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
+    valid = np.broadcast_to(valid, shape)
     everywhere = bool(np.all(valid))
     for key in fields:
         value = q[key]
@@ -335,5 +406,5 @@ def _results(q, a, fields):
             value = _where(valid, value, 0.0 if key.startswith("S_") else np.nan)
         q[key] = value
     q["valid"] = valid
-    q["reason"] = reason
+    q["reason"] = np.broadcast_to(reason, shape)
     return q

@@ -249,6 +249,11 @@ _OVERRIDABLE = {f[0]: f[1] for f in FACTORS}
 # ISO 1302's finest class N1 = 0.025 um), face width and largest tip relief (module units)
 _MIN_TORQUE, _MIN_RA, _MIN_WIDTH, _MAX_RELIEF = 1e-9, 0.01, 0.1, 0.1
 _FACTOR_RANGE = (1e-3, 1e6)  # a factor given by its symbol (the load factors from 1)
+# one pair's load-independent part, by its arguments (gears.rating._block): rating the same pair
+# at other loads computes the load's part only
+_GEARS: dict = {}
+_GEOMETRY: dict = {}  # and its pair_geometry, by its arguments
+_PLAIN = frozenset({int, float, bool, type(None), np.float64, np.int64, np.bool_})
 
 
 def _overrides(factors):
@@ -413,7 +418,15 @@ def _arguments(args):
              "addendum", "tip_shortening", "threads")  # fmt: skip
     geo = args["geometry"]
     if geo is None:
-        geo = pair_geometry(*(args[k] for k in names))
+        values = tuple(args[k] for k in names)
+        one = all(type(v) in _PLAIN for v in values)  # one pair of plain numbers: kept
+        geo = _GEOMETRY.get(values) if one else None
+        if geo is None:
+            geo = pair_geometry(*values)
+            if one:
+                if len(_GEOMETRY) >= 256:
+                    _GEOMETRY.clear()
+                _GEOMETRY[values] = geo
     base = [np.asarray(args[k], float) for k in names[:7]] + [np.asarray(args["addendum"], float)]
     base.append(np.asarray(args["internal"], bool))
     a.update(zip(("z1", "z2", "m", "x1", "x2", "pa", "helix", "ha", "internal"), base, strict=True))
@@ -508,11 +521,10 @@ def _blocks(a, mats, fields, threads):
     n = math.prod(shape)
     wanted = {*fields, "valid", "reason"}  # the others are None
     if n < 2 * _CHUNK:
-        res = rate_block(a, mats, fields)
-        if n == 1 and shape == ():
-            return PairRatings(
-                **{f: np.asarray(res[f])[()] if f in wanted else None for f in _FIELDS}
-            )
+        one = n == 1 and shape == ()
+        res = rate_block(a, mats, fields, _GEARS if one else None)
+        if one:
+            return PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
         )
@@ -535,6 +547,11 @@ def _blocks(a, mats, fields, threads):
         for _ in _pool(threads).map(work, blocks):
             pass
     return PairRatings(**{f: store[f].reshape(shape) if f in store else None for f in _FIELDS})
+
+
+def _number_of(v):
+    """One pair's value as a numpy scalar."""
+    return v if type(v) is np.float64 else np.asarray(v)[()]
 
 
 def _as_material(value) -> Material:

@@ -56,7 +56,13 @@ _BENDING_TABLE = _curve_table(_BENDING_CURVES, _BENDING_CURVE_OF)
 
 
 def _life(cycles, code, table):
+    """The curve of ``table`` at ``cycles``: linear in log-log between the knots, constant
+    outside them (one material group: ``np.interp``; groups per row: the same by branches)."""
     logn, logy = table
+    if isinstance(code, int | np.integer):
+        n = np.log(np.maximum(cycles, 1.0))
+        out = np.exp(np.interp(n, logn[code], logy[code]))
+        return out[()] if np.ndim(out) == 0 else out
     code = np.asarray(code)
     n = np.log(np.maximum(np.asarray(cycles, float), 1.0))
     k0, k1, k2 = (logn[code, i] for i in range(3))

@@ -20,6 +20,7 @@ __all__ = [
     "face_load_factor",
     "face_load_factor_root",
     "helix_running_in",
+    "light_load_factor",
     "mesh_stiffness",
     "profile_running_in",
     "single_stiffness",
@@ -76,9 +77,19 @@ def single_stiffness(zn1, zn2, x1, x2, helix_angle=0.0, dedendum=1.25, pressure_
     )
     c = 0.8 * c_b * np.cos(np.radians(helix_angle)) / q
     if line_load is not None:
-        w = np.asarray(line_load, float)
-        c = c * _where(w < 100.0, np.sqrt(np.sqrt(np.maximum(w, 0.0) / 100.0)), 1.0)
+        c = c * light_load_factor(line_load)
     return _out(c)
+
+
+def light_load_factor(line_load):
+    """``(F_t K_A / b / 100)^0.25`` below a line load of 100 N/mm, else 1: the single stiffness
+    at light loads (ISO 6336-1 §9.3).
+
+    >>> float(light_load_factor(6.25)), float(light_load_factor(500.0))
+    (0.5, 1.0)
+    """
+    w = np.asarray(line_load, float)
+    return _where(w < 100.0, np.sqrt(np.sqrt(np.maximum(w, 0.0) / 100.0)), 1.0)
 
 
 def mesh_stiffness(c_prime, eps_alpha):

@@ -3,11 +3,12 @@
 Run as ``python tests/benchmarks/bench_rating.py [n] [rounds]``. Prints
 
 * the time to rate one pair (19/61, m 3, b 30, 150 N m at 1450 rpm, case-carburized, 20 000 h):
-  ``GearPair.rating`` (the whole call: geometry, every factor, the Rating view) and
-  ``gears.rate_pairs`` for the one pair, beside python-gearbox's ISO pitting and bending rating of
-  the same pair where that package is installed (``pip install python-gearbox`` into a
-  benchmark environment; it is no dependency of geartrain), timed in the same rounds, and the
-  ratio;
+  ``GearPair.rating`` (the whole call: every factor, the Rating view; the pair's
+  load-independent part cleared before each call, as for a new pair), the same pair rated again
+  at other torques (that part kept) and ``gears.rate_pairs`` for the one pair (geometry
+  included), beside python-gearbox's ISO pitting and bending rating of the same pair where that
+  package is installed (``pip install python-gearbox`` into a benchmark environment; it is no
+  dependency of geartrain), timed in the same rounds, and the ratio;
 * rated pairs per second for ``n`` random external helical pairs (z 14 ... 40 / 40 ... 120,
   m 1 ... 8, x 0 ... 0.5 / -0.2 ... 0.3, beta 15 deg, b 10 m, T 10 ... 500 m^2 N m, 1500 rpm)
   through ``rate_pairs``: the four safeties only (what a search needs) and every field, on 1 and
@@ -35,12 +36,34 @@ SAFETIES = ("S_H1", "S_H2", "S_F1", "S_F2")
 
 
 def our_pair():
+    """A first rating of the pair: the load-independent part is not kept from the last call."""
+    from gears.rating import iso6336
+
     pair = GearPair(Gear(19, 3, face_width=30), Gear(61, 3, face_width=30))
-    return lambda: pair.rating(T1, N1)
+
+    def run():
+        iso6336._GEARS.clear()  # as if the pair were new
+        return pair.rating(T1, N1)
+
+    return run
+
+
+def our_pair_loads():
+    """The same pair rated again at other torques (a load spectrum, a torque sweep)."""
+    pair = GearPair(Gear(19, 3, face_width=30), Gear(61, 3, face_width=30))
+    torques = iter(np.tile(np.linspace(50.0, 300.0, 97), 10**5))
+    return lambda: pair.rating(float(next(torques)), N1)
 
 
 def our_vectorised():
-    return lambda: rate_pairs(19, 61, 3, 30, T1, N1)
+    from gears.rating import iso6336
+
+    def run():
+        iso6336._GEARS.clear()
+        iso6336._GEOMETRY.clear()
+        return rate_pairs(19, 61, 3, 30, T1, N1)
+
+    return run
 
 
 def gearbox_pair():
@@ -85,7 +108,11 @@ def per_call(fn, calls: int) -> float:
 
 def single(rounds: int = 7, calls: int = 200) -> dict[str, float]:
     """Best seconds per call of each route, the routes interleaved round by round."""
-    routes = {"GearPair.rating": our_pair(), "rate_pairs (1 pair)": our_vectorised()}
+    routes = {
+        "GearPair.rating": our_pair(),
+        "GearPair.rating, other T": our_pair_loads(),
+        "rate_pairs (1 pair)": our_vectorised(),
+    }
     peer = gearbox_pair()
     if peer is not None:
         routes["python-gearbox ISO"] = peer

@@ -226,3 +226,22 @@ def test_safeties_are_finite_and_fall_as_the_torque_rises(z1, dz, m, b_per_m, he
         assert np.all(np.isfinite(s)) and np.all(s > 0)
         # non-increasing within rounding as the torque rises
         assert np.all(np.diff(s) <= 1e-12 * s[:-1]), s
+
+
+# --- one pair at many loads: the gears' part kept, the numbers those of the array path ------------
+def test_repeated_ratings_of_one_pair_agree_with_the_array_path():
+    pair = GearPair(Gear(19, 3, helix_angle=12.0, face_width=30),
+                    Gear(61, 3, helix_angle=-12.0, face_width=30))  # fmt: skip
+    torques, speeds = [5.0, 80.0, 150.0, 900.0], [300.0, 1450.0, 1450.0, 6000.0]
+    # brute force: the same formulas over arrays (no cache), row by row
+    rows = rate_pairs(19, 61, 3, 30, torques, speeds, helix_angle=12.0, tip_shortening=True)
+    for i, (t, n) in enumerate(zip(torques, speeds, strict=True)):
+        for _ in range(2):  # the second call finds the gears' part kept
+            r = pair.rating(t, n)
+            for f in ("S_H1", "S_H2", "S_F1", "S_F2", "K_v", "Z_v", "Y_NT1"):
+                assert getattr(r.values, f) == pytest.approx(getattr(rows, f)[i], rel=1e-12), f
+    # another pair is not served from the kept part
+    other = GearPair(Gear(19, 3, face_width=30, profile_shift=0.3), Gear(61, 3, face_width=30))
+    assert other.rating(150, 1450).safety_bending[0] != pytest.approx(
+        pair.rating(150, 1450).safety_bending[0], rel=1e-6
+    )
