@@ -19,6 +19,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
@@ -65,6 +66,9 @@ from gears.noncircular.teeth import (
     roll_step,
 )
 from gears.report import Finding, Report
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["NonCircularPair"]
 
@@ -383,7 +387,10 @@ class NonCircularPair:
                 "teeth are cut on external non-circular pairs only; an internal pair's ring "
                 "needs a shaper cutter, which is not modelled here"
             )
-        return self._outline(g, tol, progress)
+        cache = self.__dict__.setdefault("_outlines", {})  # a view: cut once per tolerance
+        if (g, tol) not in cache:
+            cache[(g, tol)] = self._outline(g, tol, progress)
+        return cache[(g, tol)]
 
     def _outline(self, g: int, tol: float, progress) -> shapely.Polygon:
         cutter = self.cutter
@@ -445,6 +452,25 @@ class NonCircularPair:
         first, second = self.outlines(0.0, tol)
         return transmission_error(first, second, ((0.0, 0.0), (self.center_distance, 0.0)),
                                   angles, self.output_angle)  # fmt: skip
+
+    def scene(
+        self, angle: float = 0.0, face_width: float = 10.0, tolerance: float = 0.01
+    ) -> trimesh.Scene:
+        """A ``trimesh.Scene`` of both gears in mesh at the input angle ``angle`` (degrees): each
+        outline extruded over ``face_width`` mm (:func:`gears.solid.mesh.gear_solid`)."""
+        from gears.arguments import check_length
+        from gears.solid.mesh import gear_solid, scene, transform
+
+        phi = check_angle("angle", angle)
+        b = check_length("face_width", face_width, self.center_distance, "the centre distance")
+        tol = check_tolerance(tolerance, module=self.cutter.module)
+        first, second = self.outline(1, tol), self.outline(2, tol)
+        psi = float(self.output_angle(phi))
+        return scene([
+            ("gear1", gear_solid(first, b, tolerance=tol), transform(phi), (0.2, 0.4, 0.8)),
+            ("gear2", gear_solid(second, b, tolerance=tol),
+             transform(-psi, (self.center_distance, 0.0)), (0.9, 0.5, 0.1)),
+        ])  # fmt: skip
 
     def _placed(self, first, second, phi: float):
         from shapely import affinity

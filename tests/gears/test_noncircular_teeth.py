@@ -89,6 +89,17 @@ def test_tooth_thickness_on_the_pitch_curve(ellipses):
     assert inside / curve.length == pytest.approx(0.5, abs=0.01)
 
 
+def test_scene_is_two_watertight_prisms(ellipses):
+    # each gear extruded over 6 mm: watertight, volume = outline area x face width
+    p, (one, two) = ellipses
+    scene = p.scene(0.0, 6.0, 0.02)
+    solids = list(scene.geometry.values())
+    assert len(solids) == 2 and all(s.is_watertight for s in solids)
+    assert sorted(s.volume for s in solids) == pytest.approx(
+        sorted([one.area * 6.0, two.area * 6.0]), rel=1e-6
+    )
+
+
 # --- transmission error of any two outlines ------------------------------------------------------
 def test_involute_pair_has_zero_transmission_error(involutes):
     # the library's involute pair at zero backlash: zero to the outline tolerance (0.001 mm)
