@@ -66,6 +66,8 @@ __all__ = [
     "rotate_forces",
     "tangential_force",
     "working_helix_angle",
+    "worm_mesh_forces",
+    "worm_pair_forces",
 ]
 
 
@@ -280,6 +282,64 @@ def bevel_mesh_forces(
     return _finite(out, "the mesh forces")
 
 
+def worm_mesh_forces(
+    torque: ArrayLike, worm_diameter: ArrayLike, lead_angle: ArrayLike,
+    normal_pressure_angle: ArrayLike = 20.0, friction: ArrayLike = 0.0, driving: str = "worm",
+) -> MeshForces:  # fmt: skip
+    """The mesh force of a cylindrical worm pair (shaft angle 90 deg) at the worm's reference
+    cylinder, with friction (the normal force W and the friction mu W along the thread; DIN
+    3996 / ISO/TR 14521, Shigley's W_x, W_y, W_z):
+
+    * worm tangential ``F_t1 = 2000 T_1 / d_1 = W (cos alpha_n sin gamma + s mu cos gamma)``,
+    * worm axial = wheel tangential ``F_a1 = W (cos alpha_n cos gamma - s mu sin gamma)``,
+    * radial ``F_r = W sin alpha_n``,
+
+    with ``s = +1`` when the worm drives and ``-1`` when the wheel drives (the friction turns);
+    so ``F_t1 = F_a1 tan(gamma +- phi')``, ``tan phi' = mu / cos alpha_n`` (Ozols (14.15),
+    (14.18)). ``torque`` is the worm's, N m (its sign is kept on ``vector``).
+
+    Returns
+    -------
+    MeshForces
+        ``tangential`` F_t1, ``axial`` F_a1, ``radial`` F_r, ``normal`` W, ``radial_2`` F_r
+        and ``axial_2`` the wheel's axial force F_t1; ``vector`` the force on a right-hand
+        worm in the frame of :func:`worm_pair_forces`.
+
+    Raises
+    ------
+    GearError
+        A wheel that cannot drive its worm (``gamma <= phi'``: self-locking).
+
+    Examples
+    --------
+    >>> f = worm_mesh_forces(10.0, 40.0, 5.710593, 20.0)     # tan gamma = 0.1, no friction
+    >>> round(float(f.tangential), 3), round(float(f.axial), 3), round(float(f.radial), 3)
+    (500.0, 5000.0, 1828.928)
+    """
+    t = tangential_force(torque, worm_diameter)
+    g = np.radians(_array("lead_angle", lead_angle, 0.0, 90.0))
+    an = np.radians(_array("normal_pressure_angle", normal_pressure_angle, 0.0, 90.0))
+    mu = _array("friction", friction, 0.0, 1.0, low_open=False)
+    if driving not in ("worm", "wheel"):
+        raise GearError(f"driving = {driving!r}; valid are 'worm', 'wheel'")
+    s = 1.0 if driving == "worm" else -1.0
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        per_w = np.cos(an) * np.sin(g) + s * mu * np.cos(g)  # F_t1 / W
+        if np.any(per_w <= 0.0):
+            raise GearError(
+                f"friction = {float(np.max(mu)):g} with the wheel driving: the pair is "
+                "self-locking (lead angle <= the friction angle); valid is a friction below "
+                "tan(gamma) cos(alpha_n)"
+            )
+        ft = np.abs(t)
+        w = ft / per_w
+        fa = w * (np.cos(an) * np.cos(g) - s * mu * np.sin(g))
+        fr = w * np.sin(an)
+        vec = np.stack(np.broadcast_arrays(-fr, -t, np.sign(t) * fa), axis=-1)
+        out = MeshForces(ft + 0.0 * fa, fr, fa, w, vec, fr, ft + 0.0 * fa)
+    return _finite(out, "the worm forces")
+
+
 def friction_mesh_force(
     tangential: ArrayLike, working_pressure_angle: ArrayLike, friction: ArrayLike,
     contact_pressure_angle: ArrayLike | None = None,
@@ -487,6 +547,10 @@ class PairForces:
         return out
 
     def _title(self) -> str:
+        if self.kind == "worm":  # gear 1 is the worm; the angles are alpha_n and gamma
+            return (f"worm mesh, torque {self.torque:g} N m on the worm (gear 1), alpha_n "
+                    f"{self.working_pressure_angle:.4f} deg, lead angle "
+                    f"{self.working_helix_angle:.4f} deg, friction {self.friction:g}")  # fmt: skip
         head = f"{self.kind} mesh, torque {self.torque:g} N m on gear 1"
         head += f", alpha_wt {self.working_pressure_angle:.4f} deg"
         if self.working_helix_angle:
@@ -579,4 +643,32 @@ def bevel_pair_forces(pair, torque) -> PairForces:
         "bevel", t, t2, (ft, ft), (float(m.radial), float(m.radial_2)),
         (float(m.axial), float(m.axial_2)), (float(m.normal), float(m.normal)),
         np.stack([v1, v2]), point, np.zeros((2, 3)), axes, float(pair.pressure_angle), 0.0, 0.0,
+    )  # fmt: skip
+
+
+def worm_pair_forces(pair, torque, friction=0.0, driving="worm") -> PairForces:
+    """The forces of a :class:`gears.WormPair` under ``torque`` N m on the worm (signed about
+    its axis), with ``friction`` mu and the ``driving`` member (:func:`worm_mesh_forces`), as
+    a :class:`PairForces`. Its frame: the origin on the worm's axis (+z), x towards the wheel's
+    axis, which runs along y through ``(a, 0, 0)``; a left-hand pair mirrors the axial forces.
+    """
+    t = float(_array("torque", torque))
+    if t == 0.0:
+        raise GearError(f"torque = {torque!r}; valid is a finite non-zero number (N m)")
+    m = worm_mesh_forces(t, pair.worm_diameter, pair.lead_angle, pair.normal_pressure_angle,
+                         friction, driving)  # fmt: skip
+    v1 = np.array(m.vector, float)
+    if getattr(pair, "hand", "right") == "left":
+        v1[2] = -v1[2]
+    v1 = v1 + 0.0
+    v2 = -v1 + 0.0
+    point = np.array([pair.worm_diameter / 2, 0.0, 0.0])
+    centre2 = np.array([pair.center_distance, 0.0, 0.0])
+    axes = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0]])
+    t2 = -_moment(point, centre2, axes[1], v2) + 0.0
+    ft, fr, fa, fn = (float(x) for x in (m.tangential, m.radial, m.axial, m.normal))
+    return PairForces(
+        "worm", t, t2, (ft, fa), (fr, fr), (fa, ft), (fn, fn), np.stack([v1, v2]), point,
+        np.stack([np.zeros(3), centre2]), axes, float(pair.normal_pressure_angle),
+        float(pair.lead_angle), float(_array("friction", friction, 0.0, 1.0, low_open=False)),
     )  # fmt: skip

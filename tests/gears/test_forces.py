@@ -25,6 +25,7 @@ from gears.forces import (
     pair_forces,
     rotate_forces,
     tangential_force,
+    worm_mesh_forces,
 )
 
 REL = 1e-12  # floats of one formula evaluated two ways
@@ -225,6 +226,8 @@ def test_property_finite_or_gear_error(torque, d, a, b, f):
         lambda: bevel_mesh_forces(torque, d, a, b),
         lambda: friction_mesh_force(abs(torque), a, f, b),
         lambda: rotate_forces([torque, d, a], b),
+        lambda: worm_mesh_forces(torque, d, a, b, f),
+        lambda: worm_mesh_forces(torque, d, a, 20.0, f, "wheel"),
     ):
         try:
             out = call()
@@ -271,3 +274,43 @@ def test_pair_forces_figure_method():
     fig = pair_forces_figure(pair.forces(100.0), pair.outlines(tolerance=0.05))
     assert len(fig.axes[0].texts) == 8
     plt.close(fig)
+
+
+@pytest.mark.parametrize("hand", ["right", "left"])
+@pytest.mark.parametrize("starts, q", [(1, 10), (2, 8), (4, 9)])
+def test_worm_forces_against_the_efficiency(starts, q, hand):
+    # frictionless: F_t1 = F_a1 tan gamma and F_r = F_a1 tan alpha_n / cos gamma (the normal
+    # force is perpendicular to the thread); with friction the wheel's torque over the worm's
+    # ideal one is the efficiency of Ozols (14.15) (worm driving) or its inverse (14.18)
+    from gears import WormPair
+    from gears.forces import worm_pair_forces
+
+    pair = WormPair(starts, 40, 4, diameter_quotient=q, hand=hand)
+    g, an = math.radians(pair.lead_angle), math.radians(pair.normal_pressure_angle)
+    f = worm_pair_forces(pair, 12.0)
+    assert f.tangential[0] == pytest.approx(f.axial[0] * math.tan(g), rel=1e-12)
+    assert f.radial[0] == pytest.approx(f.axial[0] * math.tan(an) / math.cos(g), rel=1e-12)
+    u = 40 / starts
+    sign = 1.0 if hand == "right" else -1.0  # the wheel turns the other way about +y
+    assert f.torque_2 == pytest.approx(sign * 12.0 * u, rel=1e-12)
+    for driving in ("worm", "wheel"):
+        fr = worm_pair_forces(pair, 12.0, 0.04, driving)
+        eta = pair.efficiency(0.04, driving)
+        ideal = sign * 12.0 * u
+        expected = ideal * eta if driving == "worm" else ideal / eta
+        assert fr.torque_2 == pytest.approx(expected, rel=1e-12)
+    # the normal force is perpendicular to the thread (lead angle gamma, its hand)
+    bw = g if hand == "right" else -g
+    thread = np.array([0.0, math.cos(bw), math.sin(bw)])
+    assert abs(np.dot(f.vectors[0], thread)) < 1e-9 * f.normal[0]
+
+
+def test_worm_self_locking_wheel_cannot_drive():
+    from gears import WormPair
+    from gears.forces import worm_pair_forces
+
+    pair = WormPair(1, 40, 4, diameter_quotient=12)  # gamma = 4.76 deg
+    with pytest.raises(GearError, match="self-locking"):
+        worm_pair_forces(pair, 5.0, 0.1, "wheel")
+    with pytest.raises(GearError, match="driving"):
+        worm_pair_forces(pair, 5.0, 0.1, "nobody")
