@@ -3,7 +3,8 @@
 Sources: Ozols, *Mehanismu un masinu teorija* (1974) section 11-2 (11.8) and section 21-4
 (21.15)-(21.18); ISO 6336-1 (1) F_t = 2000 T / d; ISO 10300-1 bevel forces at the mean cone
 (F_r = F_t tan alpha cos delta, F_a = F_t tan alpha sin delta); independent derivations named
-at each test (torque balance about each axis, the line of action tangent to the base circle).
+at each test (torque balance about each axis, the line of action tangent to the base circle);
+Joldasbekov, Ch. VII section 10 (7.65)-(7.68) and the mesh force constant P = 97400 N / (n r0).
 """
 
 from __future__ import annotations
@@ -314,3 +315,27 @@ def test_worm_self_locking_wheel_cannot_drive():
         worm_pair_forces(pair, 5.0, 0.1, "wheel")
     with pytest.raises(GearError, match="driving"):
         worm_pair_forces(pair, 5.0, 0.1, "nobody")
+
+
+@pytest.mark.parametrize("x", [-6.0, -2.0, 0.5, 3.0, 7.0])
+def test_friction_joldasbekov_7_65_7_67(x):
+    # Joldasbekov (7.65), (7.67): N21 = M1 / [r1 cos a -+ f (r1 sin a -+ x)], x the distance of
+    # the contact point from the pitch point along the line of action (approach before it)
+    r1, a, f, m1 = 50.0, math.radians(20), 0.08, 100.0  # mm, rad, -, N m
+    approach = x < 0
+    arm = r1 * math.sin(a) + x  # N1 to the contact point, mm (x < 0 in the approach)
+    den = r1 * math.cos(a) - f * arm if approach else r1 * math.cos(a) + f * arm
+    n21 = 1000 * m1 / den
+    rb = r1 * math.cos(a)
+    alpha_y = math.degrees(math.atan(arm / rb))
+    q = friction_mesh_force(1000 * m1 / r1, 20.0, f, alpha_y)
+    assert float(q.normal) == pytest.approx(n21, rel=1e-12)
+    assert float(q.friction) == pytest.approx(f * n21, rel=1e-12)
+
+
+def test_joldasbekov_mesh_force_constant():
+    # Joldasbekov, the mesh force P = 97400 N / (n r0) (kgf from kW, rpm, cm; the constant is
+    # 60 * 100 * 1000 / (2 pi g) = 97 376 rounded): 10 kW at 1000 rpm on r0 = 5 cm
+    p_kgf = 97400 * 10 / (1000 * 5)
+    torque = 10e3 / (2 * math.pi * 1000 / 60)  # N m
+    assert float(tangential_force(torque, 100.0)) == pytest.approx(p_kgf * 9.80665, rel=3e-4)

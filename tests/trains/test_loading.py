@@ -5,7 +5,8 @@ R = M1 / (r1 cos alpha), (11.9) the idler's bearing 2 R cos alpha, (11.10) the t
 R23 = R12 r2 / r2', (11.11) three planets R = M1 / (3 r1 cos alpha), the pin
 sqrt(J^2 + (2 R cos alpha)^2) and M_H = M1 (1 + r3 / r1). Statics (independent of the code's
 route): every member's forces and torques balance, Newton's third law per mesh, and the frame's
-bearings carry no net force (every mesh force and pin force is internal to the train).
+bearings carry no net force (every mesh force and pin force is internal to the train);
+Joldasbekov Ch. VIII section 12: the stepped planet's two reactions balance about its axis.
 """
 
 from __future__ import annotations
@@ -362,3 +363,16 @@ def test_figure_draws_every_mesh_force_and_bearing():
     # 6 mesh forces (2 meshes x 3 planets) and the planet's pin: arrow and label each
     assert len(fig.axes[0].texts) == 2 * 7
     plt.close(fig)
+
+
+def test_joldasbekov_planet_block_balance():
+    # Joldasbekov Ch. VIII section 12 (Fig. 255): the stepped planet's two mesh reactions
+    # balance about its axis, R12 r2 cos a = R32' r2' cos a', and wheel 3 gives
+    # R2'3 = M3 / (r3 cos a'); here sun 1 (20) drives planet 2 (40), 2' (30) rolls in ring 3 (90)
+    t = stepped_planetary(20, 40, 30, 90, n_planets=3)
+    ld = loads(t, "1", "H", fixed=["3"], torque=60.0, module=2.0)
+    r2, r2p = 40.0, 30.0
+    f12, f23 = ld.meshes["1-2"].tangential[0], ld.meshes["2-3"].tangential[0]
+    assert f12 * r2 == pytest.approx(f23 * r2p, rel=1e-12)
+    m3 = ld.members["3"].torque / 3  # the ring's holding torque per planet
+    assert ld.meshes["2-3"].normal[0] == pytest.approx(abs(m3) / (0.090 * COS20), rel=1e-12)
