@@ -49,6 +49,9 @@ from trains.power import PowerFlow, power_flow
 from trains.relations import FRAME, Relation
 from trains.willis import Train
 
+#: The most copies of one planet :func:`loads` places (the work is one force per copy and mesh).
+MAX_COPIES = 1000
+
 __all__ = ["MemberLoad", "MeshLoad", "TrainLoads", "loads", "planetary_loads", "solid_mass"]
 
 
@@ -461,6 +464,11 @@ def _spread(planets, planet_angles, load_sharing) -> dict[str, tuple[list[float]
     sharing = _mapping("load_sharing", load_sharing, planets, "planet -> K_gamma")
     out = {}
     for p, (_, n) in planets.items():
+        if n > MAX_COPIES:
+            raise TrainError(
+                f"planet {p!r} has {n} copies; loads places at most {MAX_COPIES} copies of a "
+                "planet (each is a force of its own)"
+            )
         turns = [2 * math.pi * k / n for k in range(n)]
         if p in angles:
             a = angles[p]

@@ -339,3 +339,31 @@ def test_joldasbekov_mesh_force_constant():
     p_kgf = 97400 * 10 / (1000 * 5)
     torque = 10e3 / (2 * math.pi * 1000 / 60)  # N m
     assert float(tangential_force(torque, 100.0)) == pytest.approx(p_kgf * 9.80665, rel=3e-4)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    torque=st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-5, 5)),
+    friction=st.one_of(st.floats(-1, 2), st.just(float("nan"))),
+    mass=st.floats(allow_nan=True, allow_infinity=True),
+    speed=st.floats(allow_nan=True, allow_infinity=True),
+)
+def test_property_views_finite_or_gear_error(torque, friction, mass, speed):
+    # the pair views and the centrifugal force: a finite answer or GearError, never NaN
+    from gears import WormPair
+    from gears.forces import centrifugal_force, worm_pair_forces
+
+    calls = (
+        lambda: pair_forces(GearPair(Gear(20, 5), Gear(40, 5)), torque, friction),
+        lambda: bevel_pair_forces(BevelPair(20, 40, 3, 20), torque),
+        lambda: worm_pair_forces(WormPair(1, 40, 5, diameter_quotient=10), torque, friction),
+        lambda: centrifugal_force(mass, speed, 57.0),
+    )
+    for call in calls:
+        try:
+            out = call()
+        except GearError:
+            continue
+        values = (out.vectors, out.normal, out.torque_2) if hasattr(out, "vectors") else (out,)
+        for v in values:
+            assert np.all(np.isfinite(np.asarray(v, float)))

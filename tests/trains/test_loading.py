@@ -376,3 +376,14 @@ def test_joldasbekov_planet_block_balance():
     assert f12 * r2 == pytest.approx(f23 * r2p, rel=1e-12)
     m3 = ld.members["3"].torque / 3  # the ring's holding torque per planet
     assert ld.meshes["2-3"].normal[0] == pytest.approx(abs(m3) / (0.090 * COS20), rel=1e-12)
+
+
+def test_too_many_planets_is_refused_before_the_work():
+    with pytest.raises(TrainError, match="at most 1000"):
+        loads(
+            simple_planetary(20, 30, 80, n_planets=10**7),
+            "sun",
+            "carrier",
+            fixed=["ring"],
+            module=2,
+        )
