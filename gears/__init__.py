@@ -9,59 +9,54 @@ The public surface (see ``docs/``)::
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/design_search.md)
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
+
+The names are imported on first use (:mod:`gears.lazy`): ``from gears.errors import GearError``
+or a command that needs one class loads that class's modules, not the whole library.
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from gears.lazy import attach
 
-from gears.bevel.gear import BevelGear
-from gears.bevel.pair import BevelPair
-from gears.checks import GearMargins, PairMargins, gear_margins, pair_margins
-from gears.cutting.cutter import ShaperCutter
-from gears.errors import GearError
-from gears.forces import PairForces
-from gears.gear import Gear
-from gears.mating import Rack
-from gears.meshing import PairGeometry, pair_geometry
-from gears.noncircular.conjugate import conjugate, transmission_error
-from gears.noncircular.pair import NonCircularPair
-from gears.pair import GearPair
-from gears.rack import BasicRack
-from gears.rating.capacity import Rating
-from gears.rating.iso6336 import PairRatings, rate_pairs
-from gears.rating.materials import MATERIALS, Material
-from gears.report import Finding, Report
-from gears.worm.pair import WormPair
+_getattr, __dir__, __all__ = attach(
+    __name__,
+    {
+        "BasicRack": "gears.rack",
+        "BevelGear": "gears.bevel.gear",
+        "BevelPair": "gears.bevel.pair",
+        "conjugate": "gears.noncircular.conjugate",
+        "Finding": "gears.report",
+        "Gear": "gears.gear",
+        "gear_margins": "gears.checks",
+        "GearError": "gears.errors",
+        "GearMargins": "gears.checks",
+        "GearPair": "gears.pair",
+        "Material": "gears.rating.materials",
+        "MATERIALS": "gears.rating.materials",
+        "NonCircularPair": "gears.noncircular.pair",
+        "pair_geometry": "gears.meshing",
+        "pair_margins": "gears.checks",
+        "PairForces": "gears.forces",
+        "PairGeometry": "gears.meshing",
+        "PairMargins": "gears.checks",
+        "PairRatings": "gears.rating.iso6336",
+        "Rack": "gears.mating",
+        "rate_pairs": "gears.rating.iso6336",
+        "Rating": "gears.rating.capacity",
+        "Report": "gears.report",
+        "ShaperCutter": "gears.cutting.cutter",
+        "transmission_error": "gears.noncircular.conjugate",
+        "WormPair": "gears.worm.pair",
+    },
+)
 
-try:
-    __version__ = version("geartrain")  # pyproject.toml's version, as installed
-except PackageNotFoundError:  # pragma: no cover - a bare source tree, not installed
-    __version__ = "unknown"
 
-__all__ = [
-    "MATERIALS",
-    "BasicRack",
-    "BevelGear",
-    "BevelPair",
-    "Finding",
-    "Gear",
-    "GearError",
-    "GearMargins",
-    "GearPair",
-    "Material",
-    "NonCircularPair",
-    "PairForces",
-    "PairGeometry",
-    "PairMargins",
-    "PairRatings",
-    "Rack",
-    "Rating",
-    "Report",
-    "ShaperCutter",
-    "WormPair",
-    "conjugate",
-    "gear_margins",
-    "pair_geometry",
-    "pair_margins",
-    "rate_pairs",
-    "transmission_error",
-]
+def __getattr__(name: str) -> object:
+    if name == "__version__":  # pyproject.toml's version, as installed (importlib.metadata is slow)
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            value = version("geartrain")
+        except PackageNotFoundError:  # pragma: no cover - a bare source tree, not installed
+            value = "unknown"
+        globals()["__version__"] = value
+        return value
+    return _getattr(name)

@@ -246,19 +246,22 @@ def min_tolerance(module: float | None = None) -> float:
 
 
 def check_tolerance(
-    tolerance, name: str = "tolerance", module: float | None = None, floor: float | None = None
+    tolerance,
+    name: str = "tolerance",
+    module: float | None = None,
+    floor: float | None = None,
+    why: str = "the finest this library honours; 1e-4 mm already exceeds any grinder",
 ) -> float:
     """``tolerance`` as a float in mm, or a :class:`GearError` naming the valid range
     (finite and ``>= min_tolerance(module)``, or ``>= floor`` when given: a solid built from an
-    outline takes its floor from the outline's size)."""
+    outline takes its floor from the outline's size, and ``why`` says so)."""
     floor = min_tolerance(module) if floor is None else floor
     if not _is_real(tolerance):
         raise GearError(f"{name} = {_show(tolerance)}; valid is a number of mm >= {floor:g}")
     t = _float(tolerance)
     if not (math.isfinite(t) and t >= floor):
         raise GearError(
-            f"{name} = {_show(tolerance)} mm; valid is a finite tolerance >= {floor:g} mm "
-            "(the finest this library honours; 1e-4 mm already exceeds any grinder)"
+            f"{name} = {_show(tolerance)} mm; valid is a finite tolerance >= {floor:g} mm ({why})"
         )
     return t
 

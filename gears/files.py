@@ -10,6 +10,7 @@ still go wrong during the write itself (a full disk, a read-only mount) into the
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import pathlib
 from collections.abc import Iterable, Iterator
@@ -51,6 +52,14 @@ def check_output(path, formats: Iterable[str], name: str = "path") -> pathlib.Pa
     if not isinstance(text, str) or not text.strip():
         raise GearError(f"{name} {text!r}: give a file name ending in {valid}")
     out = pathlib.Path(text)
+    try:
+        return _check_path(out, text, name, formats, valid)
+    except OSError as exc:  # a name the file system refuses (too long, a loop of links)
+        why = _WHY.get(exc.errno, exc.strerror or str(exc)).format(parent=str(out.parent))
+        raise GearError(f"{name} {text!r:.80} cannot be written: {why}") from None
+
+
+def _check_path(out: pathlib.Path, text: str, name: str, formats, valid: str) -> pathlib.Path:
     if out.is_dir():
         raise GearError(f"{name} {text!r} is a directory; give a file name ending in {valid}")
     if out.suffix.lower() not in formats:
@@ -64,7 +73,38 @@ def check_output(path, formats: Iterable[str], name: str = "path") -> pathlib.Pa
     if not os.access(parent, os.W_OK | os.X_OK) or (out.exists() and not os.access(out, os.W_OK)):
         where = f"the file {text!r}" if out.exists() else f"the directory {str(parent)!r}"
         raise GearError(f"{name} {text!r} is not writable: {where} is read-only for this user")
+    _try_open(out, text, name, parent)
     return out
+
+
+#: why a file cannot be created, in a user's words, by errno
+_WHY = {
+    errno.ENOENT: "the directory {parent!r} does not accept new files (a virtual file system "
+    "such as /proc)",
+    errno.EROFS: "the directory {parent!r} is on a read-only file system",
+    errno.EACCES: "the directory {parent!r} or the file is read-only for this user",
+    errno.EPERM: "the directory {parent!r} or the file is read-only for this user",
+    errno.ENOSPC: "the disk is full",
+    errno.ENAMETOOLONG: "the file name is longer than the file system allows",
+}
+
+
+def _try_open(out: pathlib.Path, text: str, name: str, parent: pathlib.Path) -> None:
+    """Open ``out`` for writing the way the writer will (a new file is created and removed at
+    once; an existing one is opened to append, unchanged): the permission bits do not say what
+    a read-only mount, /proc or a root process may do, the attempt does."""
+    existed = out.exists()
+    try:
+        fd = os.open(out, os.O_WRONLY | (os.O_APPEND if existed else os.O_CREAT | os.O_EXCL))
+    except FileExistsError:  # created meanwhile by someone else: the writer will replace it
+        return
+    except OSError as exc:
+        why = _WHY.get(exc.errno, exc.strerror or str(exc)).format(parent=str(parent))
+        raise GearError(f"{name} {text!r} cannot be written: {why}") from None
+    os.close(fd)
+    if not existed:
+        with contextlib.suppress(OSError):
+            out.unlink()
 
 
 @contextlib.contextmanager

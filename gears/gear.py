@@ -31,11 +31,7 @@ from gears.arguments import (
 from gears.budget import check_budget
 from gears.checks import gear_margins, undercut_form_diameter
 from gears.cutting.cutter import ShaperCutter, ShaperTool
-from gears.cutting.outline import METHODS, gear_outline, outline_vertices
-from gears.cutting.profile import ShaperProfile
-from gears.cutting.sampling import default_rim
 from gears.errors import GearError
-from gears.figures.drawing import gear_svg
 from gears.geometry import (
     base_diameter,
     check_real,
@@ -333,6 +329,8 @@ class Gear:
             if not self.undercut:
                 return self.cutter.form_diameter(self)
             try:
+                from gears.cutting.profile import ShaperProfile  # the cutting family: when cut
+
                 return 2.0 * ShaperProfile(self, self.cutter).form_radius
             except GearError:
                 return math.nan
@@ -362,7 +360,8 @@ class Gear:
         form = self._form
         if math.isnan(form):
             raise GearError(
-                f"z = {self.teeth}, x = {self.profile_shift:g}: the undercut fillet does not "
+                f"z = {self.teeth}, profile_shift = {self.profile_shift:g}: "
+                "the undercut fillet does not "
                 "meet the involute (the tooth is cut away); use a larger profile shift"
             )
         return form
@@ -535,6 +534,8 @@ class Gear:
         :data:`gears.cutting.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
         tolerance that fits.
         """
+        from gears.cutting.outline import gear_outline  # the cutting family: when drawn
+
         return gear_outline(
             self, tolerance, method, backlash, bore, rim, angle, center, cutter, progress
         )
@@ -567,6 +568,8 @@ class Gear:
         b = self.face_width if face_width is None else face_width
         b = check_positive("face_width", 10.0 * self.module if b is None else b)
         tol = check_tolerance(tolerance, module=self.module)
+        from gears.cutting.outline import METHODS
+
         method = check_choice("method", method, METHODS)
         herringbone = check_flag("herringbone", herringbone)
         check_callback("progress", progress)
@@ -582,6 +585,8 @@ class Gear:
         """The outer radius of this gear's solid, mm: the tip radius, or a ring's root radius
         plus its rim (before any outline is drawn)."""
         if self.internal:
+            from gears.cutting.sampling import default_rim
+
             width = default_rim(self) if rim is None else check_positive("rim", rim)
             return self.root_diameter / 2 + width
         return self.tip_diameter / 2
@@ -592,6 +597,8 @@ class Gear:
                        herringbone: bool = False) -> float:  # fmt: skip
         """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
         the slices; :func:`gears.cutting.outline.outline_vertices`), before any outline is drawn."""
+        from gears.cutting.outline import outline_vertices
+
         n = outline_vertices(self, tolerance, method, backlash, bore, rim, cutter)
         return n * float(solid_levels(twist, self.solid_radius(rim), tolerance, herringbone))
 
@@ -615,4 +622,6 @@ class Gear:
     def _repr_svg_(self) -> str:
         """The gear's outline as an SVG picture, what a notebook shows
         (:func:`gears.figures.drawing.gear_svg`; a text instead when it cannot be drawn)."""
+        from gears.figures.drawing import gear_svg  # drawn in a notebook only
+
         return gear_svg(self, COLOURS["gear1"])

@@ -38,9 +38,7 @@ from gears.checks import (
     proportional_split,
     tip_diameter_limits,
 )
-from gears.cutting.outline import METHODS, outline_vertices, pair_outlines, pair_placement
 from gears.errors import GearError
-from gears.figures.drawing import pair_svg
 from gears.files import check_output
 from gears.forces import PairForces, pair_forces
 from gears.gear import Gear
@@ -56,8 +54,6 @@ from gears.meshing import (
     pair_geometry,
     specific_sliding,
 )
-from gears.rating.capacity import Rating, rate_pair
-from gears.rating.losses import MeshLosses, lubricant_factor, mesh_losses
 from gears.report import Finding, Report
 from gears.solid.animate import FORMATS, write_animation
 from gears.solid.mesh import COLOURS, gear_solid, helix_twist, scene, solid_levels, transform
@@ -67,6 +63,8 @@ if TYPE_CHECKING:
     from numpy.typing import ArrayLike
 
     from gears.cutting.cutter import ShaperCutter
+    from gears.rating.capacity import Rating
+    from gears.rating.losses import MeshLosses
     from gears.rating.materials import Material
 
 __all__ = ["GearPair"]
@@ -562,6 +560,8 @@ class GearPair:
             raise GearError(f"roughness = {roughness!r}; valid is Ra > 0 (um) or a pair")
         ra_m = 0.5 * sum(check_positive("roughness", r, "um") for r in ra)
         eta = check_positive("viscosity", viscosity, "mPa s")
+        from gears.rating.losses import MeshLosses, lubricant_factor, mesh_losses  # when asked
+
         x_l = lubricant_factor(lubricant)
         p = self.path_of_contact
         eps = p.length / p.base_pitch
@@ -667,6 +667,8 @@ class GearPair:
         >>> [round(s, 3) for s in r.safety_pitting], [round(s, 3) for s in r.safety_bending]
         ([1.053, 1.161], [3.287, 3.563])
         """
+        from gears.rating.capacity import rate_pair  # the rating family: loaded when rated
+
         return rate_pair(
             self, torque, speed, material, life=life, application_factor=application_factor,
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
@@ -685,6 +687,8 @@ class GearPair:
         working centre distance (see :func:`gears.cutting.outline.pair_outlines`; ``cutter`` is a
         shaper cutter for both gears or a pair of them; ``progress(done, total)`` follows a
         simulation of both)."""
+        from gears.cutting.outline import pair_outlines  # the cutting family: when drawn
+
         return pair_outlines(self, angle, tolerance, method, backlash, cutter, progress)
 
     def _unplaced(self, tolerance: float, method: str, backlash: float, cutter,
@@ -700,6 +704,8 @@ class GearPair:
     def _placement(self, angle: float) -> tuple[float, tuple[float, float]]:
         if self.is_rack:
             raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
+        from gears.cutting.outline import pair_placement
+
         g1, g2 = self.mounted
         return pair_placement(g1.teeth, g2.teeth, self.center_distance, self.internal, angle)
 
@@ -715,6 +721,8 @@ class GearPair:
         """The arguments every drawing of the pair shares, checked before any work."""
         if self.is_rack:
             raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
+        from gears.cutting.outline import METHODS
+
         tol = check_tolerance(tolerance, module=self.g1.module)
         method = check_choice("method", method, METHODS)
         check_callback("progress", progress)
@@ -790,6 +798,8 @@ class GearPair:
         checked and the drawing's size (frames times outline vertices) estimated before any
         work: over the animation budget it is refused with the tolerance that fits."""
         from shapely import affinity
+
+        from gears.cutting.outline import outline_vertices
 
         path = check_output(path, FORMATS)
         n = check_frames(frames)
@@ -877,4 +887,6 @@ class GearPair:
     def _repr_svg_(self) -> str:
         """Both gears in mesh with the line of action as an SVG picture, what a notebook shows
         (:func:`gears.figures.drawing.pair_svg`; a text instead when it cannot be drawn)."""
+        from gears.figures.drawing import pair_svg  # drawn in a notebook only
+
         return pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))

@@ -98,7 +98,8 @@ def test_differential_scene(capsys, tmp_path):
     import trimesh
 
     glb = tmp_path / "diff.glb"
-    code, _, _ = _run(capsys, "differential", "--gleason", "--scene", glb, "--tolerance", 0.1)
+    code, _, _ = _run(capsys, "differential", "--gleason", "--module", 3, "--scene", glb,
+                      "--tolerance", 0.1)  # fmt: skip
     assert code == 0
     sc = trimesh.load(glb)
     assert sorted(sc.graph.nodes_geometry) == ["left", "pinion1", "pinion2", "right"]

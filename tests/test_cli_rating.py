@@ -12,6 +12,13 @@ from trains import Planetary
 from trains.cli.app import main
 
 
+@pytest.fixture(autouse=True)
+def _wide_output(monkeypatch):
+    # these tests read values from the tables: one row per line (tests/test_cli_layout.py holds
+    # the layout at the 80 columns of a pipe)
+    monkeypatch.setenv("COLUMNS", "200")
+
+
 def _run(capsys, *argv) -> tuple[int, str, str]:
     code = main([str(a) for a in argv])
     out, err = capsys.readouterr()

@@ -102,7 +102,7 @@ LAYERS = {
         ["solid.export", "search.engine"],
     ],
     "trains": [
-        ["errors"],
+        ["errors", "cli._text"],
         ["inertia", "trajectory", "conditions", "relations"],
         ["willis", "planetary.schemes"],
         [

@@ -37,7 +37,6 @@ from gears.bevel.cone import (
     gleason_coefficients,
     max_face_width,
 )
-from gears.bevel.drawing import bevel_pair_svg
 from gears.bevel.gear import BevelGear, VirtualGear
 from gears.bevel.solid import bevel_placement
 from gears.budget import check_budget
@@ -171,6 +170,20 @@ class BevelPair:
         if profile not in PROFILES:
             raise GearError(f"profile = {profile!r}; valid are 'octoid', 'spherical_involute'")
         set_(self, "profile", profile)
+        try:
+            self._derive(tool_radius)
+        except GearError as exc:  # a shift can cause any of them: say which shift was given
+            x, xs = self.profile_shift, self.thickness_modification
+            if (x or xs) and "profile_shift" not in str(exc):
+                raise GearError(
+                    f"{exc} (with profile_shift = {x:g}, thickness_modification = {xs:g})"
+                ) from None
+            raise
+
+    def _derive(self, tool_radius) -> None:
+        """The tool radius (default: the full round that fits) and the checks of the derived
+        geometry."""
+        set_ = object.__setattr__
         if tool_radius is None:
             full = float(full_round_radius(self.addendum, self.dedendum, self.pressure_angle))
             # the tool tip land of the rack, less 5 %: the crown tooth on the sphere is a little
@@ -242,6 +255,15 @@ class BevelPair:
                 )
             if not (g.mean_addendum[i] + g.mean_dedendum[i]) > 0.0:
                 raise GearError(f"gear {i + 1}: no tooth depth is left")
+            if not g.mean_thickness[i] > 0.0:  # the shift or thickness took the whole tooth
+                x, xs = self.profile_shift, self.thickness_modification
+                used = abs(2 * x * math.tan(math.radians(self.pressure_angle)) + xs)
+                raise GearError(
+                    f"profile_shift = {x:g}, thickness_modification = {xs:g}: gear {i + 1}'s "
+                    f"tooth has no thickness at the mean cone (s_m = {g.mean_thickness[i]:.4g} "
+                    "mm); valid is |2 profile_shift tan(alpha) + thickness_modification| < pi/2 "
+                    f"(here {used:.4g})"
+                )
         self._rack(0)  # the generating tool must fit: a clear error now
         self._rack(1)
         _ = self.virtual_pair  # the virtual gears must exist (tips, roots): a clear error now
@@ -251,6 +273,15 @@ class BevelPair:
             try:
                 gear.tooth()
             except GearError as exc:
+                if "no thickness" in str(exc):  # the shift closed a tooth space: name it
+                    x, xs = self.profile_shift, self.thickness_modification
+                    used = abs(2 * x * math.tan(math.radians(self.pressure_angle)) + xs)
+                    raise GearError(
+                        f"profile_shift = {x:g}, thickness_modification = {xs:g}: gear "
+                        f"{gear.index + 1}'s tooth space closes at the mean cone; valid is "
+                        f"|2 profile_shift tan(alpha) + thickness_modification| < pi/2 "
+                        f"(here {used:.4g})"
+                    ) from None
                 if "tip land" not in str(exc):
                     raise
                 raise GearError(
@@ -538,13 +569,16 @@ class BevelPair:
             ("mean thickness s_m (arc)", g.mean_thickness, ".4f"),
             ("virtual teeth z_v", g.virtual_teeth, ".4f"),
         ]
+        try:
+            ratio = f"{self.contact_ratio:.4f}"
+        except GearError:  # a virtual tip inside its base circle: check() reports it
+            ratio = "none (a virtual tip lies inside its base circle)"
         head = (
             f"straight bevel pair {self.z1}/{self.z2}, m_et {self.module:g} mm, b "
             f"{self.face_width:g} mm, shaft angle {self.shaft_angle:g} deg, alpha "
             f"{self.pressure_angle:g} deg, {self.clearance} clearance, {self.profile} teeth\n"
             f"cone distance R_e {self.cone_distance:.4f} mm, R_m {self.mean_cone_distance:.4f} "
-            f"mm, mean module {self.mean_module:.4f} mm, contact ratio (virtual) "
-            f"{self.contact_ratio:.4f}"
+            f"mm, mean module {self.mean_module:.4f} mm, contact ratio (virtual) {ratio}"
         )
         lines = [head, f"{'':32s}{'pinion':>14s}{'wheel':>14s}"]
         for label, values, fmt in rows:
@@ -561,4 +595,6 @@ class BevelPair:
     def _repr_svg_(self) -> str:
         """The pair in axial section as an SVG picture, what a notebook shows
         (:func:`gears.bevel.drawing.bevel_pair_svg`; a text instead when it cannot be drawn)."""
+        from gears.bevel.drawing import bevel_pair_svg  # drawn in a notebook only
+
         return bevel_pair_svg(self, (COLOURS["gear1"], COLOURS["gear2"]))

@@ -92,7 +92,7 @@ class ShaperCutter:
     def __post_init__(self) -> None:
         z0 = self.teeth
         if isinstance(z0, bool) or not isinstance(z0, int | np.integer) or z0 < 5:
-            raise GearError(f"cutter teeth = {z0!r}; valid is an integer >= 5")
+            raise GearError(f"z0 = {z0!r} cutter teeth; valid is an integer >= 5")
         object.__setattr__(self, "teeth", int(z0))
         for name in ("shift", "addendum", "tip_radius"):
             v = getattr(self, name)
@@ -143,7 +143,8 @@ class ShaperCutter:
         """The cutting mesh as a pair (cutter = gear 1): :func:`gears.meshing.pair_geometry`."""
         if gear.internal and gear.teeth - self.teeth < 1:
             raise GearError(
-                f"cutter teeth = {self.teeth} for an internal gear of z = {gear.teeth}; valid is "
+                f"z0 = {self.teeth} cutter teeth "
+                f"for an internal gear of z = {gear.teeth}; valid is "
                 "z0 < z"
             )
         return pair_geometry(

@@ -320,7 +320,7 @@ def rack_outline(
     cut = blank.difference(shapely.union_all(spaces))
     if cut.geom_type != "Polygon":
         raise GearError(
-            f"z = {gear.teeth}, x = {gear.profile_shift:g}: the cut gear falls apart "
+            f"z = {gear.teeth}, profile_shift = {gear.profile_shift:g}: the cut gear falls apart "
             f"({cut.geom_type}); the teeth are cut away"
         )
     pts = np.asarray(cut.exterior.coords)[:-1]
@@ -581,7 +581,7 @@ def shaper_outline(
     holes = 0 if t.s > 0 else 1
     if cut.geom_type != "Polygon" or len(cut.interiors) != holes:
         raise GearError(
-            f"z = {gear.teeth}, x = {gear.profile_shift:g}: the cut gear falls apart "
+            f"z = {gear.teeth}, profile_shift = {gear.profile_shift:g}: the cut gear falls apart "
             f"({cut.geom_type}); the teeth are cut away"
         )
     if len(thickness_on(cut, gear.reference_diameter)) != gear.teeth:

@@ -174,7 +174,8 @@ class ToothProfile:
         # a hair inside the limit the fillet only touches the involute at d_b (g ~ 1e-16 > 0)
         idx = np.flatnonzero((g[:-1] > CROSSING) & (g[1:] <= CROSSING))
         cut_away = (
-            f"z = {self.z}, x = {self.gear.profile_shift:g}: the undercut fillet does not "
+            f"z = {self.z}, profile_shift = {self.gear.profile_shift:g}: "
+            "the undercut fillet does not "
             "meet the involute (the tooth is cut away); use a larger profile shift"
         )
         if idx.size == 0:
@@ -225,7 +226,8 @@ class ToothProfile:
 
         return _root(
             f, tau[first], tau[first + 1],
-            f"z = {self.z}, x = {self.gear.profile_shift:g}: the tool round's envelope folds "
+            f"z = {self.z}, profile_shift = {self.gear.profile_shift:g}: "
+            "the tool round's envelope folds "
             "where it should meet the involute; use method='shaper'",
         )  # fmt: skip
 
@@ -252,7 +254,8 @@ class ToothProfile:
             return float(self.fillet(x)[0]) - self.rf
 
         no_fold = (
-            f"internal z = {self.z}, x = {self.gear.profile_shift:g}: the rack-limit fillet "
+            f"internal z = {self.z}, profile_shift = {self.gear.profile_shift:g}: "
+            "the rack-limit fillet "
             "does not meet the involute; use method='shaper'"
         )
         if j < 1:  # the whole fillet lies beyond the root circle
@@ -289,7 +292,8 @@ class ToothProfile:
         # external, pointed: eta_involute(r) = pi/z between the form and tip circles
         return _root(
             lambda r: float(self.eta_involute(r)) - half, self.form_radius, self.ra,
-            f"z = {self.z}, x = {self.gear.profile_shift:g}: the tooth is pointed below its "
+            f"z = {self.z}, profile_shift = {self.gear.profile_shift:g}: "
+            "the tooth is pointed below its "
             "form circle (no flank left); use a smaller profile shift",
         )  # fmt: skip
 
@@ -316,7 +320,8 @@ class ToothProfile:
             )
         if self.tool.s > 0 and float(self.eta_involute(self.form_radius)) >= half:
             raise GearError(
-                f"z = {self.z}, x = {g.profile_shift:g}: the tooth is pointed below its form "
+                f"z = {self.z}, profile_shift = {g.profile_shift:g}: "
+                "the tooth is pointed below its form "
                 "circle (no flank left); use a smaller profile shift"
             )
 

@@ -238,7 +238,8 @@ def assemble(gear, pts, tol, bore, rim, center, root_radius) -> shapely.Polygon:
         poly = shapely.Polygon(pts, holes=holes)
     if not poly.is_valid:
         raise GearError(
-            f"the outline of z = {gear.teeth}, x = {gear.profile_shift:g} is not a valid polygon "
+            f"the outline of z = {gear.teeth}, profile_shift = {gear.profile_shift:g} "
+            "is not a valid polygon "
             f"({shapely.is_valid_reason(poly)}); the teeth may be cut away by undercut"
         )
     return poly

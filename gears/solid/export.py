@@ -18,7 +18,6 @@ import shapely
 
 from gears.display import svg
 from gears.errors import GearError
-from gears.figures.plot import outlines_figure
 from gears.files import check_output, writing
 
 __all__ = ["check_output", "points", "save", "save_mesh", "to_dxf", "to_svg"]
@@ -193,6 +192,8 @@ def save(path, *objects) -> pathlib.Path:
     if ext == ".dxf":
         return to_dxf(path, *outlines)
     if ext == ".png":
+        from gears.figures.plot import outlines_figure  # matplotlib: for a PNG only
+
         fig = outlines_figure(*outlines)
         import matplotlib.pyplot as plt
 

@@ -238,7 +238,11 @@ def gear_solid(
     r_out = float(np.max(np.hypot(pts[:, 0], pts[:, 1])))
     of = "the outline's radius"
     b = check_length("face_width", face_width, r_out, of)
-    tol = check_tolerance(tolerance, floor=1e-9 * r_out)
+    tol = check_tolerance(
+        tolerance, floor=1e-9 * r_out,
+        why=f"1e-9 of the outer radius {r_out:g} mm: a larger module or more teeth need a "
+        "coarser tolerance",
+    )  # fmt: skip
     twist = check_angle("twist", twist)
     herringbone = check_flag("herringbone", herringbone)
     r = r_out if tip_radius is None else check_length("tip_radius", tip_radius, r_out, of)

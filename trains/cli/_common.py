@@ -21,12 +21,12 @@ import contextlib
 import math
 import os
 import re
-import shutil
 import sys
-import textwrap
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
+
+from trains.cli._text import wrap
 
 if TYPE_CHECKING:
     from fractions import Fraction
@@ -199,39 +199,6 @@ def translate(message: str, names: Mapping[str, str]) -> str:
     return message
 
 
-def wrap(text: str, width: int | None = None) -> str:
-    """``text`` with every line longer than ``width`` (default: the terminal's, or 100) wrapped;
-    the continuation lines are indented past the line's own indent (past ``[FAIL] `` for a
-    finding), so tables and findings stay readable.
-
-    >>> print(wrap("[FAIL] a_long_finding margin -1: " + "word " * 8, width=40))
-    [FAIL] a_long_finding margin -1: word
-           word word word word word word
-           word
-    """
-    width = width or shutil.get_terminal_size((100, 24)).columns
-    width = max(width, 40)
-    out = []
-    for line in text.splitlines():
-        if len(line) <= width:
-            out.append(line)
-            continue
-        lead = line[: len(line) - len(line.lstrip())]
-        body = line.lstrip()
-        hang = lead + (" " * (body.index("]") + 2) if body.startswith("[") else "    ")
-        out.extend(
-            textwrap.wrap(
-                body,
-                width,
-                initial_indent=lead,
-                subsequent_indent=hang,
-                break_long_words=False,
-                break_on_hyphens=False,
-            )
-        )
-    return "\n".join(out)
-
-
 def no_check_argument(parser: argparse.ArgumentParser) -> None:
     """``--no-check``, for a command that writes a design's file (``mesh``, ``profile``)."""
     parser.add_argument(
@@ -320,6 +287,8 @@ def gear_arguments(parser: argparse.ArgumentParser) -> None:
 #: the library's names for a pair's fields -> the options of pair_arguments
 PAIR_NAMES = {
     r"split\s*=\s*'(\w+)'": r"--split \1",
+    r"x1 \+ x2": "--shift X1 + X2",  # a sum of shifts names the option that gives both
+    r"x2 - x1": "--shift X2 - X1",
     "x1": "X1",
     "x2": "X2",
     "z1": "Z1",

@@ -41,8 +41,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from gears.errors import GearError
+
     pair = build_pair(args)
-    rating = pair.rating(args.torque, args.speed, **rating_options(args))
+    try:
+        rating = pair.rating(args.torque, args.speed, **rating_options(args))
+    except GearError as exc:  # a pair that cannot be rated: say which of its options made it
+        x1, x2 = pair.g1.profile_shift, pair.g2.profile_shift
+        if (x1 or x2) and "--shift" not in str(exc) and "x1" not in str(exc):
+            raise GearError(f"{exc} (with --shift {x1:g} {x2:g})") from None
+        raise
     report = rating.check(*rating_minimums(args))
     print(rating)
     print()

@@ -61,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="equally spaced pinions on the case",
     )  # fmt: skip
     bevel_arguments(
-        parser, module=3.0, shaft_angle=False,
+        parser, module=1.0, shaft_angle=False,
         face_width_help="face width of the bevel gears, mm (default: R_e / 3.5)",
         shift_help="the pinions' profile shift x_hm (the side gears get its negative)",
     )  # fmt: skip
