@@ -46,7 +46,7 @@ def section_picture() -> None:
     invol = BevelPair(20, 40, module=3, face_width=22, clearance="tapered",
                       profile="spherical_involute")  # fmt: skip
     r_e = octoid.cone_distance
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.1, 1]})
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(8, 4), gridspec_kw={"width_ratios": [1.1, 1]})
     # (a) the pinion's tooth space on the sphere R_e, gnomonic plane about the pitch generator
     tooth = octoid.g1.tooth()
     tip = math.radians(octoid.g1.face_angle)

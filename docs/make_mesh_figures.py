@@ -131,7 +131,7 @@ def chart(path):
     data = json.loads(RESULTS.read_text())
     rows = data["rows"]
     tol = np.array([r["tolerance"] for r in rows])
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(8, 3.6))  # readable at the page width
     for key, label, style in (
         ("spur_solid_ms", "spur: gear_solid on the outline", "o-"),
         ("naive_extrude_ms", "spur: trimesh extrude_polygon (naive)", "s--"),

@@ -79,7 +79,7 @@ def root_figure():
     pair = GearPair(pinion, Gear(60, 2, face_width=20))
     ring = Gear(60, 2, internal=True, face_width=20)
     internal = GearPair(Gear(17, 2, face_width=20), ring)
-    fig, (a, b) = plt.subplots(1, 2, figsize=(10, 5.2))
+    fig, (a, b) = plt.subplots(1, 2, figsize=(8, 4.4))  # readable at the page width
     _draw_root(a, pair.mounted[0], pair, "external pinion z = 17, m 2, rack-cut (exact envelope)")
     _draw_root(b, internal.mounted[1], internal, "ring z = 60, m 2, shaper-cut (exact envelope)")
     fig.tight_layout()

@@ -45,7 +45,7 @@ def reverted_reducer(path: Path) -> Path:
 
     m = 2.0
     p12, p34 = coaxial_shifts([(Gear(17, m), Gear(40, m)), (Gear(20, m), Gear(38, m))])
-    fig, axes = plt.subplots(1, 2, figsize=(11, 5.2))
+    fig, axes = plt.subplots(1, 2, figsize=(8, 4))  # readable at the page width
     stages = (
         (p12, "stage 1: input 17 / layshaft 40", ("in", "lay")),
         (p34, "stage 2: layshaft 20 / output 38", ("lay", "out")),

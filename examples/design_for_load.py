@@ -37,6 +37,31 @@ print(repr(rating))
 assert min(rating.safety_pitting) >= 1.1 and min(rating.safety_bending) >= 1.5
 assert math.isclose(rating.safety_pitting[0], pairs["S_H1"][0], rel_tol=1e-9)  # the same
 
+# the smallest pairs' safeties against their volume (every candidate of the search that
+# carries the load, the three smallest marked)
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    every = search.pairs(
+        ratio=3.2, ratio_tolerance=0.02, center_distance=100, module=[1.5, 2, 2.5, 3, 4],
+        teeth=(14, 120), shifts=(-0.5, 1.0, 0.05), torque=60, speed=1500, life=20000,
+        face_width=(8, 40, 2), min_safety={"pitting": 1.1, "bending": 1.5}, objective="volume",
+        top=None, progress=False,
+    )  # fmt: skip
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.scatter(every["volume"] / 1e3, every["S_H"], s=4, color="0.7",
+               label=f"{every.feasible} pairs that carry the load")  # fmt: skip
+    ax.plot(pairs["volume"] / 1e3, pairs["S_H"], "o", color="tab:red", label="the three smallest")
+    ax.axhline(1.1, color="tab:blue", ls="--", lw=0.8, label="required S_H = 1.1")
+    ax.set_xlabel("volume of both gears, cm^3 (pitch cylinders)")
+    ax.set_ylabel("smaller pitting safety S_H")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("3.2:1 pairs for 60 N m at 1500 rpm, a = 100 mm")
+    fig.tight_layout()
+
 # 2. the lightest 1:20 gearbox in two stages
 boxes = synthesize_gearbox(
     20, stages=2, torque=50, speed=1500, life=20000, face_width=range(10, 45, 5),

@@ -35,7 +35,7 @@ print(f"pinion: {len(mesh.faces)} triangles, watertight {mesh.is_watertight}, ge
       f"volume {mesh.volume:.1f} mm^3 (area x b = {area * 20:.1f})")  # fmt: skip
 assert mesh.is_watertight and mesh.euler_number == 0  # one handle: the bore
 stl = save(out / "pinion.stl", mesh)
-print(f"wrote {stl} ({stl.stat().st_size} bytes)")
+print(f"wrote {stl.name} ({stl.stat().st_size} bytes)")
 
 # 2. the stage
 stage = Planetary(18, 45, 108, n_planets=3, module=2)
@@ -52,4 +52,18 @@ for k in (1, 2, 3):
     print(f"planet{k}: overlap with sun / ring {worst:.4f} mm^3")
     assert worst < 0.02 * 16 * 2  # tolerance x face width x module
 glb = save(out / "stage.glb", scene)
-print(f"wrote {glb} ({glb.stat().st_size} bytes)")
+print(f"wrote {glb.name} ({glb.stat().st_size} bytes)")
+
+# the stage as a picture: the library's renderer (flat shading, back faces culled)
+try:
+    import matplotlib.pyplot as plt
+except ImportError:  # the STL and the GLB are still written
+    pass
+else:
+    from gears.solid.render import Camera, render_image, scene_parts
+
+    png = render_image(out / "stage.png", scene_parts(scene), Camera(35, -60), size=600)
+    fig, ax = plt.subplots(figsize=(6, 6))
+    ax.imshow(plt.imread(png))
+    ax.set_axis_off()
+    ax.set_title("planetary stage 18/45/108, three planets, m = 2")

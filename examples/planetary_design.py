@@ -44,3 +44,13 @@ print(f"efficiency sun -> carrier: {stage.efficiency():.4f}")
 # the ring's tip reaching below the planet's form circle (fillet contact) is reported, not
 # hidden: a designer shortens the ring tip or chooses a tool with a deeper straight flank
 print("findings that need attention:", report.failed() or "none")
+
+# the chosen stage drawn with its real teeth, planets phased as assembled
+try:
+    from gears.figures.plot import outlines_figure
+except ImportError:  # matplotlib missing
+    pass
+else:
+    parts = stage.outlines(tolerance=0.02)
+    fig = outlines_figure(*parts.values())
+    fig.axes[0].set_title(f"the chosen stage: ratio {ratio}, three planets, m = {MODULE:g} mm")

@@ -39,4 +39,4 @@ except ImportError:  # matplotlib missing: the SVG is still written
     pass
 else:
     pair_figure(pair, tolerance=0.001).savefig(out / "pinion_wheel.png", dpi=120)
-print(f"wrote pinion_wheel.svg and pinion_wheel.png in {out}")
+print("wrote pinion_wheel.svg and pinion_wheel.png")

@@ -60,3 +60,22 @@ assert weakest == "3-5" and failed == ["3-5"]  # the closing pinion 3' carries 4
 second = rate(60.0)
 assert all(r.check(1.0, 1.4).ok for r in second.values())
 print("with b = 60 mm every mesh passes")
+
+# the smaller safety of every mesh, closing chain 40 and 60 mm wide, against the required S_H
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    names = list(first)
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, (ratings, b) in enumerate(((first, 40), (second, 60))):
+        ax.bar([i + 0.38 * k for i in range(len(names))],
+               [min(ratings[n].safety_pitting) for n in names], width=0.38,
+               label=f"closing chain b = {b} mm")  # fmt: skip
+    ax.axhline(1.0, color="k", ls="--", lw=0.8, label="required S_H = 1")
+    ax.set_xticks([i + 0.19 for i in range(len(names))], names)
+    ax.set_ylabel("smaller pitting safety S_H")
+    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title("hoist: 5.5 kW at 880 rpm, ISO 6336 method B")
+    fig.tight_layout()

@@ -46,4 +46,4 @@ else:
     ax.set_xlabel("mm")
     ax.set_title("path of a point on satellite 1 (carrier turns once)")
     fig.savefig(out / "biplanetary_path.png", dpi=100)
-print(f"wrote biplanetary_path.csv and .png in {out}")
+print("wrote biplanetary_path.csv and .png")

@@ -29,3 +29,20 @@ print(f"K3: i = {k3.ratio('sun', 'carrier')}, closing mesh carries"
       f" {flow.relations['closing'].power / flow.input_power:.2f} x input power,"
       f" efficiency {flow.efficiency:.4f}")  # fmt: skip
 assert flow.circulating_power > 0.8 * flow.input_power  # lossless: exactly 1
+
+# the power each mesh of K3 carries, against the input power: the closing mesh carries twice it
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    names = list(flow.relations)
+    share = [abs(flow.relations[n].power) / flow.input_power for n in names]
+    fig, ax = plt.subplots(figsize=(6, 3.2))
+    ax.barh(names, share, color=["tab:red" if n == "closing" else "tab:blue" for n in names])
+    ax.axvline(1, color="k", ls="--", lw=0.8, label="input power")
+    ax.invert_yaxis()
+    ax.set_xlabel("power through the mesh / input power")
+    ax.legend(loc="lower right")
+    ax.set_title("K3 with its closing pair 20/60: power circulates")
+    fig.tight_layout()

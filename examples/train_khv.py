@@ -17,3 +17,21 @@ w = strain_wave(flexspline=200, rigid=202)
 j = w.ratio("generator", "flexspline", fixed=["rigid"])
 print("strain wave: i =", j)
 assert i == -49 and j == -100
+
+# the K-H-V train's efficiency against its mesh efficiency: a high ratio costs efficiency
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    eta = [0.95 + 0.0025 * k for k in range(21)]
+    out = [power_flow(t, "carrier", "output", fixed=["ring"], mesh_efficiency=e).efficiency
+           for e in eta]  # fmt: skip
+    fig, ax = plt.subplots(figsize=(6, 3.6))
+    ax.plot(eta, out, "o-", ms=3, label="K-H-V 49/50, i = -49")
+    ax.plot(eta, eta, "k:", lw=0.8, label="one mesh")
+    ax.set_xlabel("mesh efficiency")
+    ax.set_ylabel("efficiency carrier -> output")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()

@@ -39,3 +39,14 @@ for name, rel in flow.relations.items():
     print(f"mesh {name}: efficiency {rel.efficiency:.5f} (from its contact ratio)")
 print(f"overall efficiency {flow.efficiency:.5f}")
 assert abs(flow.efficiency - p12.mesh_efficiency(0.06) * p34.mesh_efficiency(0.06)) < 1e-12
+
+# both stages with their real tooth outlines at the common centre distance
+try:
+    from gears.figures.plot import pair_figure
+except ImportError:  # matplotlib missing
+    pass
+else:
+    for pair, name in ((p12, "17/40"), (p34, "20/38")):
+        fig = pair_figure(pair, tolerance=0.01)
+        fig.axes[0].set_title(f"stage {name}: a_w = {pair.center_distance:.3f} mm, contact ratio "
+                              f"{pair.contact_ratio:.3f}")  # fmt: skip

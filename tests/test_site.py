@@ -11,11 +11,13 @@ within the suite's time budget; ``tests/test_examples.py`` runs every example on
 from __future__ import annotations
 
 import ast
+import html
 import importlib
 import pathlib
 import re
 import subprocess
 import sys
+import tempfile
 import time
 
 import pytest
@@ -97,12 +99,14 @@ def test_site_builds_with_warnings_as_errors():
     before = sorted(p.name for p in (ROOT / "examples").iterdir())
     start = time.perf_counter()
     run = subprocess.run(
-        [sys.executable, "-m", "sphinx", "-E", "-W", "--keep-going", "-q", "-b", "html",
+        [sys.executable, "-m", "sphinx", "-E", "-W", "--keep-going", "-b", "html",
          str(DOCS), str(OUT)],
         capture_output=True, text=True, cwd=ROOT, timeout=900,
     )  # fmt: skip
     seconds = time.perf_counter() - start
     assert run.returncode == 0, f"sphinx-build -W failed:\n{run.stderr[-6000:]}"
+    # myst-parser's whole configuration (one line of some 2 000 characters) is not logged
+    assert "MdParserConfig(" not in run.stdout + run.stderr
     # examples write their files to temporary folders, never beside themselves
     assert sorted(p.name for p in (ROOT / "examples").iterdir()) == before
 
@@ -125,9 +129,52 @@ def test_site_builds_with_warnings_as_errors():
                 missing.append(f"{module}.{n}")
     assert not missing, f"not in the API reference: {missing}"
 
-    # every example has its page; one that draws with matplotlib shows its figure there
+    # every example has its page with a figure (a 3D example a rendered picture), and its own
+    # thumbnail in the gallery, not sphinx-gallery's placeholder
+    from PIL import Image, ImageChops, ImageStat
+    from sphinx_gallery import __file__ as sg
+
+    placeholder = Image.open(pathlib.Path(sg).parent / "_static" / "no_image.png").convert("RGB")
     for script in EXAMPLES:
         page = (OUT / "auto_examples" / f"{script.stem}.html").read_text()
-        if "savefig(" in script.read_text():
-            assert "sphx-glr-single-img" in page or "sphx-glr-multi-img" in page, script.name
+        assert "sphx-glr-single-img" in page or "sphx-glr-multi-img" in page, script.name
+        # the thumbnail is the placeholder scaled (mean difference about 1 of 255) or a figure
+        thumb = Image.open(OUT / "_images" / f"sphx_glr_{script.stem}_thumb.png").convert("RGB")
+        diff = ImageStat.Stat(ImageChops.difference(thumb, placeholder.resize(thumb.size))).mean
+        assert max(diff) > 5, f"{script.name}: the gallery shows the placeholder thumbnail"
+
+    # no gallery page prints the build machine's temporary folder (where the examples write),
+    # and no page the checkout's folder
+    tmp = tempfile.gettempdir() + "/"
+    shown = [f"{page.relative_to(OUT)}: {where}" for page in sorted(OUT.rglob("*.html"))
+             for where in ((tmp, str(ROOT)) if "auto_examples" in page.parts else (str(ROOT),))
+             if where in page.read_text()]  # fmt: skip
+    assert not shown, shown
+
+    # every guide of the index's toctrees is in the site under its own title (Sphinx's own
+    # search.html replaced a guide called search.md)
+    for name, title in _guides():
+        page = OUT / f"{name}.html"
+        assert page.exists(), name
+        head = re.search(r"<title>(.*?)</title>", page.read_text(), flags=re.S)[1]
+        assert html.unescape(head).strip().startswith(title), (name, head, title)
+        assert title in html.unescape((OUT / "index.html").read_text()), title
     print(f"site built in {seconds:.0f} s")
+
+
+def _guides() -> list[tuple[str, str]]:
+    """(page, title) of every Markdown page in the toctrees of docs/index.md."""
+    text = (DOCS / "index.md").read_text()
+    out = []
+    for block in re.findall(r"^```\{toctree\}\n(.*?)^```", text, flags=re.S | re.M):
+        for name in (ln.strip() for ln in block.splitlines()):
+            if name and not name.startswith(":") and (DOCS / f"{name}.md").exists():
+                first = (DOCS / f"{name}.md").read_text().splitlines()[0]
+                out.append((name, first.lstrip("# ").strip()))
+    return out
+
+
+def test_every_guide_is_found_by_the_site_test():
+    # the list the site test checks holds every guide (search.md was shadowed, unnoticed)
+    names = [n for n, _ in _guides()]
+    assert len(names) >= 12 and "design_search" in names and "references" in names

@@ -99,7 +99,7 @@ def chart(rows, path=CHART):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 5))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(8, 4))  # readable at the page width
     labels = {"analytic": "analytic, z = 20", "rack": "rack simulation, z = 20",
               "shaper": "shaper simulation, z = 20 (z0 = 76)",
               "shaper internal": "shaper simulation, ring z = 80 (z0 = 40)"}  # fmt: skip
