@@ -26,7 +26,7 @@ def main(out: Path) -> list[Path]:
     import matplotlib.pyplot as plt
 
     out.mkdir(parents=True, exist_ok=True)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 6))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(8, 4.2))  # readable at the page width
     pair = GearPair(Gear(20, 5), Gear(40, 5))
     pair_forces_figure(pair.forces(100.0), pair.outlines(tolerance=0.05), ax=left)
     stage = Planetary(20, 31, 82, n_planets=4, module=2)
