@@ -8,7 +8,7 @@ Every formula is a module-level numpy function that broadcasts over arrays; it i
 :class:`gears.Gear` is a thin immutable view that calls them. Internal gears keep a positive
 tooth count and set ``internal=True``; a positive shift of an internal gear moves the generating
 tool away from the material's centre of curvature, i.e. outward, and makes its teeth thinner
-(KHK / DIN 3960).
+(KHK's sign; DIN 3960 / ISO 21771 count an internal gear's shift the other way: x = -x_DIN).
 
 References: ISO 21771, DIN 3960, ISO 53 and the KHK Gear Technical Reference; Ozols §21-1...21-8,
 Joldasbekov §9-§11.
