@@ -135,7 +135,21 @@ class MemberLoad:
 
 @dataclass(frozen=True)
 class TrainLoads:
-    """What :func:`loads` returns: the power flow, every mesh's forces, every member's loads."""
+    """What :func:`loads` returns; ``print`` shows its tables, a notebook its HTML.
+
+    Attributes
+    ----------
+    flow : PowerFlow
+        The power flow the forces come from (torques with losses).
+    meshes : dict
+        :class:`MeshLoad` per relation name (links and couplings with zero forces).
+    members : dict
+        :class:`MemberLoad` per member (the frame left out).
+    notes : dict
+        A planetary stage's figures (:meth:`trains.Planetary.loads`): planet mass, radius and
+        centrifugal force, carrier speed and torque, the balancing moment, the net radial force
+        on the sun and the carrier; empty for a train.
+    """
 
     flow: PowerFlow
     meshes: dict[str, MeshLoad]
