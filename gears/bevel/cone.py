@@ -57,11 +57,13 @@ from typing import NamedTuple
 
 import numpy as np
 
+from gears.arguments import check_real
 from gears.errors import GearError
 
 __all__ = [
     "CLEARANCES",
     "CROWN_TOLERANCE",
+    "SHAFT_ANGLES",
     "BevelGeometry",
     "axial_section",
     "bevel_geometry",
@@ -320,17 +322,16 @@ def face_width_margins(face_width, cone_distance, module):
     return _out(np.asarray(cone_distance, float) / 3.0 - b), _out(10.0 * np.asarray(module) - b)
 
 
+#: The shaft angles a pair may have, degrees: within 0.01 deg of 0 or 180 the pitch cones
+#: degenerate (their cone distance grows as 1 / sin delta and the formulas divide by nothing).
+SHAFT_ANGLES = (0.01, 179.99)
+
+
 def check_shaft_angle(shaft_angle) -> float:
-    """``shaft_angle`` in degrees as a float, or a :class:`GearError` naming 0 < Sigma < 180."""
-    try:
-        s = float(shaft_angle)
-    except (TypeError, ValueError):
-        raise GearError(
-            f"shaft_angle = {shaft_angle!r}; valid is 0 < shaft_angle < 180 deg"
-        ) from None
-    if isinstance(shaft_angle, bool) or not (0.0 < s < 180.0):  # NaN fails too
-        raise GearError(f"shaft_angle = {shaft_angle!r}; valid is 0 < shaft_angle < 180 deg")
-    return s
+    """``shaft_angle`` in degrees as a float, or a :class:`GearError` naming the valid range
+    (:data:`SHAFT_ANGLES`)."""
+    lo, hi = SHAFT_ANGLES
+    return check_real("shaft_angle", shaft_angle, lo, hi, low_open=False, high_open=False)
 
 
 def max_face_width(z1, z2, module, shaft_angle=90.0) -> float:

@@ -25,6 +25,7 @@ from gears.arguments import (
     check_fps,
     check_frames,
     check_module,
+    check_pressure_angle,
     check_tolerance,
 )
 from gears.bevel.cone import (
@@ -61,6 +62,11 @@ __all__ = [
 
 #: The tooth forms a bevel pair can be drawn with (docs/bevel.md, "Octoid or spherical involute").
 PROFILES = ("octoid", "spherical_involute")
+
+
+#: The smallest tool tip radius other than 0, mean modules: a round of 5e-324 modules left the
+#: fillet's formulas with 0/0 (the LENGTH_RANGE floor of gears.arguments).
+TOOL_RADIUS_FLOOR = 1e-6
 
 
 def _number(name: str, value, low=None, high=None, low_open=True) -> float:
@@ -158,12 +164,14 @@ class BevelPair:
         set_(self, "module", check_module(module))
         set_(self, "face_width", _number("face_width", face_width, 0.0))
         set_(self, "shaft_angle", check_shaft_angle(shaft_angle))
-        set_(self, "pressure_angle", _number("pressure_angle", pressure_angle, 0.0, 45.0))
-        set_(self, "profile_shift", _number("profile_shift", profile_shift))
-        set_(self, "thickness_modification",
-             _number("thickness_modification", thickness_modification))  # fmt: skip
-        set_(self, "addendum", _number("addendum", addendum, 0.0))
-        set_(self, "dedendum", _number("dedendum", dedendum, 0.0))
+        # the ranges of a spur gear's (gears.arguments, gears.meshing): beyond them the cone
+        # formulas divide by sin(alpha) of nearly nothing or overflow
+        set_(self, "pressure_angle", check_pressure_angle(pressure_angle))
+        set_(self, "profile_shift", _number("profile_shift", profile_shift, -1000.0, 1000.0))
+        xs = _number("thickness_modification", thickness_modification, -1000.0, 1000.0)
+        set_(self, "thickness_modification", xs)
+        set_(self, "addendum", _number("addendum", addendum, 0.0, 10.0))
+        set_(self, "dedendum", _number("dedendum", dedendum, 0.0, 10.0))
         if clearance not in CLEARANCES:
             raise GearError(f"clearance = {clearance!r}; valid are 'constant', 'tapered'")
         set_(self, "clearance", clearance)
@@ -191,6 +199,11 @@ class BevelPair:
             fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
             tool_radius = max(min(full, 0.95 * fits), 0.0)
         set_(self, "tool_radius", _number("tool_radius", tool_radius, 0.0, low_open=False))
+        if 0.0 < self.tool_radius < TOOL_RADIUS_FLOOR:
+            raise GearError(
+                f"tool_radius = {self.tool_radius:g} (mean modules); valid is 0 (a sharp tool "
+                f"tip) or at least {TOOL_RADIUS_FLOOR:g}: a smaller round is no round at all"
+            )
         fits = min(self._rack(i, 0.0).max_root_radius for i in (0, 1))
         if self.tool_radius > fits + 1e-12:
             raise GearError(
@@ -215,9 +228,18 @@ class BevelPair:
         [4.035, 1.965, 2.529, 4.599]
         """
         z1, z2 = check_teeth("z1", z1), check_teeth("z2", z2)
-        module = _number("module", module, 0.0)
-        face_width = _number("face_width", face_width, 0.0)
+        module = check_module(module)
         shaft_angle = check_shaft_angle(shaft_angle)
+        # below the outer cone distance R_e (the pair's own check, needed before the heights)
+        r_e = float(max_face_width(z1, z2, module, shaft_angle))
+        face_width = _number("face_width", face_width, 0.0, r_e)
+        given = sorted(set(kwargs) & {"profile_shift", "addendum", "dedendum", "clearance"})
+        if given:
+            raise GearError(
+                f"{', '.join(given)} given to BevelPair.gleason, which sets the profile shift, "
+                "the heights and the clearance itself (KHK Table 4.11); valid is BevelPair(...) "
+                "for your own proportions, or gleason(...) without them"
+            )
         k_a, k_f, x = (float(v) for v in gleason_coefficients(z1, z2, module, face_width,
                                                               shaft_angle))  # fmt: skip
         return cls(

@@ -344,3 +344,44 @@ def test_figure_script_runs(tmp_path):
                              / "make_planetary_figures.py"))  # fmt: skip
     (path,) = mod["main"](tmp_path)
     assert path.stat().st_size > 10_000
+
+
+def test_planet_count_search_and_assembly_agree_with_brute_force():
+    # issue 26: a stage of 10^7 planets never finished check() (a search over range(v) in the
+    # assembly test, a scan over every count with an n x n distance matrix for the largest
+    # count that fits). Brute force (the former linear scans) against the closed forms:
+    # k p = -1 (mod v) has a solution exactly when gcd(k, v) = 1; the largest count is the
+    # last n before the first that fails the neighbour gap
+    from fractions import Fraction
+
+    from trains.planetary.checks import NEIGHBOUR_TOLERANCE, max_planets, neighbour_gap
+    from trains.planetary.schemes import textbook_assembly
+
+    for z_a in (12, 17, 20, 31):
+        for num, den in ((1, 3), (7, 2), (-11, 5), (9, 4)):
+            for k in range(1, 13):
+                v = (Fraction(z_a) * abs(Fraction(num, den)) / k).denominator
+                brute = any((1 + k * p) % v == 0 for p in range(v))
+                assert textbook_assembly(z_a, Fraction(num, den), k) == brute
+    stages = [Planetary(20, 30, 80, n_planets=3), Planetary(12, 60, 132, n_planets=3),
+              Planetary(40, 10, 60, n_planets=5), Planetary(30, 5, 40, n_planets=2),
+              Planetary(18, 20, 60, n_planets=3, scheme="double-planet")]  # fmt: skip
+    for stage in stages:
+        need = (stage.clearance - NEIGHBOUR_TOLERANCE) * stage.module
+        n = 1
+        while neighbour_gap(stage, n + 1) >= need:
+            n += 1
+        assert max_planets(stage) == n, stage
+
+
+def test_ten_million_planets_are_refused_at_once():
+    import time
+
+    t0 = time.perf_counter()
+    with pytest.raises(
+        TrainError, match=r"n_planets = 10000000; valid is an integer 1 \.\.\. 10000"
+    ):
+        Planetary(20, 30, 80, n_planets=10**7)
+    with pytest.raises(TrainError, match=r"module = 1\.000e\+400"):
+        Planetary(20, 30, 80, n_planets=3, module=10**400)
+    assert time.perf_counter() - t0 < 1.0  # s

@@ -71,6 +71,10 @@ class Assembly:
 #: candidates pass their own stage's check.
 NEIGHBOUR_TOLERANCE = 1e-9
 
+#: The most planets a stage may have (and the most :func:`max_planets` reports): far past any
+#: stage that has been built, and a bound on the work of the assembly and neighbour checks.
+MAX_PLANETS = 10_000
+
 
 def planet_tips(stage) -> tuple[float, ...]:
     """The tip diameters of the distinct planet gears, mm."""
@@ -91,7 +95,8 @@ def assembly(stage) -> Assembly:
     ticks = [round(Fraction(j * t, k)) for j in range(k)]
     spacing = tuple(360.0 * x / t for x in ticks)
     dev = max(abs(s - 360.0 * j / k) for j, s in enumerate(spacing))
-    divisors = [d for d in range(1, t + 1) if t % d == 0]
+    small = [d for d in range(1, math.isqrt(t) + 1) if t % d == 0]  # O(sqrt t), not O(t)
+    divisors = sorted({*small, *(t // d for d in small)})
     below = [d for d in divisors if d < k]
     above = [d for d in divisors if d > k]
     near = tuple(x for x in ((below[-1] if below else None), (above[0] if above else None))
@@ -126,16 +131,12 @@ def neighbour_gap(stage, n: int) -> float:
         return math.inf
     groups = centres(stage, n)
     gaps = []
-    for gi, (ci, ri) in enumerate(groups):
-        for gj, (cj, rj) in enumerate(groups):
-            if gj < gi:
-                continue
-            d = np.linalg.norm(ci[:, None, :] - cj[None, :, :], axis=2)
-            mask = np.ones_like(d, bool)
-            if gi == gj:
-                mask &= ~np.eye(n, dtype=bool)
-            else:
-                mask &= ~np.eye(n, dtype=bool)  # cluster j's own planets mesh
+    # the clusters are equally spaced, so cluster 0 sees every distance there is: its planets
+    # against all others (O(n) instead of every pair, O(n^2))
+    for ci, ri in groups:
+        for cj, rj in groups:
+            d = np.linalg.norm(ci[0] - cj, axis=1)
+            mask = np.arange(n) != 0  # itself, or its own cluster's partner, which it meshes
             gaps.append(float(np.min(np.where(mask, d - ri - rj, np.inf))))
     return min(gaps)
 
@@ -143,10 +144,22 @@ def neighbour_gap(stage, n: int) -> float:
 def max_planets(stage) -> int:
     """The largest planet count that passes the neighbour condition (>= 1)."""
     need = (stage.clearance - NEIGHBOUR_TOLERANCE) * stage.module
-    n = 1
-    while n < 10_000 and neighbour_gap(stage, n + 1) >= need:
-        n += 1
-    return n
+
+    def fits(n: int) -> bool:
+        return neighbour_gap(stage, n) >= need
+
+    # the gap shrinks as planets are added (their spacing 360/n deg does): double the count
+    # until one does not fit, then bisect (O(log n) gaps instead of one per count)
+    lo = 1
+    while lo < MAX_PLANETS and fits(min(2 * lo, MAX_PLANETS)):
+        lo = min(2 * lo, MAX_PLANETS)
+    if lo == MAX_PLANETS:
+        return lo
+    hi = min(2 * lo, MAX_PLANETS)  # does not fit
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+    return lo
 
 
 def coaxiality(stage, tolerance: float) -> Finding:

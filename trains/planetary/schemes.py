@@ -28,6 +28,7 @@ Ratios follow from the Willis relation ``w_sun - i0 w_ring - (1 - i0) w_carrier 
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any
 
@@ -183,11 +184,11 @@ def textbook_assembly(z_a: int, ratio_aH: Fraction, k: int) -> bool:
     """Textbook (sufficient) form: ``(z_a i_aH / k)(1 + k p)`` is an integer for some p >= 0.
 
     Exact: with ``z_a |i_aH| / k = u / v`` in lowest terms, ``v`` must divide ``1 + k p`` for some
-    p, which is decided by p in ``range(v)``.
+    p, that is ``k p = -1 (mod v)``, solvable exactly when ``gcd(k, v) = 1`` (k is then
+    invertible modulo v): one gcd instead of a search over ``range(v)``.
     """
     x = Fraction(z_a) * abs(Fraction(ratio_aH)) / k
-    v = x.denominator
-    return any((1 + k * p) % v == 0 for p in range(v))
+    return math.gcd(k, x.denominator) == 1
 
 
 def phasing_class(z_central: int, k: int) -> str:

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from gears import MATERIALS, Gear, GearPair
-from gears.arguments import check_angle, check_real
+from gears.arguments import check_angle, check_integer, check_module, check_real
 from gears.errors import GearError
 from gears.report import Report
 from trains.capacity import load_sharing
@@ -33,7 +33,7 @@ from trains.capacity import rating as rate_train
 from trains.errors import TrainError
 from trains.loading import TrainLoads, planetary_loads
 from trains.planetary import checks, placement, scene
-from trains.planetary.checks import Assembly
+from trains.planetary.checks import MAX_PLANETS, Assembly
 from trains.planetary.placement import Placement
 from trains.planetary.schemes import (
     _GEARS,
@@ -180,13 +180,10 @@ class Planetary:
         gears_in = [g for g in given.values() if isinstance(g, Gear)]
         if module is None:
             module = gears_in[0].module if gears_in else 1.0
-        if (
-            isinstance(module, bool)
-            or not isinstance(module, numbers.Real)
-            or not (math.isfinite(float(module)) and float(module) > 0)
-        ):
-            raise TrainError(f"module = {module!r}; valid is a number > 0 (mm)")
-        self.module = float(module)
+        try:
+            self.module = check_module(module)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
         ref = gears_in[0] if gears_in else None
         if ref is not None:
             sign0 = dict((k, h) for k, _, h in _GEARS[self.scheme])
@@ -802,12 +799,15 @@ class Planetary:
 
 
 def _count(n_planets: Any) -> int:
+    """An integer 1 ... MAX_PLANETS (:data:`trains.planetary.checks.MAX_PLANETS`)."""
+    valid = f"valid is an integer 1 ... {MAX_PLANETS}"
     if isinstance(n_planets, bool):
-        raise TrainError(f"n_planets = {n_planets!r}; valid is an integer >= 1")
+        raise TrainError(f"n_planets = {n_planets!r}; {valid}")
     try:
         k = operator.index(n_planets)
     except TypeError:
-        raise TrainError(f"n_planets = {n_planets!r}; valid is an integer >= 1") from None
-    if k < 1:
-        raise TrainError(f"n_planets = {k}; valid is an integer >= 1")
-    return k
+        raise TrainError(f"n_planets = {n_planets!r}; {valid}") from None
+    try:
+        return check_integer("n_planets", k, 1, MAX_PLANETS)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None
