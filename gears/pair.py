@@ -12,7 +12,7 @@ import math
 import numbers
 import os
 import pathlib
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING
@@ -65,6 +65,7 @@ if TYPE_CHECKING:
     from gears.cutting.cutter import ShaperCutter
     from gears.rating.capacity import Rating
     from gears.rating.losses import MeshLosses
+    from gears.rating.spectrum import SpectrumRating
     from gears.rating.materials import Material
 
 __all__ = ["GearPair"]
@@ -597,8 +598,9 @@ class GearPair:
 
     # --- load capacity (ISO 6336) -----------------------------------------------------------------
     def rating(
-        self, torque: float, speed: float,
+        self, torque: float | None = None, speed: float | None = None,
         material: str | Material | tuple[str | Material, str | Material] = "case-carburized", *,
+        spectrum: Sequence[tuple[float, float, float]] | None = None,
         life: float = 20000.0,
         application_factor: float = 1.0, quality: int = 6, roughness: float = 1.0,
         oil_viscosity: float = 220.0, tip_relief: float | None = None,
@@ -607,7 +609,7 @@ class GearPair:
         contacts: tuple[int, int] = (1, 1), idler: tuple[bool, bool] = (False, False),
         misalignment: float | None = None, root: str = "auto",
         root_roughness: float | None = None, **factors,
-    ) -> Rating:  # fmt: skip
+    ) -> Rating | SpectrumRating:  # fmt: skip
         """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
 
         Parameters
@@ -640,6 +642,11 @@ class GearPair:
             :func:`gears.rating.iso6336.rate_pairs`.
         misalignment : float, optional
             F_betax in um, replacing the method C estimate of K_Hbeta.
+        spectrum : list of (torque, speed, hours), optional
+            A load spectrum (ISO 6336-6) instead of ``torque``, ``speed`` and ``life``: each bin
+            rated on its own, then Miner's sum per gear and failure mode, the equivalent safety
+            and the life (:mod:`gears.rating.spectrum`); returns a
+            :class:`gears.rating.spectrum.SpectrumRating`.
         root : str
             How Y_F and Y_S find the root (:data:`gears.rating.capacity.ROOT_ROUTES`; by default
             measured on the real tooth of internal and shaper-cut gears).
@@ -669,6 +676,22 @@ class GearPair:
         """
         from gears.rating.capacity import rate_pair  # the rating family: loaded when rated
 
+        if spectrum is not None:
+            if torque is not None or speed is not None:
+                raise GearError("give either torque and speed or spectrum=, not both")
+            from gears.rating.spectrum import check_spectrum, spectrum_rating
+
+            bins = check_spectrum(spectrum)
+            kw = dict(application_factor=application_factor, quality=quality,
+                      roughness=roughness, oil_viscosity=oil_viscosity, tip_relief=tip_relief,
+                      sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
+                      contacts=contacts, idler=idler, misalignment=misalignment, root=root,
+                      root_roughness=root_roughness, **factors)  # fmt: skip
+            rows = list(zip(*(b.tolist() for b in bins), strict=True))
+            ratings = [rate_pair(self, t, n, material, life=h, **kw) for t, n, h in rows]
+            return spectrum_rating(ratings, material, rows)
+        if torque is None or speed is None:
+            raise GearError("rating needs torque (N m) and speed (rpm), or spectrum=")
         return rate_pair(
             self, torque, speed, material, life=life, application_factor=application_factor,
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,

@@ -76,6 +76,7 @@ LAYERS = {
             "cutting.generate",
             "bevel.crown",
             "rating.sizing",
+            "rating.spectrum",
             "worm.checks",
             "noncircular.checks",
         ],

@@ -26,6 +26,7 @@ from typing import Any
 
 from gears import GearPair, Rating
 from gears.errors import GearError
+from gears.rating.spectrum import check_spectrum, spectrum_rating
 from trains.errors import TrainError
 from trains.power import power_flow
 from trains.willis import FRAME, Train
@@ -68,8 +69,9 @@ def rating(
     load_sharing_factor: float | Mapping[str, float] | None = None,
     mesh_efficiency: float | Mapping[str, float] | None = None,
     friction: float | None = None,
+    spectrum: Any = None,
     **options: Any,
-) -> dict[str, Rating]:
+) -> dict[str, Any]:
     """ISO 6336 rating of every mesh of real gears in ``train`` (see the module docstring).
 
     Parameters
@@ -92,6 +94,10 @@ def rating(
         fixed-axis meshes unless given per mesh.
     mesh_efficiency, friction
         Losses for the power flow (default lossless), as for :func:`trains.power_flow`.
+    spectrum : list of (torque, speed, hours), optional
+        A load spectrum on the input member (ISO 6336-6) instead of ``torque``, ``speed`` and
+        ``life``: every bin is rated as above, then each mesh gets a
+        :class:`gears.rating.spectrum.SpectrumRating` (Miner's sums, equivalent safeties, lives).
     **options
         Passed to :meth:`gears.GearPair.rating` (``life``, ``quality``, ``roughness``,
         ``root_roughness``, ``oil_viscosity``, ``application_factor``, factors such as
@@ -117,6 +123,10 @@ def rating(
     >>> [round(s, 3) for s in r["in-out"].safety_pitting]
     [0.933, 1.053]
     """
+    if spectrum is not None:
+        return _spectrum_rating(train, input, output, fixed, spectrum, material, face_width,
+                                load_sharing_factor, mesh_efficiency, friction,
+                                options)  # fmt: skip
     for name, value in (("torque", torque), ("speed", speed)):
         if (
             isinstance(value, bool)
@@ -208,3 +218,31 @@ def _idler(train: Train, flow, member: str, gear) -> bool:
         if t != 0.0:
             signs.add(t > 0)
     return len(signs) == 2
+
+
+def _spectrum_rating(train, input, output, fixed, spectrum, material, face_width,
+                     load_sharing_factor, mesh_efficiency, friction, options) -> dict:  # fmt: skip
+    """:func:`rating` under a load spectrum: each bin rated, then Miner's rule per mesh."""
+    if "life" in options:
+        raise TrainError("life= and spectrum= exclude each other: the spectrum gives the hours")
+    try:
+        torques, speeds, hours = check_spectrum(spectrum)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None
+    per_bin = [
+        rating(train, input, output, fixed, torque=float(t), speed=float(n), material=material,
+               face_width=face_width, load_sharing_factor=load_sharing_factor,
+               mesh_efficiency=mesh_efficiency, friction=friction, life=float(h), **options)
+        for t, n, h in zip(torques, speeds, hours, strict=True)
+    ]  # fmt: skip
+    out = {}
+    for name in per_bin[0]:
+        ratings = [bin_[name] for bin_ in per_bin]
+        rows = [(r.settings["torque"], r.settings["speed"], float(h))
+                for r, h in zip(ratings, hours, strict=True)]  # fmt: skip
+        mat = _per_mesh(material, name, "material") if isinstance(material, Mapping) else material
+        try:
+            out[name] = spectrum_rating(ratings, mat, rows)
+        except GearError as exc:
+            raise TrainError(f"mesh {name}: {exc}") from None
+    return out

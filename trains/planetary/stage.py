@@ -541,8 +541,8 @@ class Planetary:
 
     def rating(
         self,
-        torque: float,
-        speed: float,
+        torque: float | None = None,
+        speed: float | None = None,
         face_width: float | dict | None = None,
         material: Any = "case-carburized",
         fixed: str = "ring",
@@ -573,6 +573,12 @@ class Planetary:
         >>> r = p.rating(torque=120, speed=1500, face_width=20)
         >>> {k: round(min(v.safety_pitting), 2) for k, v in r.items()}
         {'sun-planet': 1.07, 'planet-ring': 2.21}
+
+        A load spectrum (ISO 6336-6: ``(torque, speed, hours)`` bins on the input) instead:
+
+        >>> r = p.rating(spectrum=[(120, 1500, 5000), (200, 1500, 200)], face_width=20)
+        >>> {k: round(min(v.safety_pitting), 2) for k, v in r.items()}
+        {'sun-planet': 1.03, 'planet-ring': 2.27}
         """
         fixed, input, output = _default_roles(
             self._member(fixed),
@@ -580,6 +586,12 @@ class Planetary:
             None if output is None else self._member(output),
         )
         name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
+        if options.get("spectrum") is not None:
+            if torque is not None or speed is not None:
+                raise TrainError("give either torque and speed or spectrum=, not both")
+            torque = speed = 1.0  # the spectrum's bins give them
+        elif torque is None or speed is None:
+            raise TrainError("rating needs torque (N m) and speed (rpm), or spectrum=")
         return rate_train(self.train, name[input], name[output], fixed=[name[fixed]],
                           torque=torque, speed=speed, material=material, face_width=face_width,
                           load_sharing_factor=load_sharing_factor, **options)  # fmt: skip

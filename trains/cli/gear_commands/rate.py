@@ -2,7 +2,9 @@
 tooth-root breakage (ISO 6336-3) of both gears for a torque on gear 1 at its speed, with every
 load factor, Z factor and Y factor, its value and its clause. Internal gears are rated from the
 root their shaper cutter leaves. The exit status is 1 when a safety is below its minimum
-(--min-pitting, --min-bending).
+(--min-pitting, --min-bending). With --spectrum FILE (one bin a line: torque N m, speed
+rpm, hours) the pair is rated under that load spectrum by ISO 6336-6: Miner's sum per gear and
+failure mode, the equivalent safeties and the lives.
 
 Examples:
     geartrain rate 19 61 --module 3 --face-width 30 --torque 150 --speed 1450
@@ -27,7 +29,7 @@ from trains.cli._common import (
 
 HELP = "ISO 6336 pitting and bending rating of a gear pair: safety factors and every factor"
 
-NAMES = {**PAIR_NAMES, **RATING_NAMES}
+NAMES = {**PAIR_NAMES, **RATING_NAMES, "spectrum": "--spectrum"}
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
 
@@ -37,15 +39,31 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         face_width_help="face width in mm (needed for the overlap ratio of a helical pair and a "
         "rating)",
     )
-    rating_arguments(parser, required=True)
+    rating_arguments(parser, required=False)
+    parser.add_argument(
+        "--spectrum", default=None, metavar="FILE",
+        help="load spectrum (ISO 6336-6): a file of bins, one a line: torque N m, speed rpm, "
+        "hours (instead of --torque, --speed and --life)",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
     from gears.errors import GearError
+    from gears.rating.spectrum import read_spectrum
 
     pair = build_pair(args)
+    options = rating_options(args)
     try:
-        rating = pair.rating(args.torque, args.speed, **rating_options(args))
+        if args.spectrum is not None:
+            if args.torque is not None or args.speed is not None or args.life is not None:
+                raise GearError("spectrum = FILE replaces --torque, --speed and --life; give one")
+            bins = read_spectrum(args.spectrum)
+            options.pop("life")
+            rating = pair.rating(spectrum=bins, **options)
+        else:
+            if args.torque is None or args.speed is None:
+                raise GearError("torque = None: give --torque and --speed, or --spectrum FILE")
+            rating = pair.rating(args.torque, args.speed, **options)
     except GearError as exc:  # a pair that cannot be rated: say which of its options made it
         x1, x2 = pair.g1.profile_shift, pair.g2.profile_shift
         if (x1 or x2) and "--shift" not in str(exc) and "x1" not in str(exc):

@@ -1,0 +1,68 @@
+"""Benchmark: load spectra (ISO 6336-6) and mesh losses (ISO/TR 14179-2) over arrays (issue 30).
+
+Run as ``python tests/benchmarks/bench_spectrum.py [n] [rounds]``. Prints rated pairs per
+second for ``n`` random external helical pairs (as bench_rating.py: z 14 ... 40 / 40 ... 120,
+m 1 ... 8, x 0 ... 0.5 / -0.2 ... 0.3, beta 15 deg, b 10 m) under a 10-bin spectrum (torques
+10 ... 500 m^2 N m scaled by 0.2 ... 1.4, 1500 rpm, 10 ... 10^4 h a bin) through
+``gears.rating.rate_spectrum`` on 1 and 2 threads, beside the baseline of the same pairs rated
+once at one load by ``rate_pairs`` (the four safeties), interleaved round by round; and the
+mesh losses of the same pairs by ``gears.rating.pair_losses``.
+
+Not a test: pytest does not collect ``bench_*.py``. Results: docs/performance.md.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+
+import numpy as np
+
+from gears import rate_pairs
+from gears.rating.losses import pair_losses
+from gears.rating.spectrum import rate_spectrum
+
+SAFETIES = ("S_H1", "S_H2", "S_F1", "S_F2")
+
+
+def pairs(n: int, seed: int = 1):
+    rng = np.random.default_rng(seed)
+    z1 = rng.integers(14, 41, n)
+    z2 = rng.integers(40, 121, n)
+    m = rng.choice([1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0], n)
+    x1 = rng.uniform(0.0, 0.5, n)
+    x2 = rng.uniform(-0.2, 0.3, n)
+    b = 10.0 * m
+    return z1, z2, m, x1, x2, b
+
+
+def main(n: int = 200_000, rounds: int = 3) -> None:
+    z1, z2, m, x1, x2, b = pairs(n)
+    scale = float(np.median(m)) ** 2
+    spectrum = [(scale * 100 * f, 1500.0, h) for f, h in
+                zip(np.linspace(0.2, 1.4, 10), np.geomspace(1e4, 10, 10), strict=True)]  # fmt: skip
+    torque = 10.0 * m * m
+    times: dict[str, list[float]] = {"spectrum 1 thread": [], "spectrum 2 threads": [],
+                                     "one load, 2 threads": [], "losses": []}  # fmt: skip
+    for _ in range(rounds):
+        t0 = time.perf_counter()
+        rate_spectrum(z1, z2, m, b, spectrum, x1=x1, x2=x2, helix_angle=15.0, threads=1)
+        t1 = time.perf_counter()
+        rate_spectrum(z1, z2, m, b, spectrum, x1=x1, x2=x2, helix_angle=15.0, threads=2)
+        t2 = time.perf_counter()
+        rate_pairs(z1, z2, m, b, torque, 1500.0, x1=x1, x2=x2, helix_angle=15.0,
+                   fields=SAFETIES, threads=2)  # fmt: skip
+        t3 = time.perf_counter()
+        pair_losses(torque, 1500.0, z1, z2, m, b, x1, x2, 20.0, 15.0)
+        t4 = time.perf_counter()
+        for key, dt in zip(times, (t1 - t0, t2 - t1, t3 - t2, t4 - t3), strict=True):
+            times[key].append(dt)
+    print(f"{n} pairs, 10-bin spectrum, {rounds} rounds (best), load {os.getloadavg()}")
+    for key, ts in times.items():
+        best = min(ts)
+        print(f"{key:24s} {best:8.3f} s  {n / best:12.4g} pairs/s")
+
+
+if __name__ == "__main__":
+    main(*(int(a) for a in sys.argv[1:3]))

@@ -1,0 +1,164 @@
+"""gears.rating.spectrum, GearPair.rating(spectrum=...): load spectra by ISO 6336-6 (issue 30).
+
+Sources: the single-load rating (a one-bin spectrum is that load for its hours); Miner's
+elementary rule computed here from the bins' own stresses and the S-N curves of ISO 6336-2
+Table 2 and ISO 6336-3 Table 3 (the knots written out below, read backwards in log-log).
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from gears import Gear, GearPair
+from gears.errors import GearError
+from gears.rating.spectrum import LIFE_CAP, rate_spectrum
+
+# case-carburized (Eh): ISO 6336-2 Table 2 (pitting) and ISO 6336-3 Table 3 (bending) knots
+EH_PITTING = ((1e5, 1.6), (5e7, 1.0), (1e10, 0.85))
+EH_BENDING = ((1e3, 2.5), (3e6, 1.0), (1e10, 0.85))
+
+
+def _cycles_to_failure(ratio, knots):
+    """N_f at sigma / sigma_inf, by hand: the log-log line through the knots read backwards."""
+    (n0, y0), (n1, y1), (n2, y2) = knots
+    if ratio > y0:
+        return 1.0
+    if ratio <= y2:
+        return math.inf
+    (na, ya), (nb, yb) = ((n0, y0), (n1, y1)) if ratio > y1 else ((n1, y1), (n2, y2))
+    return math.exp(math.log(na) + (math.log(ratio) - math.log(ya))
+                    * (math.log(nb) - math.log(na)) / (math.log(yb) - math.log(ya)))  # fmt: skip
+
+
+def _miner(ratings, gear, mode, scale=1.0):
+    """Miner's sum of one gear and mode from the bins' single-load ratings."""
+    s, p, f, knots = {
+        "pitting": ("sigma_H", "sigma_HP", "Z_NT", EH_PITTING),
+        "bending": ("sigma_F", "sigma_FP", "Y_NT", EH_BENDING),
+    }[mode]
+    total = 0.0
+    for r in ratings:
+        stress = r.stresses[s][gear] * scale
+        strength = r.stresses[p][gear] / r.factors[f][gear]
+        cycles = r.quantities["N_L"][gear]
+        total += cycles / _cycles_to_failure(stress / strength, knots)
+    return total
+
+
+def _pair():
+    return GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+
+
+@pytest.mark.parametrize("hours", [0.5, 20000.0, 3e6])
+def test_one_bin_is_the_single_load_rating(hours):
+    # a one-bin spectrum is that load for its hours; the three lives reach the three segments
+    # of the curves (static, sloped, endurance)
+    pair = _pair()
+    single = pair.rating(250.0, 1500.0, life=hours)
+    spec = pair.rating(spectrum=[(250.0, 1500.0, hours)])
+    for a, b in zip((*single.safety_pitting, *single.safety_bending),
+                    (*spec.safety_pitting, *spec.safety_bending), strict=True):  # fmt: skip
+        assert b == pytest.approx(a, rel=1e-9)
+    arr = rate_spectrum(20, 50, 3, 30, [(250.0, 1500.0, hours)])
+    assert float(arr.S_H1) == pytest.approx(single.safety_pitting[0], rel=1e-9)
+    assert float(arr.S_F2) == pytest.approx(single.safety_bending[1], rel=1e-9)
+
+
+def test_two_bins_miner_by_hand():
+    pair = _pair()
+    bins = [(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)]
+    ratings = [pair.rating(t, n, life=h) for t, n, h in bins]
+    spec = pair.rating(spectrum=bins)
+    for mode in ("pitting", "bending"):
+        for gear in (0, 1):
+            expected = _miner(ratings, gear, mode)
+            assert spec.damage[mode][gear] == pytest.approx(expected, rel=1e-9, abs=1e-300)
+            life = spec.life[mode][gear]
+            if expected > 0:
+                assert life == pytest.approx(min(43000.0 / expected, LIFE_CAP), rel=1e-9)
+    # the pinion's pitting damage is positive here and the equivalent safety is where the
+    # sum by hand crosses 1 when every stress grows by S
+    s = spec.safety_pitting[0]
+    assert spec.damage["pitting"][0] > 0
+    assert (
+        _miner(ratings, 0, "pitting", s * (1 - 1e-7))
+        < 1.0
+        <= _miner(ratings, 0, "pitting", s * (1 + 1e-7))
+    )
+    sf = spec.safety_bending[1]
+    assert (
+        _miner(ratings, 1, "bending", sf * (1 - 1e-7))
+        < 1.0
+        <= _miner(ratings, 1, "bending", sf * (1 + 1e-7))
+    )
+
+
+def test_arrays_match_the_pair():
+    bins = [(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)]
+    spec = _pair().rating(spectrum=bins)
+    arr = rate_spectrum([20, 20], [50, 50], 3, [30, 30], bins)
+    assert arr.S_H1.shape == (2,)
+    assert float(arr.S_H1[1]) == pytest.approx(spec.safety_pitting[0], rel=1e-9)
+    assert float(arr.D_H2[0]) == pytest.approx(spec.damage["pitting"][1], rel=1e-9)
+    assert float(arr.L_F1[0]) == pytest.approx(spec.life["bending"][0], rel=1e-9)
+
+
+def test_spectrum_report_and_display():
+    spec = _pair().rating(spectrum=[(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)])
+    report = spec.check(min_pitting=1.0, min_bending=1.4)
+    assert list(report) == ["pitting_1", "pitting_2", "bending_1", "bending_2"]
+    assert report["pitting_1"].margin == pytest.approx(spec.safety_pitting[0] - 1.0, rel=1e-12)
+    assert "Miner" in str(spec) and "<table" in spec._repr_html_()
+
+
+@pytest.mark.parametrize(
+    "spectrum, match",
+    [
+        ([], "bins"),
+        ([(100.0, 1000.0)], "bins"),
+        ([(100.0, 1000.0, -1.0)], "hours"),
+        ([(100.0, math.nan, 1.0)], "speed"),
+        ("abc", "spectrum"),
+    ],
+)
+def test_bad_spectrum(spectrum, match):
+    with pytest.raises(GearError, match=match):
+        _pair().rating(spectrum=spectrum)
+
+
+def test_spectrum_with_torque_refused():
+    with pytest.raises(GearError, match="not both"):
+        _pair().rating(100.0, 1000.0, spectrum=[(100.0, 1000.0, 1.0)])
+    with pytest.raises(GearError, match="spectrum"):
+        rate_spectrum(20, 50, 3, 30, [(1.0, 1.0, 1.0)], life=3.0)
+
+
+bins_strategy = st.lists(
+    st.tuples(st.floats(1e-3, 1e5), st.floats(1e-2, 1e5), st.floats(1e-3, 1e7)),
+    min_size=1,
+    max_size=5,
+)
+
+
+@settings(max_examples=20, deadline=None)
+@given(bins_strategy, st.integers(8, 60), st.integers(8, 120))
+def test_rate_spectrum_property(bins, z1, z2):
+    try:
+        r = rate_spectrum(z1, z2, 2.0, 20.0, bins)
+    except GearError:
+        return
+    for v in r:
+        assert np.all(np.isfinite(v)) and np.all(np.asarray(v) >= 0)
+
+
+@settings(max_examples=10, deadline=None)
+@given(bins_strategy)
+def test_pair_spectrum_property(bins):
+    try:
+        spec = _pair().rating(spectrum=bins)
+    except GearError:
+        return
+    assert all(math.isfinite(s) and s > 0 for s in (*spec.safety_pitting, *spec.safety_bending))
