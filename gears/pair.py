@@ -65,8 +65,8 @@ if TYPE_CHECKING:
     from gears.cutting.cutter import ShaperCutter
     from gears.rating.capacity import Rating
     from gears.rating.losses import MeshLosses
-    from gears.rating.spectrum import SpectrumRating
     from gears.rating.materials import Material
+    from gears.rating.spectrum import SpectrumRating
 
 __all__ = ["GearPair"]
 
