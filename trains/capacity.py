@@ -26,7 +26,6 @@ from typing import Any
 
 from gears import GearPair, Rating
 from gears.errors import GearError
-from gears.rating.spectrum import check_spectrum, spectrum_rating
 from trains.errors import TrainError
 from trains.power import power_flow
 from trains.willis import FRAME, Train
@@ -223,6 +222,8 @@ def _idler(train: Train, flow, member: str, gear) -> bool:
 def _spectrum_rating(train, input, output, fixed, spectrum, material, face_width,
                      load_sharing_factor, mesh_efficiency, friction, options) -> dict:  # fmt: skip
     """:func:`rating` under a load spectrum: each bin rated, then Miner's rule per mesh."""
+    from gears.rating.spectrum import check_spectrum, spectrum_rating  # when asked
+
     if "life" in options:
         raise TrainError("life= and spectrum= exclude each other: the spectrum gives the hours")
     try:
