@@ -58,6 +58,7 @@ def test_failing_check_exits_1(capsys):
         (["worm", 2, 40, "--friction", 1], "--friction"),
         (["worm", 2, 40, "--flank", "ZK", "--tool-radius", 0.5], "--tool-radius"),
         (["worm", 2, 40, "--pressure-angle", 60], "--pressure-angle"),
+        (["worm", 2, 40, "--tolerance", 0.1], "--tolerance applies with --scene"),
     ],
 )
 def test_bad_input_exits_2_naming_the_option(capsys, argv, match):

@@ -97,6 +97,7 @@ LAYERS = {
             "search.checks",
             "contact.result",
             "noncircular.pair",
+            "worm.solid",
         ],
         ["pair", "bevel.gear", "search.scheduling"],
         ["shift", "figures.plot", "bevel.pair", "search.result", "worm.pair"],

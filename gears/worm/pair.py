@@ -7,12 +7,15 @@ ISO/TS 14521 load capacity of worm gears is not modelled (docs/worm.md says what
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from gears.arguments import (
+    check_angle,
     check_choice,
     check_integer,
     check_length,
@@ -21,10 +24,12 @@ from gears.arguments import (
     check_pressure_angle,
     check_real,
     check_teeth,
+    check_tolerance,
 )
 from gears.errors import GearError
 from gears.meshing import check_friction
 from gears.report import Finding, Report
+from gears.solid.mesh import COLOURS, scene
 from gears.worm.checks import MAX_WRAP_ANGLE, WormMargins, min_worm_length, worm_margins
 from gears.worm.crossed import reduced_friction_angle
 from gears.worm.flank import axial_half_thickness
@@ -37,6 +42,10 @@ from gears.worm.geometry import (
     worm_efficiency,
     worm_geometry,
 )
+from gears.worm.solid import wheel_solid, worm_placement, worm_solid
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["HANDS", "MAX_STARTS", "WormPair"]
 
@@ -127,6 +136,7 @@ class WormPair:
         addendum: float = 1.0, clearance: float = 0.2, tool_radius: float | None = None,
     ) -> None:  # fmt: skip
         set_ = object.__setattr__
+        set_(self, "_solids", {})  # meshes by (member, tolerance): see worm_mesh, wheel_mesh
         set_(self, "starts", check_integer("starts", starts, 1, MAX_STARTS))
         set_(self, "wheel_teeth", check_teeth("wheel_teeth", wheel_teeth))
         set_(self, "module", check_module(module))
@@ -387,6 +397,51 @@ class WormPair:
                     "circle at the worm's tip)"),
         ]  # fmt: skip
         return Report(found)
+
+    # --- solids ----------------------------------------------------------------------------------
+    def worm_mesh(self, tolerance: float = 0.01) -> trimesh.Trimesh:
+        """The worm as a watertight mesh in its own frame (axis +z, centred): the helicoid
+        threads of its flank form, to ``tolerance`` mm (:func:`gears.worm.solid.worm_solid`)."""
+        key = ("worm", check_tolerance(tolerance, module=self.module))
+        if key not in self._solids:
+            self._solids[key] = worm_solid(self, key[1])
+        return self._solids[key]
+
+    def wheel_mesh(
+        self, tolerance: float = 0.01, progress: Callable[[int, int], object] | None = None
+    ) -> trimesh.Trimesh:
+        """The wheel cut by simulated hobbing with this worm as the hob, a watertight mesh in
+        its own frame (axis +z, mid-plane z = 0), its flanks within ``tolerance`` mm of the
+        hob's envelope (:func:`gears.worm.solid.wheel_solid`); ``progress(done, total)``."""
+        key = ("wheel", check_tolerance(tolerance, module=self.module))
+        if key not in self._solids:
+            self._solids[key] = wheel_solid(self, key[1], progress=progress)
+        return self._solids[key]
+
+    def placements(self, angle: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+        """4x4 placements ``(worm, wheel)`` in the scene's frame with the worm turned by
+        ``angle`` degrees and the wheel by ``angle z_1 / z_2`` (the wheel's axis +z, the worm's
+        axis along +x at ``y = a``; :mod:`gears.worm.solid`)."""
+        phi1 = np.radians(check_angle("angle", angle))
+        sign = 1.0 if self.hand == "right" else -1.0
+        phi2 = sign * phi1 * self.starts / self.wheel_teeth
+        c, s = np.cos(phi2), np.sin(phi2)
+        wheel = np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1.0]])
+        return worm_placement(self, float(phi1)), wheel
+
+    def scene(
+        self, angle: float = 0.0, tolerance: float = 0.02,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> trimesh.Scene:  # fmt: skip
+        """The worm and the hobbed wheel in mesh at zero backlash (``angle``: the worm's turn,
+        degrees; at the hob's own positions, every ``360 / (N z_1)`` degrees with ``N`` of
+        :func:`gears.worm.solid.hob_positions`, the two have no volume in common)."""
+        worm_at, wheel_at = self.placements(angle)
+        wheel = self.wheel_mesh(tolerance, progress)
+        return scene([
+            ("worm", self.worm_mesh(tolerance), worm_at, COLOURS["gear1"]),
+            ("wheel", wheel, wheel_at, COLOURS["gear2"]),
+        ])  # fmt: skip
 
     def describe(self) -> str:
         """The geometry of the worm and the wheel as a table (mm, degrees; DIN 3975 symbols)."""

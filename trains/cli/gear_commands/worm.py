@@ -10,6 +10,9 @@ q = d_m1 / m_x, default 10) or by --worm-diameter d_m1. --pressure-angle is take
 the flank form names: axial for ZA, normal for ZN, ZI and ZK. --shift is the wheel's profile
 shift x_2. The exit status is 1 when a check fails. Load capacity (ISO/TS 14521) is not rated.
 
+--scene FILE also writes the worm and its wheel, cut by simulated hobbing with the worm as the
+hob, in mesh (this takes seconds to minutes: the wheel is hobbed by 3D booleans).
+
 Examples:
     geartrain worm 2 40 --module 5 --q 10 --friction 0.05
     geartrain worm 1 50 --module 4 --q 16 --flank ZA --friction 0.08 --speed 1450
@@ -26,6 +29,8 @@ from trains.cli._common import (
     finite,
     integer,
     positive,
+    scene_argument,
+    write_scene,
 )
 
 HELP = "check a worm pair (STARTS TEETH): geometry, checks, efficiency both ways, self-locking"
@@ -45,6 +50,7 @@ NAMES = {
     "tool_radius": "--tool-radius",
     "friction": "--friction",
     "worm_speed": "--speed",
+    "tolerance": "--tolerance",
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -123,6 +129,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="the worm's speed, rpm: also print the sliding speed",
     )
+    _scene_arguments(parser)
+
+
+#: the default --tolerance of --scene, mm (the wheel's hobbing takes seconds to minutes)
+SCENE_TOLERANCE = 0.05
+
+
+def _scene_arguments(parser: argparse.ArgumentParser) -> None:
+    scene_argument(parser, "the worm and the hobbed wheel in mesh")
+    parser.add_argument(
+        "--tolerance", type=positive("--tolerance", "mm"), default=None,
+        help=f"largest deviation of the 3D threads and teeth, mm (default {SCENE_TOLERANCE:g})",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
@@ -146,4 +165,13 @@ def run(args: argparse.Namespace) -> int:
     print(pair.describe())
     print(report)
     print(pair.describe_efficiency(args.friction, args.speed))
+    if args.tolerance is not None and args.scene is None:
+        from trains.errors import TrainError
+
+        raise TrainError("--tolerance applies with --scene only")
+    write_scene(
+        args, lambda tol: pair.scene(tolerance=tol), SCENE_TOLERANCE,
+        lambda sc, tol: f"worm and hobbed wheel at zero backlash, "
+        f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
+    )  # fmt: skip
     return OK if report.ok else CHECK_FAILED

@@ -1,0 +1,81 @@
+"""The worm's helicoid solid and the wheel cut by simulated hobbing.
+
+References: the exact conjugate of a ZA worm in its mid-plane is the involute of the wheel's
+base circle r_2 cos(alpha_x) with the thickness s_2 = m (pi/2 + 2 x_2 tan alpha_x) (the worm's
+axial section is a straight rack; DIN 3975, and the core's tooth_thickness as an independent
+formula); the hob's scallop law (chord sag s^2 / (8 rho)) bounds the deviation; the volumes of
+solids of revolution bound the wheel's (its blank, its root cylinder).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import shapely
+
+from gears import GearError, WormPair
+from gears.cutting.measure import thickness_on
+from gears.geometry import tooth_thickness
+
+trimesh = pytest.importorskip("trimesh")
+
+from gears.solid.mesh import to_manifold  # noqa: E402
+from gears.worm.solid import wheel_blank, worm_section  # noqa: E402
+
+TOL = 0.1  # mm: coarse, so the hobbing stays quick
+
+
+@pytest.fixture(scope="module")
+def pair():
+    w = WormPair(1, 10, 2.0, diameter_quotient=10, flank="ZA", profile_shift=0.3)
+    return w, w.worm_mesh(TOL), w.wheel_mesh(TOL)
+
+
+def test_worm_and_wheel_are_watertight_and_of_plausible_volume(pair):
+    w, worm, wheel = pair
+    for m in (worm, wheel):
+        assert m.is_watertight and m.is_winding_consistent and m.volume > 0
+    # the worm lies between its root and tip cylinders (volume of revolution, independent)
+    rf, ra = w.worm_root_diameter / 2, w.worm_tip_diameter / 2
+    assert math.pi * rf**2 * w.worm_length < worm.volume < math.pi * ra**2 * w.worm_length
+    # the wheel lies within its blank and outside its root cylinder over the face width
+    blank = wheel_blank(w, TOL).volume()
+    root = math.pi * (w.wheel_root_diameter / 2) ** 2 * w.face_width
+    assert root < wheel.volume < blank
+
+
+def test_hobbed_mid_plane_is_the_involute_within_the_tolerance(pair):
+    # ZA: the mid-plane is a rack-and-gear mesh; the exact conjugate tooth has the involute
+    # thickness at every diameter. The hob's discrete positions leave ridges (thicker teeth),
+    # each flank within the tolerance, so the thickness within twice of it.
+    w, _, wheel = pair
+    rings = to_manifold(wheel).slice(0.0).to_polygons()
+    polys = [shapely.Polygon(r) for r in rings]
+    section = max(polys, key=lambda p: p.area)
+    base = w.wheel_diameter * math.cos(math.radians(w.axial_pressure_angle))
+    for d in np.linspace(max(w.wheel_root_diameter, base) + 0.5, w.wheel_tip_diameter - 0.5, 4):
+        s = thickness_on(section, d)
+        exact = float(tooth_thickness(d, 10, 2.0, 0.3, w.axial_pressure_angle))
+        assert len(s) == 10
+        assert np.all(s - exact > -0.01) and np.all(s - exact < 2 * TOL), (d, s - exact)
+
+
+def test_section_refuses_crossing_threads():
+    # a worm section whose threads cross is refused, not drawn
+    w = WormPair(2, 40, 2.0, diameter_quotient=10)
+    assert worm_section(w, 0.05).is_valid
+    with pytest.raises(GearError, match="tolerance"):
+        w.worm_mesh(float("nan"))
+
+
+def test_scene_places_worm_and_wheel(pair):
+    w = pair[0]
+    sc = w.scene(tolerance=TOL)
+    assert sorted(sc.graph.nodes_geometry) == ["wheel", "worm"]
+    worm_at, _ = w.placements(0.0)
+    # the worm's axis runs along x at the centre distance
+    axis = worm_at[:3, :3] @ np.array([0.0, 0.0, 1.0])
+    assert np.allclose(axis, [1.0, 0.0, 0.0], atol=1e-12)
+    assert worm_at[1, 3] == pytest.approx(w.center_distance, rel=1e-14)
