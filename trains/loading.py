@@ -673,15 +673,22 @@ def planetary_loads(
     planet_mass: float | Mapping[str, float] | None = None,
     mesh_efficiency: float | None = None,
     friction: float | None = None,
+    unequal_sharing: bool = False,
 ) -> TrainLoads:
     """The loads of a :class:`trains.Planetary` (the view behind :meth:`trains.Planetary.loads`):
     :func:`loads` on its train with its planets where :meth:`~trains.Planetary.placement` puts
-    them (unequal spacing too), copy 0 carrying ``load_sharing_factor / n`` of each mesh, and the
-    planets' centrifugal force ``m omega_H^2 rho`` (Ozols section 11-2) from their solids'
-    mass (:func:`solid_mass`, or ``planet_mass`` in kg) at the carrier's speed.
+    them (unequal spacing too) and the planets' centrifugal force ``m omega_H^2 rho`` (Ozols
+    section 11-2) from their solids' mass (:func:`solid_mass`, or ``planet_mass`` in kg) at the
+    carrier's speed.
+
+    The planets share the load equally in the statics (so symmetric planets leave the sun and
+    the carrier unloaded); the most loaded planet's mesh forces and pin load with
+    ``load_sharing_factor`` K_gamma are in the notes. With ``unequal_sharing`` the statics
+    themselves load planet 0 with ``K_gamma / n`` and the others with the rest, which loads the
+    sun's and the carrier's bearings.
 
     ``input``, ``output``, ``fixed`` are member names of ``stage.train``; ``speed`` is the
-    input's, rpm. The notes give the carrier torque, the output's balancing moment (Ozols
+    input's, rpm. The notes also give the carrier torque, the output's balancing moment (Ozols
     (11.7)), the planets' mass, radius and centrifugal force, and the net radial force on the
     sun's and the carrier's bearings.
     """
@@ -725,11 +732,25 @@ def planetary_loads(
         mesh_efficiency,
         friction,
         planet_angles={m: spacing[i] for i, m in enumerate(members)},
-        load_sharing=dict.fromkeys(members, load_sharing_factor),
+        load_sharing=dict.fromkeys(members, load_sharing_factor) if unequal_sharing else None,
         centrifugal=centrifugal,
     )
+    k = 1.0 if unequal_sharing else load_sharing_factor  # planet 0's loads times k
+    for name, mesh in ld.meshes.items():
+        if mesh.copies > 1 or any(m in members for m in mesh.members):
+            notes[f"most loaded planet: {name} F_n [N]"] = k * mesh.normal[0]
+    for member in members:
+        p = ld.members[member]
+        out = p.position[:2] - ld.members[stage.carrier].position[:2]
+        norm = float(np.hypot(*out))
+        j = centrifugal[member] * (out / norm if norm > 0 else np.zeros(2))
+        pin = k * (p.force[:2] - j) + j
+        suffix = "" if len(members) == 1 else f" ({member})"
+        notes[f"most loaded planet: pin load [N]{suffix}"] = float(np.hypot(*pin))
     notes["carrier torque [N m]"] = ld.flow.torques[stage.carrier]
     notes["output torque (balancing moment) [N m]"] = ld.flow.torques[output]
+    tiny = 1e-9 * max((m.normal[0] * m.copies for m in ld.meshes.values()), default=0.0)
     for member in ("sun", stage.carrier):
-        notes[f"net radial force on {member} [N]"] = ld.members[member].radial_load
+        net = ld.members[member].radial_load
+        notes[f"net radial force on {member} [N]"] = net if net > tiny else 0.0  # round-off
     return TrainLoads(ld.flow, ld.meshes, ld.members, notes)

@@ -48,6 +48,11 @@ def test_centrifugal_force_by_hand_from_the_solid():
     # symmetric planets: no net radial force on the sun or the carrier
     assert ld.notes["net radial force on sun [N]"] == pytest.approx(0.0, abs=1e-9 * r)
     assert ld.notes["net radial force on arm [N]"] == pytest.approx(0.0, abs=1e-9 * r)
+    # the most loaded planet with K_gamma = 1.3: its mesh forces and its pin's mesh part scale
+    k = planetary_loads(p, "sun", "arm", "ring", 100.0, 1500.0, 1.3, face_width=20).notes
+    assert k["most loaded planet: sun-planet F_n [N]"] == pytest.approx(1.3 * r, rel=1e-12)
+    pin = math.hypot(j, 1.3 * 2 * r * COS20)
+    assert k["most loaded planet: pin load [N]"] == pytest.approx(pin, rel=1e-6)
 
 
 def test_given_mass_and_one_planet():
@@ -73,7 +78,9 @@ def test_unequal_spacing_and_load_sharing():
     angles = p.placement().planet_angles
     assert max(abs(a - 90 * k) for k, a in enumerate(angles)) > 0.1
     for k_gamma in (1.0, 1.25):
-        ld = planetary_loads(p, "sun", "arm", "ring", 100.0, 1000.0, k_gamma, planet_mass=0.3)
+        ld = planetary_loads(
+            p, "sun", "arm", "ring", 100.0, 1000.0, k_gamma, planet_mass=0.3, unequal_sharing=True
+        )
         shares = [k_gamma / 4] + [(4 - k_gamma) / 12] * 3
         whole = 100.0 / (0.020 * COS20)
         turn = abs(
@@ -141,6 +148,11 @@ def test_planetary_loads_method_and_roles():
     p = Planetary(21, 36, 93, n_planets=3, module=2)
     a = p.loads(100.0, 1500.0, planet_mass=0.6)
     b = planetary_loads(p, "sun", "arm", "ring", 100.0, 1500.0, 1.16, planet_mass=0.6)
+    assert a.members["sun"].radial_load == pytest.approx(0.0, abs=1e-9)  # equal statics
+    u = p.loads(100.0, 1500.0, planet_mass=0.6, unequal_sharing=True)
+    assert u.members["sun"].radial_load > 1.0  # K_gamma in the statics loads the sun
+    with pytest.raises(TrainError, match="unequal_sharing"):
+        p.loads(100.0, 1500.0, planet_mass=0.6, unequal_sharing="yes")
     assert a.notes == pytest.approx(b.notes, rel=1e-15)
     # carrier fixed: sun in, ring out; the carrier stands, so no centrifugal force
     c = p.loads(100.0, 1500.0, fixed="carrier", planet_mass=0.6)

@@ -601,28 +601,31 @@ class Planetary:
         output: str | None = None, face_width: float | None = None,
         material: Any = "case-carburized", planet_mass: float | None = None,
         load_sharing_factor: float | None = None, mesh_efficiency: float | None = None,
-        friction: float | None = None,
+        friction: float | None = None, unequal_sharing: bool = False,
     ) -> TrainLoads:  # fmt: skip
         """Every force of the stage (:func:`trains.loading.planetary_loads`): each mesh per
-        planet, the most loaded planet carrying ``K_gamma / n`` (default
-        :func:`trains.load_sharing`), its pin load with the centrifugal force ``m omega_H^2
-        rho`` of its solid (``face_width`` mm, the ``material``'s density; or ``planet_mass``
-        kg), at the placement's spacing; the carrier torque, the output's balancing moment and
-        the net radial force on the sun and the carrier (in :attr:`TrainLoads.notes`).
+        planet and each planet's pin load with the centrifugal force ``m omega_H^2 rho`` of its
+        solid (``face_width`` mm, the ``material``'s density; or ``planet_mass`` kg), at the
+        placement's spacing; the most loaded planet's mesh forces and pin load with K_gamma
+        (default :func:`trains.load_sharing`), the carrier torque, the output's balancing
+        moment and the net radial force on the sun and the carrier (in
+        :attr:`TrainLoads.notes`). ``unequal_sharing`` puts K_gamma into the statics (planet 0
+        carries ``K_gamma / n``), which loads the sun's and the carrier's bearings.
 
         ``torque`` (N m) and ``speed`` (rpm) are the input member's; the roles default as in
         :meth:`ratio` (ring fixed: sun in, carrier out).
 
         Examples
         --------
-        Ozols (11.11): M_H = M1 (1 + r3 / r1); planets sharing the load equally leave the sun
-        unloaded, the default K_gamma = 1.16 of three planets does not.
+        Ozols (11.11): M_H = M1 (1 + r3 / r1); symmetric planets leave the sun unloaded,
+        unless one carries K_gamma = 1.16 times its share.
 
         >>> p = Planetary(21, 36, 93, n_planets=3, module=2)
-        >>> ld = p.loads(100, 1500, planet_mass=0.6, load_sharing_factor=1.0)
+        >>> ld = p.loads(100, 1500, planet_mass=0.6)
         >>> round(ld.notes["carrier torque [N m]"], 6), round(ld.members["sun"].radial_load, 6)
         (-542.857143, 0.0)
-        >>> round(p.loads(100, 1500, planet_mass=0.6).members["sun"].radial_load, 2)
+        >>> round(p.loads(100, 1500, planet_mass=0.6, unequal_sharing=True).members["sun"]
+        ...       .radial_load, 2)
         405.4
         """
         fixed, input, output = _default_roles(
@@ -634,10 +637,12 @@ class Planetary:
         if isinstance(material, str) and material not in MATERIALS:
             raise TrainError(f"material = {material!r}; valid are {', '.join(MATERIALS)}")
         density = getattr(material, "density", None) or MATERIALS[material].density
+        if not isinstance(unequal_sharing, bool):
+            raise TrainError(f"unequal_sharing = {unequal_sharing!r}; valid is True or False")
         k = load_sharing(self.n_planets) if load_sharing_factor is None else load_sharing_factor
         return planetary_loads(self, name[input], name[output], name[fixed], torque, speed, k,
-                               face_width, density, planet_mass, mesh_efficiency,
-                               friction)  # fmt: skip
+                               face_width, density, planet_mass, mesh_efficiency, friction,
+                               unequal_sharing)  # fmt: skip
 
     # ---- conditions (trains.planetary.checks) ---------------------------------------------
     def assembly(self) -> Assembly:
