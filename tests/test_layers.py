@@ -56,6 +56,7 @@ LAYERS = {
             "bevel.cone",
             "rating._block",
             "rating.losses",
+            "bevel.rating",
             "search.cluster",
             "contact.analysis",
             "contact.flank",

@@ -14,7 +14,8 @@ then rates each mesh built from real gears with :meth:`gears.GearPair.rating`:
   count (AGMA 6123 values, as ISO 6336-1 leaves them to the designer), or is given.
 
 :meth:`trains.Planetary.rating` rates one stage this way. Bevel meshes
-(:class:`gears.BevelPair`) are left out of the result: their rating (ISO 10300) is not modelled.
+(:class:`gears.BevelPair`) are left out of the result: rate them with
+:meth:`gears.BevelPair.rating` or :meth:`trains.Differential.rating` (after ISO 10300 method B1).
 """
 
 from __future__ import annotations
@@ -139,12 +140,12 @@ def rating(
                       friction=friction)  # fmt: skip
     speeds = flow.speeds
     planets = dict(getattr(train, "_planets", {}))
-    # bevel meshes (gears.BevelPair) would need ISO 10300, which is not modelled: left out
+    # bevel meshes (gears.BevelPair): BevelPair.rating / Differential.rating rate them
     relations = [r for r in train.relations if isinstance(r.pair, GearPair)]
     if not relations:
         raise TrainError(
             "the train has no mesh of real gears to rate (build meshes with gears=; bevel "
-            "meshes are not rated: ISO 10300 is not modelled)"
+            "meshes: rate them with BevelPair.rating or Differential.rating, ISO 10300)"
         )
     scale = max(abs(float(t)) for t in flow.torques.values())
     out: dict[str, Rating] = {}

@@ -144,6 +144,48 @@ class Differential:
                 raise TrainError(f"{name} = {v!r}; valid is a finite speed of at most 1e150")
         return self.train.solve(known, **speeds)
 
+    def rating(self, torque: float, left: float, right: float,
+               material: Any = "case-carburized", **options: Any) -> dict:  # fmt: skip
+        """Pitting and bending rating of every mesh (``"pinion-right"``, ``"pinion-left"``),
+        after ISO 10300 method B1 (:meth:`gears.BevelPair.rating`).
+
+        ``torque`` N m on the case, split equally between the side gears and among the
+        ``n_pinions`` pinions (a differential without friction); ``left`` and ``right`` the
+        wheels' speeds in rpm, which must differ: the pinions roll on the side gears only
+        while the wheels turn at different speeds (cornering, a spinning wheel), and a flank
+        loaded standing still is not rated by ISO 10300. Each pinion is loaded on opposite
+        flanks by the two side gears (an idler, Y_M); each side gear meets ``n_pinions`` pinions
+        per relative turn. ``options`` go to :meth:`gears.BevelPair.rating` (``life``,
+        ``mounting``, ``quality``, factors).
+
+        >>> d = Differential(side=16, pinion=10, module=3, gleason=True)
+        >>> r = d.rating(torque=150, left=90, right=110)
+        >>> [round(s, 2) for s in r["pinion-right"].safety_bending]
+        [1.65, 2.21]
+        """
+        try:
+            t = check_real("torque", torque, 0.0)
+        except GearError as exc:
+            raise TrainError(str(exc)) from None
+        m = self.solve(left=left, right=right)
+        spin = abs(float(m.relative("pinion", "case")))
+        if not spin > 0.0:
+            raise TrainError(
+                f"left = {left!r}, right = {right!r}: the pinions do not turn in the case (the "
+                "wheels turn alike), so no flank rolls; ISO 10300 rates rolling flanks: give the "
+                "wheel speeds of a turn"
+            )
+        per_mesh = t / 2.0 / self.n_pinions * self.pinion / self.side  # on each pinion
+        options.setdefault("idler", (True, False))
+        out = {}
+        for name in ("pinion-right", "pinion-left"):
+            try:
+                out[name] = self.pair.rating(per_mesh, spin, material,
+                                             contacts=(1, self.n_pinions), **options)  # fmt: skip
+            except GearError as exc:
+                raise TrainError(f"mesh {name}: {exc}") from None
+        return out
+
     @property
     def assembles(self) -> bool:
         """True when ``2 z_side / n_pinions`` is an integer (equally spaced pinions fit)."""

@@ -5,7 +5,8 @@ A bevel gear exists only with its mate (the pitch cones follow from both tooth c
 shaft angle), so :class:`BevelGear` is a view of one member of a :class:`BevelPair`. The checks
 are those of the virtual (Tredgold) spur pair at the mean cone (:attr:`BevelPair.virtual_pair`,
 a :class:`gears.GearPair` of :class:`VirtualGear`) plus the bevel rules (face width, the tip land
-at both ends of the face). ISO 10300 load capacity of bevel gears is not modelled.
+at both ends of the face). The load capacity, after ISO 10300 method B1 through the virtual
+cylindrical gears, is :meth:`BevelPair.rating` (:mod:`gears.bevel.rating`).
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import pathlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -452,6 +453,26 @@ class BevelPair:
         """Ozols (14.25) on the virtual pair: ``1 - (pi f eps / 2)(1/z_v1 + 1/z_v2)`` (the
         sliding of a straight bevel mesh is that of its Tredgold pair)."""
         return self.virtual_pair.mesh_efficiency(friction)
+
+    # --- load capacity ---------------------------------------------------------------------------
+    def rating(self, torque: float, speed: float, material: Any = "case-carburized", *,
+               life: float = 20000.0, mounting: str = "both-straddle", **options: Any):  # fmt: skip
+        """Pitting and bending rating through the virtual cylindrical gears at the mean cone,
+        after ISO 10300 method B1 (:func:`gears.bevel.rating.bevel_rating`: what is ISO
+        10300's there and what is ISO 6336's).
+
+        ``torque`` N m on the pinion at ``speed`` rpm; ``mounting`` sets the mounting factor
+        K_Hbeta-be (:data:`gears.bevel.rating.MOUNTING_FACTORS`); ``options`` as for
+        :meth:`gears.GearPair.rating`. Returns a :class:`gears.Rating`.
+
+        >>> r = BevelPair(20, 40, module=3, face_width=20).rating(50, 1500)
+        >>> [round(s, 3) for s in r.safety_pitting]
+        [1.699, 1.857]
+        """
+        from gears.bevel.rating import bevel_rating  # the rating family: loaded when rated
+
+        return bevel_rating(self, torque, speed, material, life=life, mounting=mounting,
+                            **options)  # fmt: skip
 
     # --- forces ----------------------------------------------------------------------------------
     def forces(self, torque: float) -> PairForces:

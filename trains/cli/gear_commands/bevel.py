@@ -6,8 +6,8 @@ land, and the face width against R_e / 3, each with its margin; optionally write
 The module is the outer transverse module m_et; the face width defaults to R_e / 3.5. --shift is
 the pinion's profile shift at the mean cone (the wheel gets its negative), --gleason the Gleason
 proportions of KHK Table 4.11. With --torque (N m on the pinion) the mesh forces at the mean
-cone follow (ISO 10300-1). The exit status is 1 when a check fails. Load capacity (ISO 10300)
-is not rated.
+cone follow (ISO 10300-1). The exit status is 1 when a check fails. The load capacity is the
+library's BevelPair.rating (after ISO 10300 method B1); this command does not rate.
 
 Examples:
     geartrain bevel 20 40 --module 3 --face-width 22
