@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from gears import BevelPair, Gear, GearError
+from gears import MATERIALS, BevelPair, Gear, GearError
 from gears.display import html_table
 from gears.forces import bearing_reactions, bevel_pair_forces, centrifugal_force, mesh_forces
 from trains.errors import TrainError
@@ -669,7 +669,7 @@ def planetary_loads(
     speed: float,
     load_sharing_factor: float,
     face_width: float | None = None,
-    density: float = 7.83e-6,
+    material: Any = "case-carburized",
     planet_mass: float | Mapping[str, float] | None = None,
     mesh_efficiency: float | None = None,
     friction: float | None = None,
@@ -681,8 +681,9 @@ def planetary_loads(
     section 11-2) from their solids' mass (:func:`solid_mass`, or ``planet_mass`` in kg) at the
     carrier's speed.
 
-    The planets share the load equally in the statics (so symmetric planets leave the sun and
-    the carrier unloaded); the most loaded planet's mesh forces and pin load with
+    ``material`` (a name of :data:`gears.MATERIALS` or a :class:`gears.Material`) gives the
+    density. The planets share the load equally in the statics (so symmetric planets leave the
+    sun and the carrier unloaded); the most loaded planet's mesh forces and pin load with
     ``load_sharing_factor`` K_gamma are in the notes. With ``unequal_sharing`` the statics
     themselves load planet 0 with ``K_gamma / n`` and the others with the rest, which loads the
     sun's and the carrier's bearings.
@@ -693,6 +694,15 @@ def planetary_loads(
     sun's and the carrier's bearings.
     """
     speed = _real("speed", speed)
+    if not isinstance(unequal_sharing, bool):
+        raise TrainError(f"unequal_sharing = {unequal_sharing!r}; valid is True or False")
+    if isinstance(material, str) and material not in MATERIALS:
+        raise TrainError(f"material = {material!r}; valid are {', '.join(MATERIALS)}")
+    density = getattr(MATERIALS[material] if isinstance(material, str) else material, "density",
+                      None)  # fmt: skip
+    if density is None:
+        raise TrainError(f"material = {material!r}; valid is a name of gears.MATERIALS or a "
+                         "gears.Material")  # fmt: skip
     train = stage.train
     place = stage.placement()
     members = ["planet", "planet2"] if stage.scheme == "double-planet" else ["planet"]

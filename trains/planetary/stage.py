@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from gears import MATERIALS, Gear, GearPair
+from gears import Gear, GearPair
 from gears.arguments import check_angle, check_integer, check_module, check_real
 from gears.errors import GearError
 from gears.report import Report
@@ -596,53 +596,23 @@ class Planetary:
                           torque=torque, speed=speed, material=material, face_width=face_width,
                           load_sharing_factor=load_sharing_factor, **options)  # fmt: skip
 
-    def loads(
-        self, torque: float, speed: float, fixed: str = "ring", input: str | None = None,
-        output: str | None = None, face_width: float | None = None,
-        material: Any = "case-carburized", planet_mass: float | None = None,
-        load_sharing_factor: float | None = None, mesh_efficiency: float | None = None,
-        friction: float | None = None, unequal_sharing: bool = False,
-    ) -> TrainLoads:  # fmt: skip
-        """Every force of the stage (:func:`trains.loading.planetary_loads`): each mesh per
-        planet and each planet's pin load with the centrifugal force ``m omega_H^2 rho`` of its
-        solid (``face_width`` mm, the ``material``'s density; or ``planet_mass`` kg), at the
-        placement's spacing; the most loaded planet's mesh forces and pin load with K_gamma
-        (default :func:`trains.load_sharing`), the carrier torque, the output's balancing
-        moment and the net radial force on the sun and the carrier (in
-        :attr:`TrainLoads.notes`). ``unequal_sharing`` puts K_gamma into the statics (planet 0
-        carries ``K_gamma / n``), which loads the sun's and the carrier's bearings.
+    def loads(self, torque: float, speed: float, fixed: str = "ring", input: str | None = None,
+              output: str | None = None, load_sharing_factor: float | None = None,
+              **options: Any) -> TrainLoads:  # fmt: skip
+        """Every force of the stage, :func:`trains.loading.planetary_loads` (``options``:
+        ``face_width``, ``material``, ``planet_mass``, ``unequal_sharing``, ...) with the roles
+        of :meth:`ratio`, K_gamma by default :func:`trains.load_sharing`; ``torque`` (N m) and
+        ``speed`` (rpm) are the input's. Ozols (11.11): M_H = M1 (1 + r3/r1).
 
-        ``torque`` (N m) and ``speed`` (rpm) are the input member's; the roles default as in
-        :meth:`ratio` (ring fixed: sun in, carrier out).
-
-        Examples
-        --------
-        Ozols (11.11): M_H = M1 (1 + r3 / r1); symmetric planets leave the sun unloaded,
-        unless one carries K_gamma = 1.16 times its share.
-
-        >>> p = Planetary(21, 36, 93, n_planets=3, module=2)
-        >>> ld = p.loads(100, 1500, planet_mass=0.6)
+        >>> ld = Planetary(21, 36, 93, n_planets=3, module=2).loads(100, 1500, planet_mass=0.6)
         >>> round(ld.notes["carrier torque [N m]"], 6), round(ld.members["sun"].radial_load, 6)
         (-542.857143, 0.0)
-        >>> round(p.loads(100, 1500, planet_mass=0.6, unequal_sharing=True).members["sun"]
-        ...       .radial_load, 2)
-        405.4
         """
-        fixed, input, output = _default_roles(
-            self._member(fixed),
-            None if input is None else self._member(input),
-            None if output is None else self._member(output),
-        )
-        name = {"sun": "sun", "ring": "ring", "carrier": self.carrier}
-        if isinstance(material, str) and material not in MATERIALS:
-            raise TrainError(f"material = {material!r}; valid are {', '.join(MATERIALS)}")
-        density = getattr(material, "density", None) or MATERIALS[material].density
-        if not isinstance(unequal_sharing, bool):
-            raise TrainError(f"unequal_sharing = {unequal_sharing!r}; valid is True or False")
+        roles = _default_roles(self._member(fixed), input and self._member(input),
+                               output and self._member(output))  # fmt: skip
+        fixed, input, output = ({"carrier": self.carrier}.get(r, r) for r in roles)
         k = load_sharing(self.n_planets) if load_sharing_factor is None else load_sharing_factor
-        return planetary_loads(self, name[input], name[output], name[fixed], torque, speed, k,
-                               face_width, density, planet_mass, mesh_efficiency, friction,
-                               unequal_sharing)  # fmt: skip
+        return planetary_loads(self, input, output, fixed, torque, speed, k, **options)
 
     # ---- conditions (trains.planetary.checks) ---------------------------------------------
     def assembly(self) -> Assembly:
