@@ -25,3 +25,12 @@ save("cycloidal_drive.svg", disc, *pins.geoms)
 compound = CycloidalDrive(9, 3.0, 1.0, 40.0, output_pins=8, output_pin_circle_radius=36.0)
 print(compound, "ratio", compound.ratio)
 assert drive.ratio == -20 and compound.ratio == 64 and drive.check().ok
+
+# the disc among its pins at crank angle 0
+try:
+    from gears.figures.plot import outlines_figure
+except ImportError:  # matplotlib missing: the SVG is still written
+    pass
+else:
+    fig = outlines_figure(disc, *pins.geoms)
+    fig.axes[0].set_title(f"cycloidal disc, {drive.pins} pins: ratio {drive.ratio}")

@@ -56,3 +56,18 @@ print(f"idler 5: {ld.members['5'].radial_load:.1f} N, bearings {np.hypot(*ra[:2]
 assert np.allclose(ra, rb)
 print(f"planet pin 2: {ld.members['2'].radial_load:.1f} N each; drum 4 holds "
       f"{-ld.members['4'].torque:.1f} N m")  # fmt: skip
+
+# the radial load on each member's bearings (N), the planets' pins per planet
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    names = list(ld.members)
+    fig, ax = plt.subplots(figsize=(6, 3.2))
+    ax.barh(names, [ld.members[n].radial_load for n in names], color="tab:blue")
+    ax.invert_yaxis()
+    ax.set_xlabel("radial bearing load, N")
+    ax.set_ylabel("member")
+    ax.set_title(f"hoist at {T1:.1f} N m, {N1:g} rpm: the loads on the bearings")
+    fig.tight_layout()

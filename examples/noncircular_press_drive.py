@@ -33,3 +33,21 @@ print(f"transmission error of the cut teeth: {arc.max() * 1000:.1f} um of arc (t
 save("press_pair.svg", *pair.outlines(30.0, 0.02))
 save("press_pair.glb", pair.scene(30.0, face_width=12.0, tolerance=0.02))
 assert report.ok and abs(1 / speed.min() - slowest) < 1e-6 and arc.max() < 0.02
+
+# the crank's speed over one turn of the motor: slow through the pressing stroke
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    ax.plot(phi, speed)
+    ax.axhline(1.0, color="k", lw=0.6, ls=":")
+    ax.set_xlabel("motor angle, deg")
+    ax.set_ylabel("crank speed / motor speed")
+    ax.set_xticks(range(0, 361, 60))
+    ax.grid(alpha=0.3)
+    ax.set_title(
+        f"elliptical pair e = {e:.4f}: slowest {speed.min():.3f}, fastest {speed.max():.3f}"
+    )
+    fig.tight_layout()

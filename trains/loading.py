@@ -129,7 +129,7 @@ class MemberLoad:
 
     @property
     def radial_load(self) -> float:
-        """|bearing| in the plane of the drawing (the radial bearing load), N."""
+        """``|bearing|`` in the plane of the drawing (the radial bearing load), N."""
         return float(math.hypot(self.bearing[0], self.bearing[1]))
 
 

@@ -6,7 +6,7 @@ i(phi) = omega1/omega2 roll their centrodes on each other; the pole P lies on O1
 
 * (19.1) O1P / O2P = omega2 / omega1;
 * (19.2) O1P = a / (1 + omega1/omega2) for an external pair (P between the centres), and
-  O1P = a / |1 - omega1/omega2| for an internal one (P outside them);
+  ``O1P = a / |1 - omega1/omega2|`` for an internal one (P outside them);
 * (19.3) the centrodes in polar coordinates: gear 1's radius O1P laid off at the angle
   phi = integral(omega1 dt) opposite to its rotation, gear 2's radius O2P at
   psi = integral(omega2 dt), so psi(phi) = integral(d phi / i);

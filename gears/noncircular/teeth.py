@@ -114,9 +114,9 @@ def roll_step(cutter: RackCutter, curvature: float, tolerance: float) -> float:
 
 def rack_frames(r, dr):
     """The rack's pitch line at the pole in the fixed frame for gear 1's pole radius ``r`` and
-    its derivative ``dr`` = d r1/d phi (arrays): the unit tangent t = (r', -r)/|.| (the way the
-    pole runs along gear 1's pitch curve as phi grows) and the unit normal n = (r, r')/|.|
-    (towards gear 2)."""
+    its derivative ``dr`` = d r1/d phi (arrays): the unit tangent ``t = (r', -r)/|.|`` (the way
+    the pole runs along gear 1's pitch curve as phi grows) and the unit normal
+    ``n = (r, r')/|.|`` (towards gear 2)."""
     r, dr = np.asarray(r, float), np.asarray(dr, float)
     h = np.hypot(r, dr)
     t = np.stack([dr / h, -r / h], axis=-1)
