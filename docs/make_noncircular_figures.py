@@ -36,7 +36,7 @@ def _poly(ax, poly, **kw):
 
 
 def pairs_figure(out: pathlib.Path = IMAGES) -> pathlib.Path:
-    fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.2))
+    fig, axes = plt.subplots(1, 2, figsize=(8.0, 3.6))  # readable at the page width
     p = NonCircularPair.elliptical(40.0, 0.2, module=2.0)
     one, two = p.outlines(30.0, 0.02)
     c1, c2 = p.pitch_curves(720, 30.0)
@@ -69,7 +69,7 @@ def law_figure(out: pathlib.Path = IMAGES) -> pathlib.Path:
     p = NonCircularPair.elliptical(40.0, 0.2, module=2.0)
     phi = np.linspace(0.0, 360.0, 181)
     te = p.transmission_error(phi, tolerance=0.005)
-    fig, (a, b) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    fig, (a, b) = plt.subplots(1, 2, figsize=(8.0, 3.2))  # readable at the page width
     a.plot(phi, p.ratio(phi), color="tab:blue")
     a.set_xlabel("input angle, deg")
     a.set_ylabel("ratio omega1/omega2")
