@@ -63,16 +63,19 @@ _CACHE_SIZE = 256
 _NOT_FINITE = 9  # the last reason (gears.rating.iso6336.REASONS)
 
 
-def rate_block(a, mats, fields, cache=None):
+def rate_block(a, mats, fields, cache=None, key=None):
     """Every formula of ISO 6336 method B on one block: ``a`` the checked arguments (overrides
     as ``o_<name>``), ``mats`` the two :class:`gears.rating.materials.Material`; returns the dict
     of every quantity, the ``fields`` broadcast to the block and masked by ``valid`` (zero
     safeties, NaN elsewhere). Rows outside a method's validity may produce NaN or inf on the
-    way. ``cache`` (a dict, for one pair of scalar arguments) keeps the gears' part."""
+    way. ``cache`` (a dict, for one pair of scalar arguments) keeps the gears' part, by ``key``
+    (the caller's key of the gears' arguments) or by the arguments themselves."""
     gears = {k: v for k, v in a.items() if k not in LOAD}
-    key = None
-    if cache is not None:
-        key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
+    if cache is None:
+        key = None
+    else:
+        if key is None:
+            key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
         q = cache.get(key)
     if key is None or q is None:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

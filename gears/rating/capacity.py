@@ -323,9 +323,15 @@ def _one_pair(args: dict, factors: dict) -> None:
     """Every value of one pair's rating is one number (or a pair of them): arrays belong to
     :func:`gears.rating.iso6336.rate_pairs`."""
     for name in _ONE:
-        if args[name] is not None:
-            one_number(name, args[name])
+        v = args[name]
+        if v is not None and type(v) is not float and type(v) is not int:
+            one_number(name, v)
     for name, value in (*((n, args[n]) for n in _PER_GEAR), *factors.items()):
         for v in value if isinstance(value, tuple | list) else (value,):
-            if v is not None and not isinstance(v, bool):
+            if (
+                v is not None
+                and type(v) is not float
+                and type(v) is not int
+                and type(v) is not bool
+            ):
                 one_number(name, v)

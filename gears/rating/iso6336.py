@@ -253,6 +253,10 @@ _FACTOR_RANGE = (1e-3, 1e6)  # a factor given by its symbol (the load factors fr
 # at other loads computes the load's part only
 _GEARS: dict = {}
 _GEOMETRY: dict = {}  # and its pair_geometry, by its arguments
+_ARGUMENTS: dict = {}  # and its checked arguments but the load's (_plain_key)
+_LOAD_ARGS = frozenset({"torque", "speed", "life", "application_factor", "load_sharing"})
+_LOAD_KEYS = ("T", "n", "life", "K_A", "K_gamma")
+_NOT_KEYED = _LOAD_ARGS | {"geometry"}
 _PLAIN = frozenset({int, float, bool, type(None), np.float64, np.int64, np.bool_})
 
 
@@ -390,8 +394,8 @@ def rate_pairs(
         if unknown or isinstance(fields, str):
             raise GearError(f"fields = {fields!r}; valid are names of PairRatings: {_RESULTS}")
         fields = tuple(f for f in fields if f in _RESULTS)
-    a, mats = _arguments(args)
-    result = _blocks(a, mats, fields, default_threads() if threads is None else threads)
+    a, mats, key = _arguments(args)
+    result = _blocks(a, mats, fields, default_threads() if threads is None else threads, key)
     if errors == "raise" and not np.all(result.valid):
         bad = np.ravel(~np.asarray(result.valid))
         i = int(np.argmax(bad))
@@ -402,7 +406,62 @@ def rate_pairs(
 
 def _arguments(args):
     """The checked arguments of :func:`rate_pairs` as a dict of float arrays (overrides as
-    ``o_<name>``) with the pairs' geometry, and the two materials."""
+    ``o_<name>``) with the pairs' geometry, the two materials and, for one pair of plain
+    arguments, the key its gears' part is kept by (else None): its arguments but the load's
+    are then checked once."""
+    key = _plain_key(args)
+    kept = _ARGUMENTS.get(key) if key is not None else None
+    if kept is None:
+        a, mats = _all_arguments(args)
+        if key is not None:
+            if len(_ARGUMENTS) >= 256:
+                _ARGUMENTS.clear()
+            _ARGUMENTS[key] = ({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats)
+        return a, mats, key
+    gears, mats = kept
+    a = dict(gears)
+    a.update(_load_arguments(args))
+    return a, mats, key
+
+
+def _plain_key(args):
+    """The arguments of one pair but the load's, typed, when they are plain numbers, names,
+    materials and tuples of them (else None)."""
+
+    def typed(v):
+        t = type(v)
+        if t in _PLAIN or t is str or t is Material:
+            return (t, v)
+        if t is tuple or t is list or isinstance(v, tuple):
+            return (t, *(typed(x) for x in v))
+        if t is dict:
+            return (dict, *sorted((k, typed(x)) for k, x in v.items()))
+        if t is np.ndarray and v.ndim == 0:
+            return (v.dtype.str, v.item())
+        raise TypeError  # an array or another object: not kept
+
+    try:
+        # not the load's, nor ``geometry``, which the others determine
+        key = tuple([typed(v) for k, v in args.items() if k not in _NOT_KEYED])
+        hash(key)
+    except TypeError:
+        return None
+    return key
+
+
+def _load_arguments(args):
+    """The load's arguments, checked: torque, speed, life, K_A, K_gamma."""
+    return {
+        "T": _number("torque", args["torque"], _MIN_TORQUE, 1e12, low_open=False),
+        "n": _number("speed", args["speed"], 0.0, 1e7),
+        "life": _number("life", args["life"], 0.0, 1e9),
+        "K_A": _number("application_factor", args["application_factor"], 1.0, 100.0, False),
+        "K_gamma": _number("load_sharing", args["load_sharing"], 1.0, 10.0, low_open=False),
+    }
+
+
+def _all_arguments(args):
+    """Every argument checked, the geometry computed (or kept for one pair)."""
     m1, m2 = (_as_material(v) for v in _pair_of("material", args["material"]))
     a = _checked(args, m1, m2)
     r1, r2 = _pair_of("root", args["root"]) if args["root"] is not None else (None, None)
@@ -479,17 +538,13 @@ def _checked(args, m1, m2):
     spr1, spr2 = _pair_of("protuberance", args["protuberance"])
     roughness, root_roughness = args["roughness"], args["root_roughness"]
     root_roughness = roughness if root_roughness is None else root_roughness
-    a = {
+    a = _load_arguments(args)
+    a |= {
         "b": _number("face_width", args["face_width"], 0.0, 1e5),
-        "T": _number("torque", args["torque"], _MIN_TORQUE, 1e12, low_open=False),
-        "n": _number("speed", args["speed"], 0.0, 1e7),
-        "life": _number("life", args["life"], 0.0, 1e9),
-        "K_A": _number("application_factor", args["application_factor"], 1.0, 100.0, False),
         "Q": _number("quality", args["quality"], 1.0, 12.0, False, False, integer=True),
         "Ra": _number("roughness", roughness, _MIN_RA, 100.0, low_open=False),
         "Ra_root": _number("root_roughness", root_roughness, _MIN_RA, 100.0, low_open=False),
         "nu40": _number("oil_viscosity", args["oil_viscosity"], 0.0, 1e5),
-        "K_gamma": _number("load_sharing", args["load_sharing"], 1.0, 10.0, low_open=False),
         "c1": _number("contacts", c1, 1.0, 1e3, low_open=False),
         "c2": _number("contacts", c2, 1.0, 1e3, low_open=False),
         "idler1": np.asarray(i1, bool),
@@ -514,16 +569,25 @@ def _checked(args, m1, m2):
     return a
 
 
-def _blocks(a, mats, fields, threads):
+def _blocks(a, mats, fields, threads, key=None):
     """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of
     ``_CHUNK`` pairs on ``threads`` threads, as :class:`PairRatings`."""
-    shape = np.broadcast_shapes(*(v.shape for v in a.values()))
+    if key is not None and all(type(a[k]) is np.float64 for k in _LOAD_KEYS):
+        shape = ()  # one pair of plain arguments, its load one number each
+    else:
+        shape = np.broadcast_shapes(*(v.shape for v in a.values()))
     n = math.prod(shape)
     wanted = {*fields, "valid", "reason"}  # the others are None
     if n < 2 * _CHUNK:
         one = n == 1 and shape == ()
-        res = rate_block(a, mats, fields, _GEARS if one else None)
+        res = rate_block(a, mats, fields, _GEARS if one else None, key)
         if one:
+            if len(wanted) == len(_FIELDS):
+                f64 = np.float64
+                values = [res[f] for f in _FIELDS]
+                return PairRatings._make(
+                    [v if type(v) is f64 else np.asarray(v)[()] for v in values]
+                )
             return PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}

@@ -60,6 +60,9 @@ def _life(cycles, code, table):
     outside them (one material group: ``np.interp``; groups per row: the same by branches)."""
     logn, logy = table
     if isinstance(code, int | np.integer):
+        if type(cycles) is float or type(cycles) is np.float64:  # one number: no array
+            return np.float64(math.exp(np.interp(math.log(max(cycles, 1.0)), logn[code],
+                                                 logy[code])))  # fmt: skip
         n = np.log(np.maximum(cycles, 1.0))
         out = np.exp(np.interp(n, logn[code], logy[code]))
         return out[()] if np.ndim(out) == 0 else out

@@ -240,6 +240,14 @@ def test_repeated_ratings_of_one_pair_agree_with_the_array_path():
             r = pair.rating(t, n)
             for f in ("S_H1", "S_H2", "S_F1", "S_F2", "K_v", "Z_v", "Y_NT1"):
                 assert getattr(r.values, f) == pytest.approx(getattr(rows, f)[i], rel=1e-12), f
+    # the load's factors given by symbol are the load's too: kept apart from the gears' part
+    plain = pair.rating(150, 1450)
+    for factors in ({"K_gamma": 1.16}, {"K_A": 1.5}, {}):
+        row = rate_pairs(19, 61, 3, 30, [150.0, 151.0], 1450, helix_angle=12.0, factors=factors)
+        for _ in range(2):  # the second call finds the gears' part and the arguments kept
+            r = pair.rating(150, 1450, **factors)
+            assert r.values.S_H1 == pytest.approx(row.S_H1[0], rel=1e-12), factors
+    assert r.values.S_H1 == pytest.approx(plain.values.S_H1, rel=1e-12)
     # another pair is not served from the kept part
     other = GearPair(Gear(19, 3, face_width=30, profile_shift=0.3), Gear(61, 3, face_width=30))
     assert other.rating(150, 1450).safety_bending[0] != pytest.approx(
