@@ -10,6 +10,7 @@ equals the scalar call); the brute force of rating every row alone.
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import numpy as np
@@ -253,3 +254,60 @@ def test_repeated_ratings_of_one_pair_agree_with_the_array_path():
     assert other.rating(150, 1450).safety_bending[0] != pytest.approx(
         pair.rating(150, 1450).safety_bending[0], rel=1e-6
     )
+
+
+# --- every option at the edges of floats: a finite rating or our own error, no warning ------------
+_OPTIONS = ["life", "application_factor", "quality", "roughness", "root_roughness",
+            "oil_viscosity", "tip_relief", "sigma_Hlim", "sigma_Flim", "face_width",
+            "misalignment", "K_v", "K_Hbeta", "Z_E", "Y_F"]  # fmt: skip
+_EDGES = [5e-324, 1e-300, 1e300, 10**400, -1.0, math.nan, math.inf, 0.0]
+
+
+@pytest.mark.parametrize("name", ["torque", "speed", *_OPTIONS])
+def test_every_option_at_the_edges_of_floats_gives_a_rating_or_our_error(name):
+    pair = _pair()
+    for value in _EDGES:
+        kw = {"torque": 150, "speed": 1450, name: value}
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            try:
+                r = pair.rating(kw.pop("torque"), kw.pop("speed"), **kw)
+            except GearError as exc:
+                assert name in str(exc), (name, value, exc)
+                continue
+        s = [*r.safety_pitting, *r.safety_bending]
+        assert all(math.isfinite(v) and v > 0 for v in s), (name, value, s)
+        r.check()
+        r._repr_html_()
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    z1=st.integers(8, 40),
+    dz=st.integers(1, 90),
+    x1=st.floats(-0.5, 1.0),
+    x2=st.floats(-0.5, 1.0),
+    internal=st.booleans(),
+    pressure_angle=st.sampled_from([14.5, 20.0, 25.0, 30.0]),
+    log_t=st.floats(-9.0, 5.0),
+    speed=st.floats(0.1, 30000.0),
+)
+def test_every_accepted_pair_rates_finite_or_refuses(z1, dz, x1, x2, internal, pressure_angle,
+                                                     log_t, speed):  # fmt: skip
+    try:
+        g1 = Gear(z1, 2, pressure_angle, profile_shift=x1, face_width=20)
+        g2 = Gear(z1 + dz + (10 if internal else 0), 2, pressure_angle, profile_shift=x2,
+                  face_width=20, internal=internal)  # fmt: skip
+        pair = GearPair(g1, g2)
+    except GearError:
+        return
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        try:
+            r = pair.rating(10.0**log_t, speed)
+        except GearError:
+            return
+    s = [*r.safety_pitting, *r.safety_bending]
+    assert all(math.isfinite(v) and v > 0 for v in s), s
+    r.check()  # silent: a Report, whatever the margins
+    assert "<table>" in r._repr_html_()
