@@ -6,9 +6,10 @@ gearing.
 - ``noncircular_law.png``: the elliptical pair's ratio over a turn, and the transmission error
   of its cut teeth against the law (the arc at gear 2's pitch curve, micrometres);
 - ``noncircular_cycloidal.png``: a cycloidal drive of 12 pins (disc of 11 lobes) and the force
-  on each pin at 10 N m, by the equal-rigidity sharing.
+  on each pin at 10 N m, by the equal-rigidity sharing;
+- ``noncircular_pair.gif``: the elliptical pair turning, gear 2 at its varying speed.
 
-Run: ``python docs/make_noncircular_figures.py [pairs] [law] [cycloidal]`` (writes
+Run: ``python docs/make_noncircular_figures.py [pairs] [law] [cycloidal] [animation]`` (writes
 ``docs/images/noncircular_*``; all of them by default).
 """
 
@@ -113,7 +114,17 @@ def cycloidal_figure(out: pathlib.Path = IMAGES) -> pathlib.Path:
     return path
 
 
-FIGURES = {"pairs": pairs_figure, "law": law_figure, "cycloidal": cycloidal_figure}
+def animation(out: pathlib.Path = IMAGES) -> pathlib.Path:
+    p = NonCircularPair.elliptical(40.0, 0.2, module=2.0)
+    return p.animate(out / "noncircular_pair.gif", frames=48, fps=12.0, tolerance=0.05)
+
+
+FIGURES = {
+    "pairs": pairs_figure,
+    "law": law_figure,
+    "cycloidal": cycloidal_figure,
+    "animation": animation,
+}
 
 
 def main(out: pathlib.Path = IMAGES, names=None) -> list[pathlib.Path]:

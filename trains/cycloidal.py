@@ -24,6 +24,9 @@ F_i = T l_i / sum(l_j^2) over the pins whose lever arm l_i about the disc's cent
 from __future__ import annotations
 
 import math
+import os
+import pathlib
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -35,6 +38,7 @@ from gears import GearError, Report
 
 if TYPE_CHECKING:
     import shapely
+    import trimesh
 from gears.arguments import check_angle, check_integer, check_positive, check_real, check_tolerance
 from gears.noncircular.cycloid import disc_profile, path_curvature
 from gears.report import Finding
@@ -191,6 +195,57 @@ class CycloidalDrive:
         )
         pins = shapely.buffer(shapely.points(centres), self.pin_radius, quad_segs=min(quad, 256))
         return disc, shapely.MultiPolygon(list(pins))
+
+    def scene(
+        self, angle: float = 0.0, face_width: float = 8.0, tolerance: float = 0.01
+    ) -> trimesh.Scene:
+        """A ``trimesh.Scene`` of the disc and the pins at the eccentric angle ``angle``
+        (degrees), each extruded over ``face_width`` mm (the pins as one shared cylinder)."""
+        from gears.arguments import check_length
+        from gears.solid.mesh import gear_solid, scene, transform
+
+        a = check_angle("angle", angle)
+        b = check_length("face_width", face_width, self.pin_circle_radius, "the pin circle")
+        disc, pins = self.outlines(a, tolerance)
+        pin = gear_solid(pins.geoms[0], b, tolerance=tolerance)
+        pin.apply_translation([-self.pin_circle_radius, 0.0, 0.0])
+        parts = [("disc", gear_solid(disc, b, tolerance=tolerance), None, (0.2, 0.4, 0.8))]
+        for j in range(self.pins):
+            centre = self.pin_circle_radius * np.array(
+                [math.cos(2 * math.pi * j / self.pins), math.sin(2 * math.pi * j / self.pins)]
+            )
+            parts.append((f"pin{j}", pin, transform(0.0, centre), (0.6, 0.6, 0.6)))  # fmt: skip
+        return scene(parts)
+
+    def animate(
+        self, path: str | os.PathLike[str], frames: int = 60, fps: float = 20.0,
+        tolerance: float = 0.05, progress: Callable | None = None,
+    ) -> pathlib.Path:  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of the disc rolling on the pins over one turn of
+        the eccentric (:func:`gears.solid.animate.write_animation`)."""
+        from shapely import affinity
+
+        from gears.arguments import check_callback, check_fps, check_frames
+        from gears.files import check_output
+        from gears.solid.animate import write_animation
+
+        path = check_output(path, (".gif", ".mp4"))
+        n = check_frames(frames)
+        check_fps(fps)
+        check_callback("progress", progress)
+        disc0, pins = self.outlines(0.0, tolerance)
+        disc0 = affinity.translate(disc0, -self.eccentricity, 0.0)  # back on the origin
+        pin_list = list(pins.geoms)
+
+        def frame(i: int) -> list:
+            a = 360.0 * i / n
+            t = math.radians(a)
+            d = affinity.rotate(disc0, float(self.disc_angle(a)), origin=(0.0, 0.0))
+            d = affinity.translate(d, self.eccentricity * math.cos(t),
+                                   self.eccentricity * math.sin(t))  # fmt: skip
+            return [(d, "tab:blue"), *((p, "tab:gray") for p in pin_list)]
+
+        return write_animation(path, frame, fps=fps, n_frames=n, progress=progress)
 
     # -- loads -----------------------------------------------------------------------------------
     def contact_forces(self, torque: float, angle: float = 0.0) -> np.ndarray:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 import shapely
@@ -28,7 +29,7 @@ from shapely import affinity
 from gears.arguments import check_choice, check_integer, check_point, check_real
 from gears.errors import GearError
 
-__all__ = ["MAX_TE_WORK", "conjugate", "normal_miss", "transmission_error"]
+__all__ = ["MAX_TE_WORK", "Conjugate", "conjugate", "normal_miss", "transmission_error"]
 
 #: The most vertex-edge tests one transmission-error call makes (angles x vertices x edges in
 #: the mesh zone), about 10 s on one core.
@@ -214,6 +215,17 @@ def transmission_error(
     return out
 
 
+class Conjugate(NamedTuple):
+    """What :func:`conjugate` finds: the conjugate points (n, 2) in gear 2's frame, the input
+    angle of each contact (degrees), the meshing theorem's residual there (mm), and the index of
+    each in the given profile."""
+
+    points: np.ndarray
+    angles: np.ndarray
+    miss: np.ndarray
+    index: np.ndarray
+
+
 def _array(name: str, value) -> np.ndarray:
     """``value`` as a float array, or a GearError naming it."""
     try:
@@ -224,9 +236,13 @@ def _array(name: str, value) -> np.ndarray:
 
 def normal_miss(points, normals, pole):
     """The distance (mm) by which the normal line through each contact point misses the pole
-    (arrays (..., 2), broadcast): zero where the meshing theorem (Willis, Ozols 19-2) holds."""
-    x, n, p = (np.asarray(v, dtype=float) for v in (points, normals, pole))
-    unit = n / np.hypot(n[..., 0], n[..., 1])[..., None]
+    (arrays (..., 2), broadcast): zero where the meshing theorem (Willis, Ozols 19-2) holds.
+    A zero normal is refused."""
+    x, n, p = (_array("points", points), _array("normals", normals), _array("pole", pole))
+    length = np.hypot(n[..., 0], n[..., 1])
+    if not np.all(length > 0) or not (np.all(np.isfinite(x)) and np.all(np.isfinite(p))):
+        raise GearError("normal_miss needs finite points and pole and non-zero normals")
+    unit = n / length[..., None]
     d = p - x
     return np.abs(unit[..., 0] * d[..., 1] - unit[..., 1] * d[..., 0])
 
@@ -251,7 +267,7 @@ def _output_law(output) -> Callable:
 def conjugate(
     profile: ArrayLike, center_distance: float, output: float | Callable, *, kind: str = "external",
     window: tuple[float, float] = (-120.0, 120.0), steps: int = 2400,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
+) -> Conjugate:  # fmt: skip
     """The profile on gear 2 conjugate to ``profile`` on gear 1 (Ozols 19-2: the envelope by
     inversion; contact where the profile's normal passes through the pole).
 
@@ -271,11 +287,12 @@ def conjugate(
 
     Returns
     -------
-    (points2, angles, miss)
-        The conjugate points in gear 2's frame as placed at input angle 0 (NaN rows where a
-        point of the profile never passes the pole within ``window``), the input angle of each
-        contact (degrees), and how far the normal misses the pole there (mm: the meshing
-        theorem's residual, zero but for the root finding).
+    Conjugate
+        ``points``: the conjugate points in gear 2's frame as placed at input angle 0, for the
+        profile's points that pass the pole within ``window`` (``index``: which ones);
+        ``angles``: the input angle of each contact (degrees); ``miss``: how far the normal
+        misses the pole there (mm: the meshing theorem's residual, zero but for the root
+        finding).
     """
     kind = check_choice("kind", kind, ("external", "internal"))
     a = check_real("center_distance", center_distance, 0.0)
@@ -297,6 +314,14 @@ def conjugate(
     law = _output_law(output)
     sense = -1.0 if kind == "external" else 1.0
     normals = np.gradient(pts, axis=0) @ np.array([[0.0, -1.0], [1.0, 0.0]])  # tangent turned
+    if not np.all(np.hypot(normals[:, 0], normals[:, 1]) > 0.0):
+        raise GearError("profile has repeated points: its normal is undefined there")
+    with np.errstate(all="ignore"):  # a law with psi' = 0 puts the pole at infinity: no root
+        return _envelope(pts, normals, a, law, kind, sense, lo, hi, n)
+
+
+def _envelope(pts, normals, a, law, kind, sense, lo, hi, n):
+    """The conjugate's points (:func:`conjugate`, its arguments checked)."""
 
     def pole(phi_deg):
         """The pole's x (on O1O2) at the input angles (Ozols (19.2), the ratio from psi')."""
@@ -336,6 +361,7 @@ def conjugate(
         x0, x1 = np.minimum(x0, x1), np.maximum(x0, x1)
         if np.all(np.abs(x1 - x0) < 1e-11):
             break
+    found &= np.isfinite(xm) & np.isfinite(f0) & np.isfinite(f1)
     phi = np.where(found, xm, np.nan)
     t = np.radians(np.where(found, phi, 0.0))
     c, s = np.cos(t), np.sin(t)
@@ -343,11 +369,12 @@ def conjugate(
     nrm = np.stack([c * normals[:, 0] - s * normals[:, 1], s * normals[:, 0] + c * normals[:, 1]],
                    axis=-1)  # fmt: skip
     p = np.stack([pole(np.where(found, phi, 0.0)), np.zeros(pts.shape[0])], axis=-1)
-    miss = np.where(found, normal_miss(x, nrm, p), np.nan)
+    unit = nrm / np.hypot(nrm[:, 0], nrm[:, 1])[:, None]
+    miss = np.abs(unit[:, 0] * (p - x)[:, 1] - unit[:, 1] * (p - x)[:, 0])
     psi = np.radians(np.asarray(law(np.where(found, phi, 0.0)), dtype=float))
     back = -sense * psi  # gear 2 turned back to its placement at input angle 0
     cb, sb = np.cos(back), np.sin(back)
     dx, dy = x[:, 0] - a, x[:, 1]
     out = np.stack([a + cb * dx - sb * dy, sb * dx + cb * dy], axis=-1)
-    out[~found] = np.nan
-    return out, phi, miss
+    found &= np.all(np.isfinite(out), axis=1) & np.isfinite(miss)
+    return Conjugate(out[found], phi[found], miss[found], np.flatnonzero(found))

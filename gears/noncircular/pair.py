@@ -16,6 +16,8 @@ Examples
 from __future__ import annotations
 
 import math
+import os
+import pathlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -30,6 +32,8 @@ from gears.arguments import (
     check_angle,
     check_callback,
     check_choice,
+    check_fps,
+    check_frames,
     check_integer,
     check_module,
     check_positive,
@@ -471,6 +475,40 @@ class NonCircularPair:
             ("gear2", gear_solid(second, b, tolerance=tol),
              transform(-psi, (self.center_distance, 0.0)), (0.9, 0.5, 0.1)),
         ])  # fmt: skip
+
+    def animate(
+        self, path: str | os.PathLike[str], frames: int = 72, fps: float = 20.0,
+        tolerance: float = 0.05, progress: Callable | None = None,
+    ) -> pathlib.Path:  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of both gears in mesh over one turn of gear 1 at
+        constant input speed: gear 2 turns by the law, at its varying speed
+        (:func:`gears.solid.animate.write_animation`). Checked and its drawing's size estimated
+        before any work (the animation budget)."""
+        from shapely import affinity
+
+        from gears.budget import check_budget
+        from gears.files import check_output
+        from gears.solid.animate import write_animation
+
+        path = check_output(path, (".gif", ".mp4"))
+        n = check_frames(frames)
+        check_fps(fps)
+        tol = check_tolerance(tolerance, module=self.cutter.module)
+        check_callback("progress", progress)
+        one, two = self.outline(1, tol), self.outline(2, tol)
+        size = shapely.get_num_coordinates(one) + shapely.get_num_coordinates(two)
+        check_budget("animation", f"{n} frames of {self.name}", lambda t: n * size * tol / t,
+                     tol, hint="fewer frames")  # fmt: skip
+        a = self.center_distance
+
+        def frame(i: int) -> list:
+            phi = 360.0 * i / n
+            psi = float(self.output_angle(phi))
+            first = affinity.rotate(one, phi, origin=(0.0, 0.0))
+            second = affinity.translate(affinity.rotate(two, -psi, origin=(0.0, 0.0)), a, 0.0)
+            return [(first, "tab:blue"), (second, "tab:orange")]
+
+        return write_animation(path, frame, fps=fps, n_frames=n, progress=progress)
 
     def _placed(self, first, second, phi: float):
         from shapely import affinity

@@ -271,7 +271,7 @@ def test_from_ratio_sweep(c, amp, n, kind, a):
     assert np.all(np.isfinite(p.output_angle(phi)))
 
 
-@SWEEP
+@settings(SWEEP, max_examples=15)
 @given(
     e=st.floats(0, 0.95), n1=st.integers(0, 4), n2=st.integers(0, 4), m=st.floats(0.01, 20),
     samples=st.lists(st.floats(-5, 5), min_size=0, max_size=12),
@@ -285,5 +285,41 @@ def test_lobed_and_samples_sweep(e, n1, n2, m, samples):
     try:
         p = NonCircularPair.from_ratio(samples, 50.0)
         assert np.all(np.isfinite(p.radius2(np.linspace(0, 360, 7))))
+    except GearError:
+        pass
+
+
+@SWEEP
+@given(
+    amp=st.floats(-200, 200), n=st.integers(0, 4), a=st.floats(-10, 1e4),
+    kind=st.sampled_from(["external", "internal"]),
+    samples=st.lists(st.floats(-400, 400), min_size=0, max_size=8),
+)  # fmt: skip
+def test_from_output_sweep(amp, n, a, kind, samples):
+    for psi in (lambda d: d + amp * np.sin(np.radians(d)), samples):
+        try:
+            p = NonCircularPair.from_output(psi, a, lobes=n, kind=kind)
+        except GearError:
+            continue
+        phi = np.linspace(0, 360, 7)
+        assert np.all(np.isfinite(p.output_speed(phi, 1))) and np.all(p.radius2(phi) > 0)
+
+
+@SWEEP
+@given(r=_finite, off=_finite, n2=st.integers(-1, 5), m=st.one_of(st.none(), _finite),
+       land=_finite, samples=st.integers(-2, 100))  # fmt: skip
+def test_eccentric_and_pitch_curve_sweep(r, off, n2, m, land, samples):
+    try:
+        p = NonCircularPair.eccentric(r, off, n2, module=m)
+    except GearError:
+        return
+    try:
+        report = p.check(land)
+        assert all(math.isfinite(f.margin) for f in report.values())
+    except GearError:
+        pass
+    try:
+        c1, c2 = p.pitch_curves(samples)
+        assert np.all(np.isfinite(c1)) and np.all(np.isfinite(c2))
     except GearError:
         pass

@@ -22,15 +22,15 @@ def test_elliptical_pair_then_a_fixed_stage():
     pair = NonCircularPair.elliptical(50.0, e)
     t = Train()
     t.mesh("driven", "output", teeth=(20, 40))
-    c = noncircular_cycle(t, pair, "input", "driven", "input", "output", samples=721)
+    c = noncircular_cycle(t, pair, "input", "driven", "input", "output", samples=241)
     phi = np.radians(c.pair_angle)
     psi = 2 * np.unwrap(np.arctan((1 + e) / (1 - e) * np.tan(phi / 2)) * 2) / 2
     assert np.allclose(c.input_angle, c.pair_angle, atol=1e-9)
-    assert np.allclose(c.output_angle, np.degrees(psi) / 2, atol=1e-6)
+    assert np.allclose(c.output_angle, np.degrees(psi) / 2, atol=1e-5)
     q = (1 - e * e) / (1 - 2 * e * np.cos(phi) + e * e)
     assert np.allclose(c.output_speed, q / 2, rtol=1e-8)
     dq = -2 * e * np.sin(phi) * (1 - e * e) / (1 - 2 * e * np.cos(phi) + e * e) ** 2
-    assert np.allclose(c.output_acceleration, dq / 2, atol=1e-4)
+    assert np.allclose(c.output_acceleration, dq / 2, atol=2e-3)  # 2nd-order differences
     lo, hi = c.speed_range
     assert lo == pytest.approx((1 - e) / (1 + e) / 2, rel=1e-9)
     assert hi == pytest.approx((1 + e) / (1 - e) / 2, rel=1e-6)

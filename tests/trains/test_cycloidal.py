@@ -153,3 +153,43 @@ def test_drive_sweep(n, rp, e, big, dr):
     assert all(math.isfinite(f.margin) for f in r.values())
     assert np.all(np.isfinite(d.contact_forces(10.0, 3.0)))
     assert d.ratio == -(d.pins - 1)
+
+
+def test_scene_and_animation(tmp_path):
+    # the disc and 12 pins, one pin mesh shared; a GIF of 3 frames
+    from PIL import Image
+
+    d = CycloidalDrive(12, 3.0, 1.5, 40.0, equidistant=0.05)
+    s = d.scene(10.0, 8.0, 0.02)
+    assert len(s.geometry) == 2 and len(s.graph.nodes_geometry) == 13
+    assert all(g.is_watertight for g in s.geometry.values())
+    with Image.open(d.animate(tmp_path / "drive.gif", frames=3)) as im:
+        assert im.n_frames == 3
+
+
+@SWEEP
+@given(t=st.lists(st.floats(-100, 100), max_size=5), big=st.floats(1, 100),
+       r=st.floats(0.01, 50), d=st.one_of(st.none(), st.floats(0, 50)),
+       n=st.integers(3, 60), e=st.floats(0.01, 5), rp=st.floats(0.01, 20))  # fmt: skip
+def test_curves_sweep(t, big, r, d, n, e, rp):
+    # the vectorised curves: finite for finite input (a point on a rolling circle, the pin path)
+    for f in (epicycloid, hypocycloid):
+        assert np.all(np.isfinite(f(np.array(t), big, r, d)))
+    assert np.all(np.isfinite(pin_path(np.array(t), n, e, big)))
+    k = path_curvature(np.array(t), n, e, max(big, e * n * 1.01))
+    assert np.all(np.isfinite(k))
+
+
+@SWEEP
+@given(torque=_num, angle=_num, tol=_num)
+def test_loads_and_outline_sweep(torque, angle, tol):
+    d = CycloidalDrive(10, 2.5, 1.2, 30.0)
+    try:
+        f = d.contact_forces(torque, angle)
+        assert np.all(np.isfinite(f)) and f.sum() > 0
+    except GearError:
+        pass
+    try:
+        assert d.disc_outline(tol).is_valid
+    except GearError:
+        pass
