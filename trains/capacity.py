@@ -209,7 +209,7 @@ def _idler(train: Train, flow, member: str, gear) -> bool:
     the member have opposite signs): an idler, a planet between sun and ring."""
     signs = set()
     for r in train.relations:
-        if r.pair is None or member not in (r.a, r.b) or member == FRAME:
+        if r.pair is None or r.gears is None or member not in (r.a, r.b) or member == FRAME:
             continue
         mine = r.gears[0] if member == r.a else r.gears[1]
         if mine != gear:

@@ -171,7 +171,7 @@ def same_gear_findings(relations) -> list[Finding]:
     seen: dict[tuple[str, int, float], tuple[str, Gear]] = {}
     out: list[Finding] = []
     for r in relations:
-        if r.pair is None:
+        if r.pair is None or r.gears is None:  # kinematic, or a worm mesh (no Gear objects)
             continue
         for member, gear in ((r.a, r.gears[0]), (r.b, r.gears[1])):
             key = (member, gear.teeth, gear.module)

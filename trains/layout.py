@@ -41,9 +41,11 @@ class Mesh:
 
 
 def mesh_geometry(r: Relation, modules: Mapping[str, float], pressure_angle: float) -> Mesh | None:
-    """The plane geometry of a mesh relation, or None for a link, coupling or bevel mesh."""
+    """The plane geometry of a mesh relation, or None for a link, coupling, bevel or worm mesh."""
     if r.kind != "mesh" or isinstance(r.pair, BevelPair):
         return None
+    if r.pair is not None and r.gears is None:
+        return None  # a worm mesh: crossed axes, not in the plane
     if r.pair is not None:
         p = r.pair
         first_on_a = not r.gears[0].internal  # the external gear is the pair's g1

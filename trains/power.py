@@ -140,10 +140,12 @@ class PowerFlow:
         return "\n".join(lines)
 
 
-def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> list[float]:
+def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> list:
     """Efficiency of every relation: the user's value where given (a mapping entry, or the
     scalar for every mesh and link), else with ``friction`` the Ozols (14.25) estimate from a
-    mesh's :class:`gears.GearPair`, else 1 (lossless)."""
+    mesh's :class:`gears.GearPair`, or for a :class:`gears.WormPair` the pair ``(worm driving,
+    wheel driving)`` of Ozols (14.15), (14.18) (the second at or below zero when it locks), else
+    1 (lossless)."""
     rel = train.relations
     if friction is not None:
         try:
@@ -154,7 +156,7 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
     if friction is not None:
         for r in rel:
             if r.pair is not None:
-                try:
+                try:  # a worm pair gives (worm driving, wheel driving)
                     geometric[r.name] = r.pair.mesh_efficiency(friction)
                 except GearError as exc:  # e.g. a tip inside its base circle: no contact
                     raise TrainError(
@@ -181,8 +183,11 @@ def _efficiencies(train: Train, mesh_efficiency: Any, friction: Any = None) -> l
         if mesh_efficiency is None:
             mesh_efficiency = 1.0
         etas = [1.0 if r.kind == "couple" else geometric.get(r.name, mesh_efficiency) for r in rel]
-    out = []
+    out: list = []
     for r, e in zip(rel, etas, strict=True):
+        if isinstance(e, tuple):  # a worm mesh's two directions, from its geometry
+            out.append(tuple(float(v) for v in e))
+            continue
         if isinstance(e, bool) or not isinstance(e, numbers.Real):
             raise TrainError(f"mesh_efficiency = {e!r} for {r.name!r}; valid is a number in (0, 1]")
         e = float(e)
@@ -345,7 +350,7 @@ def _operating_flow(
                     "rpm; valid is a number in (0, 1]"
                 )
             new[j] = float(e)
-        if max(abs(a - b) for a, b in zip(new, etas, strict=True)) <= 1e-12:
+        if max(abs(np.subtract(a, b)).max() for a, b in zip(new, etas, strict=True)) <= 1e-12:
             break
         etas = new
     return flow
@@ -410,13 +415,21 @@ class _Balance:
             else:
                 self.rel_u.append((w[r.a] - w[r.carrier], w[r.b] - w[r.carrier]))
 
+    def eta(self, j: int, driver: str | None) -> float:
+        """The efficiency of relation ``j`` with ``driver`` driving (a worm mesh has one for
+        each end)."""
+        e = self.etas[j]
+        if isinstance(e, tuple):
+            return e[1] if driver == self.rels[j].b else e[0]
+        return e
+
     def lever(self, j: int, driver: str | None) -> dict[str, float]:
         r = self.rels[j]
         ka, kb = float(r.k_a), float(r.k_b)
         if driver == r.a:
-            kb *= self.etas[j]
+            kb *= self.eta(j, driver)
         elif driver == r.b:
-            ka *= self.etas[j]
+            ka *= self.eta(j, driver)
         if r.kind == "couple":
             return {r.a: ka, r.b: kb}
         out = {r.a: ka, r.b: kb}
@@ -443,7 +456,12 @@ class _Balance:
             )
         return x, levers
 
-    def drivers_of(self, x: np.ndarray, levers: list[dict[str, float]]) -> list[str | None]:
+    def drivers_of(
+        self, x: np.ndarray, levers: list[dict[str, float]], previous: list | None = None
+    ) -> list[str | None]:
+        """The end of every relation that supplies power in its relative motion. Where both
+        ends supply it (a self-locking mesh driven backwards: a worm held by its wheel must be
+        pushed round, and all the power is lost in the mesh), the end already driving stays."""
         out: list[str | None] = []
         scale = abs(self.tq) * max(1.0, max(abs(v) for v in self.w.values()))
         for j, r in enumerate(self.rels):
@@ -454,6 +472,10 @@ class _Balance:
             pa = -x[j] * levers[j][r.a] * ua  # relative power into the relation at end a
             pb = -x[j] * levers[j][r.b] * ub
             tol = 1e-13 * scale
+            before = previous[j] if previous is not None else None
+            if pa > tol and pb > tol and before in (r.a, r.b):
+                out.append(before)
+                continue
             out.append(r.a if pa > tol else r.b if pb > tol else None)
         return out
 
@@ -466,7 +488,7 @@ class _Balance:
         seen = []
         iteration = 1
         for iteration in range(1, 4 * nr + 8):  # noqa: B007 - reported below
-            new = self.drivers_of(x, levers)
+            new = self.drivers_of(x, levers, drivers)
             if new == drivers:
                 break
             if new in seen:
@@ -484,7 +506,7 @@ class _Balance:
     def flow(self, x: np.ndarray, levers: list[dict[str, float]], drivers: list[str | None],
              iteration: int) -> PowerFlow:  # fmt: skip
         """The :class:`PowerFlow` of the settled balance ``x``."""
-        inputs, output, w, etas, tq = self.inputs, self.output, self.w, self.etas, self.tq
+        inputs, output, w, tq = self.inputs, self.output, self.w, self.tq
         members, rels, reacting, rel_u = self.members, self.rels, self.reacting, self.rel_u
         nr = self.nr
         torques = {m: 0.0 for m in members}
@@ -510,10 +532,10 @@ class _Balance:
             else:
                 u = rel_u[j][0] if d == r.a else rel_u[j][1]
                 rolling = float(-x[j] * lev[d] * u)
-                loss = (1.0 - etas[j]) * rolling
+                loss = (1.0 - self.eta(j, d)) * rolling
             on = {m: float(k * x[j]) + 0.0 for m, k in lev.items()}  # the relation's torque on m
             relations[r.name] = RelationPower(
-                r.name, d, rolling, float(absolute), loss, etas[j], on
+                r.name, d, rolling, float(absolute), loss, self.eta(j, d), on
             )
         eff = p_out / p_in
         biggest = max((r.power for r in relations.values()), default=0.0)

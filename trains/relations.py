@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from gears import BevelPair, Gear, GearPair
+from gears import BevelPair, Gear, GearPair, WormPair
 from trains.errors import TrainError
 
 FRAME = "frame"
@@ -83,14 +83,14 @@ class Relation:
     teeth: tuple[int, int] | None = None
     internal: bool = False
     gears: tuple[Gear, Gear] | None = field(default=None, compare=False, repr=False)
-    pair: GearPair | BevelPair | None = field(default=None, compare=False, repr=False)
+    pair: GearPair | BevelPair | WormPair | None = field(default=None, compare=False, repr=False)
     opposed: bool = False
 
     def gear_of(self, member: str) -> tuple[Gear, float] | None:
         """The gear on ``member`` in this mesh and its tip diameter as mounted (with the pair's
         tip shortening), or None for a kinematic-only relation."""
-        if self.pair is None or member not in (self.a, self.b):
-            return None
+        if self.pair is None or self.gears is None or member not in (self.a, self.b):
+            return None  # kinematic, or a worm mesh (no Gear objects)
         on_a = member == self.a
         gear = self.gears[0] if on_a else self.gears[1]
         d1, d2 = self.pair.tip_diameters

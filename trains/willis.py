@@ -51,7 +51,7 @@ from typing import Any
 
 import numpy as np
 
-from gears import BevelPair, Finding, Gear, GearError, GearPair, Report
+from gears import BevelPair, Finding, Gear, GearError, GearPair, Report, WormPair
 from trains.conditions import (
     coaxiality_finding,
     planet_findings,
@@ -152,7 +152,7 @@ class Train:
         internal: bool | None = None,
         name: str | None = None,
         gears: tuple[Gear, Gear] | None = None,
-        pair: GearPair | BevelPair | None = None,
+        pair: GearPair | BevelPair | WormPair | None = None,
         opposed: bool = False,
     ) -> None:
         """Add one mesh: ``(w_a - w_c)/(w_b - w_c) = -z_b/z_a`` (``+z_b/z_a`` if internal).
@@ -185,6 +185,11 @@ class Train:
             tip-shortening choice). A :class:`gears.BevelPair` makes a bevel mesh: with both
             speeds counted about the axes pointing away from the common apex it is an external
             mesh (``z_a w_a + z_b w_b = 0`` relative to the carrier; docs/bevel.md).
+            A :class:`gears.WormPair` makes a worm mesh: the worm on ``a``, the wheel on ``b``,
+            ``teeth = (z_1, z_2)`` (starts, teeth) and the sign of an external mesh (a worm pair's
+            sense of rotation is a convention of its axes); :func:`trains.power_flow` with
+            ``friction=`` then charges it the efficiency of the driving member, the worm's or the
+            wheel's (Ozols (14.15), (14.18)), and a self-locking worm holds its load.
         opposed : bool
             Bevel meshes only: True when the speeds of ``a`` and ``b`` are counted about axes of
             opposite sense relative to the apex (both side gears of a differential about the one
@@ -224,6 +229,16 @@ class Train:
                 f"mesh {a}-{b}: opposed=True applies to bevel meshes (pair=BevelPair(...)); a "
                 "kinematic bevel relation is Train.link(..., ratio=...)"
             )
+        if isinstance(pair, WormPair):
+            zg = (pair.starts, pair.wheel_teeth)
+            if teeth is not None and (not isinstance(teeth, tuple | list) or tuple(teeth) != zg):
+                raise TrainError(
+                    f"mesh {a}-{b}: teeth = {teeth!r} contradicts the worm pair's starts and "
+                    f"teeth {zg}; give one of them"
+                )
+            if internal:
+                raise TrainError(f"mesh {a}-{b}: internal = {internal!r}; a worm pair is external")
+            teeth, internal = zg, False
         if real is not None:
             zg = (real[0].teeth, real[1].teeth)
             if teeth is not None:
@@ -262,10 +277,15 @@ class Train:
             if gears is not None:
                 raise TrainError(f"{where}: give gears=(g_a, g_b) or pair=, not both")
             return (pair.g1, pair.g2), pair
+        if isinstance(pair, WormPair):
+            if gears is not None:
+                raise TrainError(f"{where}: give gears=(g_a, g_b) or pair=, not both")
+            return None, pair  # a worm and its wheel: no Gear objects
         if pair is not None:
             if not isinstance(pair, GearPair):
                 raise TrainError(
-                    f"{where}: pair must be a gears.GearPair or gears.BevelPair, got {pair!r}"
+                    f"{where}: pair must be a gears.GearPair, gears.BevelPair or gears.WormPair, "
+                    f"got {pair!r}"
                 )
             if pair.is_rack:
                 raise TrainError(

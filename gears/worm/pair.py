@@ -332,6 +332,12 @@ class WormPair:
         driving = check_choice("driving", driving, DRIVERS)
         return float(worm_efficiency(self.lead_angle, self.friction_angle(friction), driving))
 
+    def mesh_efficiency(self, friction: float) -> tuple[float, float]:
+        """``(worm driving, wheel driving)`` efficiencies at the friction coefficient
+        ``friction``: what :func:`trains.power_flow` charges a worm mesh of a train in each
+        direction (the second at or below zero for a self-locking pair)."""
+        return self.efficiency(friction, "worm"), self.efficiency(friction, "wheel")
+
     def self_locking(self, friction: float) -> bool:
         """True when the wheel cannot drive the worm (``gamma <= phi'``)."""
         return self.efficiency(friction, "wheel") <= 0.0

@@ -1,0 +1,50 @@
+"""Worm hoist that holds its load
+===============================
+
+A hoist drum driven by an electric motor through a single-start worm pair and a spur stage
+(the arrangement of Ozols' hoist, Ex. 13-1): lifting, its efficiency is that of the worm with
+the worm driving (Ozols (14.15)) times the spur stage's (14.10); lowering, the load tries to
+drive the worm through its wheel, and the worm's lead angle below the friction angle makes it
+self-locking (14.18): the hoist holds its load without a brake.
+
+Design task: pick the worm (z1 1, q 16, m_x 4) and the wheel (z2 40), check the pair, and read
+the efficiency both ways from the train's power flow; then compare a two-start worm of q 10,
+which lifts better but lets the load run back.
+"""
+
+import math
+
+from gears import Gear, WormPair
+from trains import Train, power_flow
+
+MU = 0.06  # friction coefficient of bronze on hardened steel, well lubricated
+SPUR = {"pinion-drum": 0.98}  # the spur stage's efficiency (Ozols (14.25) gives about as much)
+
+
+def hoist(worm: WormPair) -> Train:
+    t = Train()
+    t.mesh("worm", "wheel", pair=worm)  # the motor turns the worm
+    t.couple("wheel", "pinion")  # the wheel and the spur pinion share a shaft
+    t.mesh("pinion", "drum", gears=(Gear(17, 3), Gear(68, 3)))
+    return t
+
+
+for worm in (
+    WormPair(1, 40, 4.0, diameter_quotient=16),
+    WormPair(2, 40, 4.0, diameter_quotient=10),
+):
+    t = hoist(worm)
+    phi = worm.friction_angle(MU)
+    head = f"worm z1 {worm.starts}, q {worm.diameter_quotient:g}"
+    print(f"{head}: lead angle {worm.lead_angle:.3f} deg, friction angle {phi:.3f} deg")
+    print(f"  ratio motor/drum {abs(float(t.ratio('worm', 'drum'))):g}, checks "
+          f"{'pass' if worm.check().ok else worm.check().failed()}")  # fmt: skip
+    up = power_flow(t, "worm", "drum", friction=MU, mesh_efficiency=SPUR)
+    down = power_flow(t, "drum", "worm", friction=MU, mesh_efficiency=SPUR)
+    print(f"  lifting: efficiency {up.efficiency:.4f}")
+    verdict = "self-locking: it holds its load" if down.self_locking else "it runs back"
+    print(f"  lowering (the load drives): efficiency {down.efficiency:.4f}, {verdict}")
+    # the power flow agrees with Ozols (14.15) and (14.10) written out
+    g, phi = math.radians(worm.lead_angle), math.radians(worm.friction_angle(MU))
+    assert abs(up.efficiency - math.tan(g) / math.tan(g + phi) * 0.98) < 1e-9
+    assert down.self_locking == (worm.lead_angle <= worm.friction_angle(MU))
