@@ -14,7 +14,7 @@ import os
 import pathlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -42,7 +42,7 @@ from gears.errors import GearError
 from gears.files import check_output
 from gears.forces import PairForces, pair_forces
 from gears.gear import Gear
-from gears.geometry import check_real
+from gears.geometry import check_real, transverse_pressure_angle
 from gears.interference import interference_findings
 from gears.involute import inv
 from gears.mating import PathOfContact, Rack
@@ -74,6 +74,45 @@ __all__ = ["GearPair"]
 def _same(name: str, a: float, b: float) -> None:
     if not math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-12):
         raise GearError(f"the gears of a pair need equal {name}; got {a:g} and {b:g}")
+
+
+@lru_cache(maxsize=256)
+def _reachable(z1, z2, module, pressure_angle, helix_angle, internal, tip_shortening, whole):
+    """:meth:`GearPair.center_distance_range` of the pair's data (not its shifts: the range
+    does not depend on them), cached: a search over centre distances asks it once per
+    candidate."""
+    from scipy.optimize import brentq  # heavy: imported where used
+
+    s = -1.0 if internal else 1.0
+    zsum = z2 + s * z1
+    # alpha_t as Gear.transverse_pressure_angle gives it (degrees, then back to radians)
+    at = math.radians(math.degrees(transverse_pressure_angle(pressure_angle, helix_angle)))
+    a_d = zsum * (module / math.cos(math.radians(helix_angle))) / 2
+    low = a_d * math.cos(at)
+    if internal or not tip_shortening:
+        return low, math.inf
+
+    def left(total: float) -> float:  # tooth left after shortening, module units
+        k = pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).tip_alteration
+        return float(k) + whole
+
+    lowest = -zsum * float(inv(at))
+    lowest /= 2 * math.tan(math.radians(pressure_angle))
+    lowest += 1e-9 * max(1.0, abs(lowest))  # just inside: inv alpha_wt >= 0 despite rounding
+    # the tooth left is whole at x1 + x2 = 0 and shrinks on both sides (k = y - sum <= 0)
+    top = max(1.0, zsum / 4)
+    while left(top) > 0 and top < 250:
+        top *= 2
+
+    def distance(total: float) -> float:
+        return float(
+            pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).center_distance
+        )
+
+    high = distance(brentq(left, 0.0, top, xtol=1e-12)) if left(top) <= 0 else math.inf
+    if left(lowest) <= 0:
+        low = distance(brentq(left, lowest, 0.0, xtol=1e-12))
+    return low, high
 
 
 @dataclass(frozen=True, init=False)
@@ -267,41 +306,11 @@ class GearPair:
         >>> round(low, 4), round(high, 4)
         (50.7434, 66.5654)
         """
-        from scipy.optimize import brentq  # heavy: imported where used
-
-        s = -1.0 if g2.internal else 1.0
-        zsum = g2.teeth + s * g1.teeth
-        a_d = zsum * g1.transverse_module / 2
-        low = a_d * math.cos(math.radians(g1.transverse_pressure_angle))
-        if g2.internal or not tip_shortening:
-            return low, math.inf
         whole = min(g.rack.addendum + g.rack.dedendum for g in (g1, g2))
-
-        def left(total: float) -> float:  # tooth left after shortening, module units
-            k = pair_geometry(
-                g1.teeth, g2.teeth, g1.module, total, 0.0, g1.pressure_angle, g1.helix_angle
-            ).tip_alteration
-            return float(k) + whole
-
-        lowest = -zsum * float(inv(math.radians(g1.transverse_pressure_angle)))
-        lowest /= 2 * math.tan(math.radians(g1.pressure_angle))
-        lowest += 1e-9 * max(1.0, abs(lowest))  # just inside: inv alpha_wt >= 0 despite rounding
-        # the tooth left is whole at x1 + x2 = 0 and shrinks on both sides (k = y - sum <= 0)
-        top = max(1.0, zsum / 4)
-        while left(top) > 0 and top < 250:
-            top *= 2
-
-        def distance(total: float) -> float:
-            return float(
-                pair_geometry(
-                    g1.teeth, g2.teeth, g1.module, total, 0.0, g1.pressure_angle, g1.helix_angle
-                ).center_distance
-            )
-
-        high = distance(brentq(left, 0.0, top, xtol=1e-12)) if left(top) <= 0 else math.inf
-        if left(lowest) <= 0:
-            low = distance(brentq(left, lowest, 0.0, xtol=1e-12))
-        return low, high
+        return _reachable(
+            g1.teeth, g2.teeth, g1.module, g1.pressure_angle, g1.helix_angle, g2.internal,
+            bool(tip_shortening), whole,
+        )  # fmt: skip
 
     # --- basic quantities ----------------------------------------------------------------------
     @property

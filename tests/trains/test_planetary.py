@@ -8,7 +8,7 @@ from math import gcd
 import numpy as np
 import pytest
 
-from gears import Gear, GearPair
+from gears import Gear, GearError, GearPair
 from trains import Planetary, TrainError
 from trains.planetary.schemes import assembly_ticks, phasing_class, textbook_assembly
 
@@ -385,3 +385,28 @@ def test_ten_million_planets_are_refused_at_once():
     with pytest.raises(TrainError, match=r"module = 1\.000e\+400"):
         Planetary(20, 30, 80, n_planets=3, module=10**400)
     assert time.perf_counter() - t0 < 1.0  # s
+
+
+def test_coaxial_solves_the_split_for_the_whole_grid_as_one_pair_would():
+    # issue 26: Planetary.coaxial(96, 5, 103, 1, 0.1) took 11-25 s, one equal-sliding solve and
+    # one reachable-range search per candidate centre distance. The grid is now solved at once;
+    # each sun shift must be the one GearPair.at_center_distance finds alone (the scalar route)
+    import numpy as np
+
+    from trains.planetary.stage import _equal_sliding_suns
+
+    sun, planet = Gear(96, 0.1), Gear(5, 0.1)
+    grid = np.array([4.9, 4.96, 5.0, 5.04, 5.1, 7.0])  # mm; 7.0 is beyond the reachable range
+    x = _equal_sliding_suns(sun, planet, grid)
+    for a, xs in zip(grid, x, strict=True):
+        try:
+            alone = GearPair.at_center_distance(sun, planet, float(a)).g1.profile_shift
+        except GearError:
+            assert xs is None or not math.isfinite(xs)
+            continue
+        assert xs == pytest.approx(alone, abs=1e-12)
+    p = Planetary.coaxial(96, 5, 103, 1, 0.1, split="equal_sliding")
+    pairs = p._pairs
+    assert pairs["sun-planet"].center_distance == pytest.approx(
+        pairs["planet-ring"].center_distance, abs=1e-9
+    )

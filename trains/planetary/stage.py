@@ -26,7 +26,9 @@ import numpy as np
 
 from gears import Gear, GearPair
 from gears.arguments import check_angle, check_integer, check_module, check_real
+from gears.checks import equal_sliding_split
 from gears.errors import GearError
+from gears.meshing import center_distance_shift_sum
 from gears.report import Report
 from trains.capacity import load_sharing
 from trains.capacity import rating as rate_train
@@ -308,9 +310,13 @@ class Planetary:
         a1 = base._pairs["sun-planet"].reference_center_distance
         a2 = base._pairs["planet-ring"].reference_center_distance
 
-        def build(a: float) -> Planetary:
+        def build(a: float, x_sun: float | None = None) -> Planetary:
             try:
-                sp = GearPair.at_center_distance(sun_g, p1, a, split=split)
+                if x_sun is None:
+                    sp = GearPair.at_center_distance(sun_g, p1, a, split=split)
+                else:  # the split's sun shift, solved for the whole grid at once (below)
+                    sun_x = sun_g.with_(profile_shift=x_sun)
+                    sp = GearPair.at_center_distance(sun_x, p1, a, split="keep")
                 p2x = sp.g2 if scheme == "simple" else p2
                 pr = GearPair.at_center_distance(p2x, ring_g, a, split="keep")
             except GearError as exc:
@@ -327,10 +333,13 @@ class Planetary:
         mean = (a1 + a2) / 2
         steps = np.arange(-150, 151) * 0.01 * m
         grid = mean + steps[np.argsort(np.abs(steps), kind="stable")]
+        x_suns: list = [None] * len(grid)
+        if split == "equal_sliding":  # one vectorised solve, not one per centre distance
+            x_suns = _equal_sliding_suns(sun_g, p1, grid)
         best, best_key = None, None
-        for a in grid:
+        for a, x_sun in zip(grid, x_suns, strict=True):
             try:
-                stage = build(float(a))
+                stage = build(float(a), x_sun)
                 report = stage.check()
             except (TrainError, GearError):
                 continue
@@ -783,6 +792,33 @@ class Planetary:
         lines.append("planet angles (deg): " + ", ".join(f"{a:.3f}" for a in pl.planet_angles))
         lines.append(str(self.check()))
         return "\n".join(lines)
+
+
+def _equal_sliding_suns(sun: Gear, planet: Gear, grid: np.ndarray) -> list:
+    """The sun's shift of the ``"equal_sliding"`` split of the sun-planet pair at each centre
+    distance of ``grid`` (what :meth:`gears.GearPair.at_center_distance` solves for one),
+    solved for the whole grid at once; None where no shift reaches the distance (that centre
+    distance is then refused one by one, as before)."""
+    try:
+        low, high = GearPair.center_distance_range(sun, planet)
+    except GearError:
+        return [None] * len(grid)
+    inside = (grid >= low * (1 - 1e-9)) & (grid <= high * (1 + 1e-9))
+    out: list = [None] * len(grid)
+    if not inside.any():
+        return out
+    a = grid[inside]
+    try:
+        totals = center_distance_shift_sum(
+            sun.teeth, planet.teeth, sun.module, a, sun.pressure_angle, sun.helix_angle, False
+        )
+        x = equal_sliding_split(sun.teeth, planet.teeth, sun.module, totals, sun.pressure_angle,
+                                sun.helix_angle, False, sun.rack.addendum, True)  # fmt: skip
+    except GearError:
+        return out
+    for i, v in zip(np.flatnonzero(inside), np.atleast_1d(x), strict=True):
+        out[i] = float(v)
+    return out
 
 
 def _count(n_planets: Any) -> int:
