@@ -410,3 +410,19 @@ def test_coaxial_solves_the_split_for_the_whole_grid_as_one_pair_would():
     assert pairs["sun-planet"].center_distance == pytest.approx(
         pairs["planet-ring"].center_distance, abs=1e-9
     )
+
+
+def test_a_failing_stage_is_drawn_only_when_asked(tmp_path):
+    # issue 26 (as for the differential): 5 planets of 30 teeth around a 20-tooth sun collide
+    # (spacing 2 a sin 36 deg = 58.8 mm < their tip diameter 64 mm, a = 50 mm); the scene drew
+    # them without a word. Measured: the planets' outlines overlap (shapely area)
+    stage = Planetary(20, 30, 80, n_planets=5)
+    assert stage.check().failed() == ["neighbour"]
+    with pytest.raises(TrainError, match=r"fails its checks \(neighbour.*check=False"):
+        stage.scene(tolerance=0.1)
+    with pytest.raises(TrainError, match=r"neighbour.*check=False"):
+        stage.animate(tmp_path / "s.gif", frames=2, tolerance=0.1)
+    o = stage.outlines(tolerance=0.05)
+    assert o["planet1"].intersection(o["planet2"]).area > 1.0  # mm^2
+    sc = stage.scene(tolerance=0.1, check=False)
+    assert len(sc.graph.nodes_geometry) == 7

@@ -80,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
         from gears.solid.export import save
 
         stage = _synthesized()[0].stage
-        scene = stage.scene(face_width=10 * stage.module, tolerance=0.05)
+        scene = stage.scene(face_width=10 * stage.module, tolerance=0.05, check=False)
         save(args.scene, scene)
         triangles = sum(len(g.faces) for g in scene.geometry.values())
         print(f"\nwrote {args.scene}: {len(scene.graph.nodes_geometry)} gears, {triangles} "

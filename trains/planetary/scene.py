@@ -110,9 +110,27 @@ def outlines(stage, angle: float = 0.0, tolerance: float = 0.01, fixed: str = "r
     return {name: p for name, _, p in placed_outlines(stage, angle, tolerance, fixed, {})}
 
 
+def refuse_failing(stage, check: bool, what: str) -> None:
+    """Refuse to draw a stage that fails its checks (planets that collide, teeth that
+    interfere) unless ``check`` is False: a drawing would show what cannot be built."""
+    try:
+        check = check_flag("check", check)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None
+    if check:
+        failed = stage.check().failed()
+        if failed:
+            raise TrainError(
+                f"{stage!r} fails its checks ({', '.join(failed)}: see check()), so its {what} "
+                "would show what cannot be built; fix the design, or pass check=False to draw "
+                "it anyway"
+            )
+
+
 def scene(stage, angle: float = 0.0, face_width: float | None = None,
           tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False,
-          progress: Callable[[int, int], object] | None = None) -> trimesh.Scene:  # fmt: skip
+          progress: Callable[[int, int], object] | None = None,
+          check: bool = True) -> trimesh.Scene:  # fmt: skip
     """The stage as a ``trimesh.Scene`` (:meth:`Planetary.scene`)."""
     try:
         tol = check_tolerance(tolerance, module=stage.module)
@@ -124,6 +142,7 @@ def scene(stage, angle: float = 0.0, face_width: float | None = None,
         b = check_positive("face_width", b)
     except GearError as exc:
         raise TrainError(str(exc)) from None
+    refuse_failing(stage, check, "scene")
     layout = gear_layout(stage, angle, fixed)
     distinct = {key: gear for _, key, gear, *_ in reversed(layout)}
     twists = {}
@@ -157,7 +176,8 @@ def scene(stage, angle: float = 0.0, face_width: float | None = None,
 
 def animate(stage, path: str | os.PathLike[str], frames: int = 48, fps: float = 20.0,
             turn: float | None = None, tolerance: float = 0.02, fixed: str = "ring",
-            progress: Callable[[int, int], object] | None = None) -> pathlib.Path:  # fmt: skip
+            progress: Callable[[int, int], object] | None = None,
+            check: bool = True) -> pathlib.Path:  # fmt: skip
     """Write the stage's animation (:meth:`Planetary.animate`)."""
     try:
         path = check_output(path, FORMATS)
@@ -169,6 +189,7 @@ def animate(stage, path: str | os.PathLike[str], frames: int = 48, fps: float = 
             turn = check_angle("turn", turn)
     except GearError as exc:
         raise TrainError(str(exc)) from None
+    refuse_failing(stage, check, "animation")
     if turn is None:
         turn = mesh_cycle(stage, fixed)
     layout = gear_layout(stage, 0.0, fixed)

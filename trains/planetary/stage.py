@@ -711,7 +711,8 @@ class Planetary:
 
     def scene(self, angle: float = 0.0, face_width: float | None = None,
               tolerance: float = 0.01, fixed: str = "ring", herringbone: bool = False,
-              progress: Callable[[int, int], object] | None = None) -> trimesh.Scene:  # fmt: skip
+              progress: Callable[[int, int], object] | None = None,
+              check: bool = True) -> trimesh.Scene:  # fmt: skip
         """The stage as a ``trimesh.Scene`` with real teeth, every mesh engaged.
 
         Sun, ring and every planet sit at the real centre distances, turned to their phase from
@@ -725,6 +726,8 @@ class Planetary:
         ``progress(done, total)`` is called after each distinct solid. Every argument is
         checked and the scene's size (its distinct solids) estimated before any work: over the
         mesh budget it is refused with the tolerance that fits (:data:`gears.budget.BUDGETS`).
+        A stage that fails :meth:`check` (planets that collide, teeth that interfere) is
+        refused unless ``check=False``.
 
         Examples
         --------
@@ -732,11 +735,13 @@ class Planetary:
         >>> len(s.geometry), len(s.graph.nodes_geometry)
         (3, 5)
         """
-        return scene.scene(self, angle, face_width, tolerance, fixed, herringbone, progress)
+        return scene.scene(self, angle, face_width, tolerance, fixed, herringbone, progress,
+                           check)  # fmt: skip
 
     def animate(self, path: str | os.PathLike[str], frames: int = 48, fps: float = 20.0,
                 turn: float | None = None, tolerance: float = 0.02, fixed: str = "ring",
-                progress: Callable[[int, int], object] | None = None) -> pathlib.Path:  # fmt: skip
+                progress: Callable[[int, int], object] | None = None,
+                check: bool = True) -> pathlib.Path:  # fmt: skip
         """Write a GIF (or MP4 with ffmpeg) of the stage's outlines in mesh while it turns.
 
         ``turn`` is the carrier rotation covered, degrees (the sun's when the carrier is
@@ -746,9 +751,10 @@ class Planetary:
         :func:`gears.solid.animate.write_animation` (``progress(i, n)`` after each frame). Every
         argument (the file's folder too) is checked and the drawing's size (frames times the
         outline vertices of every gear drawn) estimated before any work: over the animation
-        budget it is refused with the tolerance that fits.
+        budget it is refused with the tolerance that fits. A stage that fails :meth:`check` is
+        refused unless ``check=False`` (:meth:`scene`).
         """
-        return scene.animate(self, path, frames, fps, turn, tolerance, fixed, progress)
+        return scene.animate(self, path, frames, fps, turn, tolerance, fixed, progress, check)
 
     def mesh_cycle(self, fixed: str = "ring") -> float:
         """Carrier rotation (degrees; the sun's when the carrier is fixed) over which every
