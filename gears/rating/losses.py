@@ -159,6 +159,11 @@ def friction_coefficient(load_per_width, sum_velocity, curvature_radius, viscosi
     >>> round(float(friction_coefficient(500.0, 10.0, 10.0, 30.0, 1.0)), 5)
     0.05587
     """
+    checked = (("load_per_width", load_per_width), ("sum_velocity", sum_velocity),
+               ("curvature_radius", curvature_radius), ("viscosity", viscosity),
+               ("roughness", roughness), ("lubricant_factor", lubricant_factor))  # fmt: skip
+    for name, value in checked:
+        _positive(name, value)
     w = np.asarray(load_per_width, float)
     return (
         0.048
@@ -200,6 +205,18 @@ def mesh_losses(torque, speed, z1, u, base_radius, working_pressure_angle, epsil
     return MeshLosses(h_v, mu, 1.0 - loss, power * loss)
 
 
+def _positive(name: str, value) -> None:
+    """A GearError naming ``name`` unless every entry of ``value`` is a finite number > 0."""
+    try:
+        v = np.asarray(value, float)
+    except (TypeError, ValueError):
+        raise GearError(f"{name} = {value!r}; valid is a finite number > 0") from None
+    ok = np.isfinite(v) & (v > 0.0)
+    if not np.all(ok):
+        bad = np.ravel(v[~ok] if v.ndim else v)[:3].tolist()
+        raise GearError(f"{name} = {bad}; valid is a finite number > 0")
+
+
 def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLike,
                 module: ArrayLike, face_width: ArrayLike, x1: ArrayLike = 0.0,
                 x2: ArrayLike = 0.0, pressure_angle: ArrayLike = 20.0,
@@ -223,10 +240,7 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
     """
     for name, value in (("torque", torque), ("speed", speed), ("face_width", face_width),
                         ("roughness", roughness), ("viscosity", viscosity)):  # fmt: skip
-        v = np.asarray(value, float)
-        if not np.all(np.isfinite(v) & (v > 0.0)):
-            bad = v[~(np.isfinite(v) & (v > 0.0))] if v.ndim else v
-            raise GearError(f"{name} = {np.ravel(bad)[:3].tolist()}; valid is a finite number > 0")
+        _positive(name, value)
     x_l = lubricant_factor(lubricant)
     g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal)
     s = np.where(np.asarray(internal, bool), -1.0, 1.0)

@@ -89,3 +89,15 @@ def test_bevel_rating_property(z1, z2, shaft, torque, speed):
     except GearError:
         return
     assert all(math.isfinite(s) and s > 0 for s in (*r.safety_pitting, *r.safety_bending))
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.floats(-1e4, 1e4), st.floats(-1e3, 1e3), st.floats(-1e3, 1e3))
+def test_differential_rating_property(torque, left, right):
+    d = Differential(side=16, pinion=10, module=3, gleason=True)
+    try:
+        r = d.rating(torque=torque, left=left, right=right)
+    except TrainError:
+        return
+    for v in r.values():
+        assert all(math.isfinite(s) and s > 0 for s in (*v.safety_pitting, *v.safety_bending))

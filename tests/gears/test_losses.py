@@ -207,3 +207,20 @@ def test_pair_losses_property(torques, speed, z1, z2):
     except GearError:
         return
     assert np.all(np.isfinite(r.efficiency)) and np.all((r.efficiency > 0) & (r.efficiency <= 1))
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.one_of(st.floats(-10, 1e5), st.just(math.nan)),
+    st.floats(1e-6, 1e3),
+    st.floats(1e-3, 1e4),
+    st.floats(-1.0, 1e4),
+)
+def test_friction_coefficient_property(w, v, rho, eta):
+    # a finite positive mu or our own error naming the value
+    try:
+        mu = float(friction_coefficient(w, v, rho, eta))
+    except GearError as exc:
+        assert "valid is" in str(exc)
+        return
+    assert math.isfinite(mu) and mu > 0

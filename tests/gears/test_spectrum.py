@@ -162,3 +162,38 @@ def test_pair_spectrum_property(bins):
     except GearError:
         return
     assert all(math.isfinite(s) and s > 0 for s in (*spec.safety_pitting, *spec.safety_bending))
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(st.tuples(st.floats(0.2, 5.0), st.floats(1.0, 1e12)), min_size=1, max_size=6),
+    st.sampled_from(["pitting", "bending"]),
+    st.integers(0, 7),
+)
+def test_equivalent_safety_property(bins, mode, code):
+    # stresses relative to a unit strength: S finite and positive, Miner's sum at S times the
+    # stresses at least 1 and just below it under 1 (the definition), for every material group
+    from gears.rating.spectrum import equivalent_safety, miner_damage
+
+    ratio = np.array([b[0] for b in bins])
+    cycles = np.array([b[1] for b in bins])
+    s = float(equivalent_safety(ratio, 1.0, cycles, code, mode))
+    assert math.isfinite(s) and s > 0
+    if 1e-4 * 1.01 < s < 1e4 / 1.01:
+        assert float(miner_damage(ratio * s * (1 + 1e-9), 1.0, cycles, code, mode)) >= 1.0 - 1e-9
+        assert float(miner_damage(ratio * s * (1 - 1e-6), 1.0, cycles, code, mode)) < 1.0
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.text(alphabet="0123456789.,; #\nabce-", max_size=60))
+def test_read_spectrum_property(tmp_path_factory, text):
+    from gears.rating.spectrum import read_spectrum
+
+    f = tmp_path_factory.mktemp("s") / "duty.csv"
+    f.write_text(text)
+    try:
+        bins = read_spectrum(f)
+    except GearError as exc:
+        assert "spectrum" in str(exc)
+        return
+    assert bins and all(len(b) == 3 and min(b) > 0 and math.isfinite(sum(b)) for b in bins)
