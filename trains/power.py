@@ -241,8 +241,9 @@ def power_flow(
         :meth:`gears.GearPair.efficiency` (ISO/TR 14179-2: its torque per planet copy, its speed
         relative to its carrier; ``input_torque`` in N m and ``input_speed`` in rpm then), and a
         callable ``(pair, torque, speed) -> efficiency`` does the same with a model of one's own
-        (``lambda p, t, n: p.efficiency(t, n, viscosity=20).efficiency``); the other relations
-        are lossless, or estimated with ``friction``.
+        (``lambda p, t, n: p.efficiency(t, n, viscosity=20).efficiency``); both apply to the
+        meshes of spur and helical gears (:class:`gears.GearPair`), the other relations (bevel
+        and worm meshes among them) are lossless or estimated with ``friction``.
     input_torque : float
         Torque on the (first) input member; the result scales with it.
     input_speed : float or mapping
@@ -316,12 +317,12 @@ def _operating_flow(
     """The power flow with every real mesh's efficiency taken from ``model`` at its own torque
     (per planet copy, on its external gear) and speed relative to its carrier, found by
     fixed-point iteration from the lossless (or ``friction``) flow."""
+    from gears.pair import GearPair  # the gears' own meshes: spur and helical pairs
+
     base = _efficiencies(train, None, friction)
     planets = dict(getattr(train, "_planets", {}))
-    meshes = [
-        (j, r) for j, r in enumerate(train.relations)
-        if r.pair is not None and hasattr(r.pair, "efficiency") and r.gears
-    ]  # fmt: skip
+    meshes = [(j, r) for j, r in enumerate(train.relations)
+              if isinstance(r.pair, GearPair) and r.gears]  # fmt: skip
     etas = list(base)
     flow = None
     for _ in range(OPERATING_STEPS):

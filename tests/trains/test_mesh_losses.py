@@ -94,3 +94,20 @@ def test_planetary_gears_efficiency_property(torque, speed, fixed):
     except TrainError:
         return
     assert math.isfinite(eta) and eta <= 1.0
+
+
+def test_gears_model_leaves_worm_meshes_to_their_own_efficiency():
+    # "gears" rates spur and helical meshes only; a worm mesh keeps its friction estimate
+    from gears import WormPair
+
+    a, b = Gear(19, 3, face_width=30), Gear(61, 3, face_width=30)
+    t = Train()
+    t.mesh("in", "mid", gears=(a, b))
+    t.mesh("mid", "out", pair=WormPair(2, 40, 4, diameter_quotient=10))
+    kw = dict(input_torque=50.0, input_speed=1450.0, friction=0.05)
+    pf = power_flow(t, "in", "out", mesh_efficiency="gears", **kw)
+    plain = power_flow(t, "in", "out", **kw)
+    first = GearPair(a, b).efficiency(50.0, 1450.0).efficiency
+    assert pf.relations["in-mid"].efficiency == pytest.approx(first, rel=1e-9)
+    worm = plain.relations["mid-out"].efficiency
+    assert pf.relations["mid-out"].efficiency == pytest.approx(worm, rel=1e-12)
