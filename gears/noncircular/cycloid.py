@@ -28,6 +28,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
+    "cycloidal_gear_outline",
+    "cycloidal_tooth_flank",
     "disc_profile",
     "epicycloid",
     "hypocycloid",
@@ -108,3 +110,79 @@ def disc_profile(theta, pins, pin_radius, eccentricity, pin_circle_radius):
     # the path runs counter-clockwise: its outward normal is the tangent turned clockwise
     normal = np.stack([d1[..., 1], -d1[..., 0]], axis=-1) / speed[..., None]
     return q - np.asarray(pin_radius, dtype=float)[..., None] * normal
+
+
+def _flank_end(curve, radius: float, target: float, t_max: float) -> float:
+    """The rolling angle at which ``curve(t)`` (starting on the pitch circle) reaches the
+    radius ``target`` (Brent's method)."""
+    from scipy.optimize import brentq  # heavy: imported where used
+
+    def f(t):
+        p = curve(np.array([t]))[0]
+        return float(np.hypot(p[0], p[1]) - target)
+
+    return brentq(f, 0.0, t_max, xtol=1e-14)
+
+
+def cycloidal_tooth_flank(teeth, module, rolling_radius, addendum=1.0, dedendum=1.25,
+                          samples=200):  # fmt: skip
+    """The right flank of a cycloidal (clock) gear tooth centred on +x, from the root to the
+    tip, (samples, 2) points: a hypocycloid of ``rolling_radius`` inside the pitch circle (the
+    dedendum) and an epicycloid of it outside (the addendum), meeting on the pitch circle at
+    half a tooth thickness (p/4) from the tooth's centre line (Joldasbekov section 7). Gears of
+    one rolling circle are conjugate: a tooth's addendum and its mate's dedendum are traced by
+    the same point of the circle."""
+    z, m, rho = float(teeth), float(module), float(rolling_radius)
+    r = z * m / 2.0
+    n = max(int(samples) // 2, 4)
+    t_tip = _flank_end(lambda t: epicycloid(t, r, rho), r, r + addendum * m, np.pi * rho / r)
+    t_root = _flank_end(lambda t: hypocycloid(t, r, rho), r, r - dedendum * m, np.pi * rho / r)
+    up = epicycloid(np.linspace(0.0, t_tip, n), r, rho)
+    down = hypocycloid(np.linspace(t_root, 0.0, n), r, rho) * [1.0, -1.0]
+    flank = np.vstack([down[:-1], up])
+    beta = -np.pi / (2.0 * z)  # the pitch point half a tooth's angle below the centre line
+    c, s = np.cos(beta), np.sin(beta)
+    return flank @ np.array([[c, s], [-s, c]])
+
+
+def cycloidal_gear_outline(teeth, module, rolling_radius, tolerance=0.01, addendum=1.0,
+                           dedendum=1.25):  # fmt: skip
+    """A cycloidal (clock) gear's outline, a shapely Polygon centred on the origin, tooth 0 on
+    +x: :func:`cycloidal_tooth_flank` and its mirror image, tip and root arcs, patterned
+    ``teeth`` times; the flanks sampled densely enough that their chords sag below
+    ``tolerance`` mm (the epicycloid's least radius of curvature on the flank is near the
+    pitch circle, 4 rho (r + rho) / (r + 2 rho) sin(t/2) -> its chord rule is taken at the
+    flank's middle, the cusp itself lies off the flank)."""
+    import shapely  # heavy: imported where used
+
+    from gears.arguments import check_integer, check_module, check_real, check_tolerance
+
+    z, m = check_integer("teeth", teeth, 3, 10_000), check_module(module)
+    r = z * m / 2.0
+    check_real("rolling_radius", rolling_radius, 0.0, r)
+    tolerance = check_tolerance(tolerance, module=m)
+    check_real("addendum", addendum, 0.0, 2.0, low_open=False)
+    check_real("dedendum", dedendum, 0.0, min(2.0, 0.95 * r / m))
+    length = (addendum + dedendum) * m * 1.5
+    n = int(min(max(16, np.ceil(length / np.sqrt(8.0 * tolerance * m))), 20_000))
+    right = cycloidal_tooth_flank(z, m, rolling_radius, addendum, dedendum, 2 * n)
+    left = (right * [1.0, -1.0])[::-1]
+    ra, rf = r + addendum * m, r - dedendum * m
+
+    def arc(radius, a0, a1):
+        k = max(
+            2, int(np.ceil(abs(a1 - a0) / (2.0 * np.arccos(max(-1.0, 1.0 - tolerance / radius)))))
+        )
+        t = np.linspace(a0, a1, k + 1)[1:-1]
+        return radius * np.stack([np.cos(t), np.sin(t)], axis=-1)
+
+    tip = arc(ra, np.arctan2(right[-1, 1], right[-1, 0]), np.arctan2(left[0, 1], left[0, 0]))
+    a_root = np.arctan2(left[-1, 1], left[-1, 0])
+    root = arc(rf, a_root, a_root + 2.0 * np.pi / z - 2.0 * (a_root))
+    tooth = np.vstack([right, tip, left, root])
+    step = 2.0 * np.pi / z
+    rings = []
+    for k in range(z):
+        c, s = np.cos(k * step), np.sin(k * step)
+        rings.append(tooth @ np.array([[c, s], [-s, c]]))
+    return shapely.Polygon(np.vstack(rings))

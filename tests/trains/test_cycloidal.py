@@ -16,8 +16,15 @@ from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 from shapely import affinity
 
-from gears import GearError
-from gears.noncircular.cycloid import epicycloid, hypocycloid, path_curvature, pin_path
+from gears import GearError, transmission_error
+from gears.noncircular.cycloid import (
+    cycloidal_gear_outline,
+    cycloidal_tooth_flank,
+    epicycloid,
+    hypocycloid,
+    path_curvature,
+    pin_path,
+)
 from trains import CycloidalDrive
 
 SWEEP = settings(
@@ -139,6 +146,27 @@ def test_classical_cycloids():
     assert np.allclose(pin_path(0.0, 10, 2.0, 50.0), [48.0, 0.0])
 
 
+def test_cycloidal_gears_are_conjugate():
+    # clock gearing (Joldasbekov section 7): two gears of one rolling circle (radius 5 mm,
+    # module 2, 20 and 40 teeth) at zero backlash turn at a constant ratio: the geometric
+    # transmission error is zero to the outline tolerance (0.01 mm), and the drawn flank lies
+    # within the tolerance of the exact cycloids
+    one = cycloidal_gear_outline(20, 2.0, 5.0, 0.01)
+    two = cycloidal_gear_outline(40, 2.0, 5.0, 0.01)
+    two = affinity.translate(affinity.rotate(two, 180 + 180 / 40, origin=(0, 0)), 60.0, 0.0)
+    assert one.is_valid and two.is_valid and one.intersection(two).area < 1e-4
+    te = transmission_error(one, two, ((0, 0), (60.0, 0)), np.linspace(0, 18, 5), 2.0)
+    assert np.abs(np.radians(te) * 40.0).max() < 0.01
+    exact = cycloidal_tooth_flank(20, 2.0, 5.0, samples=20000)
+    assert shapely.distance(one.exterior, shapely.points(exact)).max() < 0.01
+    # the tooth is p/2 thick on the pitch circle: its flank crosses it at -90/z deg
+    r = np.hypot(*exact.T)
+    k = np.argmin(np.abs(r - 20.0))
+    assert math.degrees(math.atan2(exact[k, 1], exact[k, 0])) == pytest.approx(-4.5, abs=1e-3)
+    with pytest.raises(GearError, match="rolling_radius"):
+        cycloidal_gear_outline(20, 2.0, 25.0)
+
+
 _num = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-3, 50), st.none())
 
 
@@ -193,3 +221,13 @@ def test_loads_and_outline_sweep(torque, angle, tol):
         assert d.disc_outline(tol).is_valid
     except GearError:
         pass
+
+
+@SWEEP
+@given(z=_num, m=_num, rho=_num, tol=st.sampled_from([0.05, 0.0, -1.0, 1e-9]))
+def test_cycloidal_gear_sweep(z, m, rho, tol):
+    try:
+        g = cycloidal_gear_outline(z, m, rho, tol)
+    except GearError:
+        return
+    assert g.is_valid or g.area > 0
