@@ -1,26 +1,26 @@
 """Layer 3, bevel gears' load capacity through their virtual cylindrical gears (after ISO 10300
-method B1).
+method B1; the formulas as math: docs/bevel.md, "Load capacity").
 
 ISO 10300 rates a bevel pair on its virtual cylindrical gears at the mean cone
-(``BevelPair.virtual_pair``: $z_v = z / \\cos\\delta$, $d_v = d_m / \\cos\\delta$, the mean
-module) with the formulas of ISO 6336. :func:`bevel_rating` does this:
+(``BevelPair.virtual_pair``: z_v = z / cos delta, d_v = d_m / cos delta, the mean module) with
+the formulas of ISO 6336. :func:`bevel_rating` does this:
 
-* the tangential force at the mean cone, $F_{mt} = 2000\\,T_1 / d_{m1}$, and the pitch-line speed
-  $v_{mt}$ are the bevel pair's: the virtual pinion carries $T_{v1} = T_1 / \\cos\\delta_1$ at
-  $n_{v1} = n_1 \\cos\\delta_1$;
-* the load cycles are the real gears' ($60\\,n\\,L$ per contact), so $Z_{NT}$ and $Y_{NT}$ are
-  taken at them (:mod:`gears.rating.life`), not at the virtual speeds;
-* the face load factor $K_{H\\beta} = K_{F\\beta} = 1.5\\,K_{H\\beta-be}$ with the mounting
-  factor $K_{H\\beta-be}$ (:data:`MOUNTING_FACTORS`: 1.00 with both members straddle-mounted,
-  1.10 one, 1.25 neither) for a contact pattern checked under load (ISO 10300-1), unless given;
-* the contact stress carries the bevel gear factor $Z_K = 0.85$ (ISO 10300-2, method B1):
-  $\\sigma_H = Z_K\\,\\sigma_{H,v}$, so $S_H = S_{H,v} / Z_K$.
+* the tangential force at the mean cone, F_mt = 2000 T_1 / d_m1, and the pitch-line speed v_mt
+  are the bevel pair's: the virtual pinion carries T_v1 = T_1 / cos delta_1 at
+  n_v1 = n_1 cos delta_1;
+* the load cycles are the real gears' (60 n L per contact), so Z_NT and Y_NT are taken at them
+  (:mod:`gears.rating.life`), not at the virtual speeds;
+* the face load factor K_Hbeta = K_Fbeta = 1.5 K_Hbeta-be with the mounting factor K_Hbeta-be
+  (:data:`MOUNTING_FACTORS`: 1.00 with both members straddle-mounted, 1.10 one, 1.25 neither)
+  for a contact pattern checked under load (ISO 10300-1), unless given;
+* the contact stress carries the bevel gear factor Z_K = 0.85 (ISO 10300-2, method B1):
+  sigma_H = Z_K sigma_H,v, so S_H = S_H,v / Z_K.
 
 What is ISO 6336's and not ISO 10300's here: the virtual gears' zone, contact-ratio and helix
-factors (ISO 10300-2's mid-zone factor $Z_{M-B}$ and load-sharing factor $Z_{LS}$ are not
-computed), K_v by ISO 6336-1 on the virtual pair, and the root stress of ISO 6336-3 on the
-virtual gears (ISO 10300-3's own bending factors are not applied). Straight bevel gears only (the
-only kind geartrain builds); a crown or internal bevel wheel is not rated.
+factors (ISO 10300-2's mid-zone factor Z_M-B and load-sharing factor Z_LS are not computed), K_v
+by ISO 6336-1 on the virtual pair, and the root stress of ISO 6336-3 on the virtual gears (ISO
+10300-3's own bending factors are not applied). Straight bevel gears only (the only kind
+geartrain builds); a crown or internal bevel wheel is not rated.
 """
 
 from __future__ import annotations

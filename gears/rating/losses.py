@@ -1,33 +1,30 @@
 """Layer 3, the load-dependent power loss of a mesh and its efficiency (ISO/TR 14179-2).
 
-The power lost by sliding in the mesh is $P_{VZP} = P\\,\\mu_{mz} H_V$: the input power, the
-mean coefficient of friction over the path of contact and the loss factor $H_V$ of the path of
-contact (ISO/TR 14179-2; Ohlendorf). The mesh efficiency is then $\\eta_z = 1 - \\mu_{mz} H_V$
-(the load-independent losses, churning and windage, and the bearings' are not counted).
+The power lost by sliding in the mesh is P_VZP = P mu_mz H_V: the input power, the mean
+coefficient of friction over the path of contact and the loss factor H_V of the path of contact
+(ISO/TR 14179-2; Ohlendorf). The mesh efficiency is then eta_z = 1 - mu_mz H_V (the
+load-independent losses, churning and windage, and the bearings' are not counted). The formulas
+as math: docs/rating.md, "Mesh losses and efficiency".
 
 Loss factor (:func:`loss_factor`). Along the transverse path of contact the sliding speed grows
-linearly from the pitch point C, $v_g = |t|\\,p_{bt}\\,\\omega_1 (1 \\pm 1/u)$ at the position
-$t\\,p_{bt}$ from C ($+$ external, $-$ internal), and the load is shared equally by the tooth
-pairs in contact. The mean over one mesh cycle of $\\sum F_i v_{g,i} / (F_{bt} v_{bt})$ is
+linearly from the pitch point C, v_g = abs(t) p_bt omega_1 (1 +- 1/u) at the position t p_bt
+from C (+ external, - internal), and the load is shared equally by the tooth pairs in contact.
+The mean over one mesh cycle of sum(F_i v_g,i) / (F_bt v_bt) is
 
-$$H_V = \\frac{2\\pi (u \\pm 1)}{z_1 u \\cos\\beta_b}
-\\int_{-\\varepsilon_2}^{\\varepsilon_1} \\frac{|t|}{n(t)}\\,dt$$
+    H_V = 2 pi (u +- 1) / (z_1 u cos beta_b) * integral from -eps_2 to eps_1 of abs(t) / n(t) dt
 
-with $n(t)$ the number of pairs in contact when one is at $t$ ($\\lfloor\\varepsilon_\\alpha
-\\rfloor$ or one more). It is written here in closed form for any $\\varepsilon_\\alpha \\ge 1$;
-where the pitch point lies in single contact and $\\varepsilon_\\alpha < 2$ it is Ohlendorf's
-$H_V = \\pi (u+1)/(z_1 u \\cos\\beta_b)\\,(1 - \\varepsilon_\\alpha + \\varepsilon_1^2 +
-\\varepsilon_2^2)$. $\\varepsilon_1$, $\\varepsilon_2$ are the addendum contact ratios of gear 1
-(C to E, its tip) and gear 2 (A to C).
+with n(t) the number of pairs in contact when one is at t (floor(eps_alpha) or one more). It is
+written here in closed form for any eps_alpha >= 1; where the pitch point lies in single contact
+and eps_alpha < 2 it is Ohlendorf's H_V = pi (u + 1) / (z_1 u cos beta_b) (1 - eps_alpha +
+eps_1^2 + eps_2^2). eps_1, eps_2 are the addendum contact ratios of gear 1 (C to E, its tip) and
+gear 2 (A to C).
 
 Coefficient of friction (:func:`friction_coefficient`), the empirical equation of ISO/TR
-14179-2 (after Schlenk):
-$\\mu_{mz} = 0.048\\,\\left(\\frac{F_{bt}/b}{v_{\\Sigma C}\\,\\rho_{redC}}\\right)^{0.2}
-\\eta_{oil}^{-0.05} R_a^{0.25} X_L$, with $F_{bt}/b$ in N/mm, the sum of the rolling speeds at
-the pitch point $v_{\\Sigma C} = 2 v_t \\sin\\alpha_{wt}$ in m/s, the relative radius of
-curvature at the pitch point $\\rho_{redC}$ in mm (normal section), the oil's dynamic viscosity
-at its working temperature in mPa s, the mean roughness $R_a = (R_{a1} + R_{a2})/2$ in um and
-the lubricant factor $X_L$ (:data:`LUBRICANT_FACTORS`).
+14179-2: mu_mz = 0.048 ((F_bt / b) / (v_SigmaC rho_redC))^0.2 eta_oil^-0.05 Ra^0.25 X_L, with
+F_bt / b in N/mm, the sum of the rolling speeds at the pitch point v_SigmaC = 2 v_t sin
+alpha_wt in m/s, the relative radius of curvature at the pitch point rho_redC in mm (normal
+section), the oil's dynamic viscosity at its working temperature in mPa s, the mean roughness
+Ra = (Ra_1 + Ra_2) / 2 in um and the lubricant factor X_L (:data:`LUBRICANT_FACTORS`).
 """
 
 from __future__ import annotations
@@ -93,7 +90,7 @@ def lubricant_factor(lubricant) -> float:
 
 
 def _abs_integral(a, b):
-    """The integral of |t| from a to b (a <= b)."""
+    """The integral of abs(t) from a to b (a <= b)."""
     return 0.5 * (b * np.abs(b) - a * np.abs(a))
 
 

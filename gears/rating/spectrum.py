@@ -1,24 +1,22 @@
 """Layer 5, load spectra (ISO 6336-6): Miner's damage per gear and failure mode, the equivalent
-safety and the life of a mesh under a duty of several loads.
+safety and the life of a mesh under a duty of several loads (the formulas as math:
+docs/rating.md, "Load spectra").
 
 A spectrum is a list of bins ``(torque, speed, hours)``. Each bin is rated as a load of its own
 (ISO 6336 method B at its torque and speed, so every load factor follows the load), which gives
-per gear and failure mode the stress $\\sigma_i$ and the allowable stress at the bin's own cycles;
-dividing the latter by its life factor ($Z_{NT}$, $Y_{NT}$) leaves the strength at the endurance
-knot with every other factor of that bin, $\\sigma_{\\infty,i}$. The material's S-N curve (the
-knots of $Z_{NT}$ and $Y_{NT}$ in :mod:`gears.rating.life`, straight lines in log-log) read
-backwards gives the cycles to failure $N_{f,i}$ at $\\sigma_i / \\sigma_{\\infty,i}$, and Miner's
-rule sums the damage
+per gear and failure mode the stress sigma_i and the allowable stress at the bin's own cycles;
+dividing the latter by its life factor (Z_NT, Y_NT) leaves the strength at the endurance knot
+with every other factor of that bin, sigma_inf,i. The material's S-N curve (the knots of Z_NT
+and Y_NT in :mod:`gears.rating.life`, straight lines in log-log) read backwards gives the cycles
+to failure N_f,i at sigma_i / sigma_inf,i, and Miner's rule sums the damage
+D = sum(N_L,i / N_f,i), with N_L,i = 60 n_i h_i times the contacts per turn (ISO 6336-6,
+Miner's elementary rule: a stress above the curve's static knot fails in one cycle, a stress
+below its last knot, the endurance limit, does no damage).
 
-$$D = \\sum_i \\frac{N_{L,i}}{N_{f,i}}, \\qquad N_{L,i} = 60\\,n_i\\,h_i\\,(\\text{contacts per
-turn})$$
-
-(ISO 6336-6, Miner's elementary rule: a stress above the curve's static knot fails in one cycle,
-a stress below its last knot, the endurance limit, does no damage). The **equivalent safety**
-$S$ is the factor by which every bin's stress may grow before $D$ reaches 1 (for one bin it is
-the single-load safety $\\sigma_{HP}/\\sigma_H$, $\\sigma_{FP}/\\sigma_F$); the **life** is the
-spectrum's hours over $D$, the hours the duty can be repeated until $D = 1$ (an endless life is
-reported as :data:`LIFE_CAP` hours).
+The **equivalent safety** S is the factor by which every bin's stress may grow before D reaches
+1 (for one bin it is the single-load safety sigma_HP / sigma_H, sigma_FP / sigma_F); the
+**life** is the spectrum's hours over D, the hours the duty can be repeated until D = 1 (an
+endless life is reported as :data:`LIFE_CAP` hours).
 """
 
 from __future__ import annotations
