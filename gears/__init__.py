@@ -9,6 +9,7 @@ The public surface (see ``docs/``)::
     from gears import pair_geometry, pair_margins      # the same formulas over arrays of pairs
     from gears import search; search.pairs(...)        # design search (docs/design_search.md)
     pair.rating(torque, speed) -> Rating; rate_pairs(...)  # ISO 6336 rating (docs/rating.md)
+    pair.contact(torque) -> Contact; Gear(..., modification=Modification(...))  # docs/contact.md
 
 The names are imported on first use (:mod:`gears.lazy`): ``from gears.errors import GearError``
 or a command that needs one class loads that class's modules, not the whole library.
@@ -23,14 +24,17 @@ _getattr, __dir__, __all__ = attach(
         "BevelGear": "gears.bevel.gear",
         "BevelPair": "gears.bevel.pair",
         "conjugate": "gears.noncircular.conjugate",
+        "Contact": "gears.contact.result",
         "Finding": "gears.report",
         "Gear": "gears.gear",
         "gear_margins": "gears.checks",
         "GearError": "gears.errors",
         "GearMargins": "gears.checks",
         "GearPair": "gears.pair",
+        "HarrisMap": "gears.contact.result",
         "Material": "gears.rating.materials",
         "MATERIALS": "gears.rating.materials",
+        "Modification": "gears.contact.modification",
         "NonCircularPair": "gears.noncircular.pair",
         "pair_geometry": "gears.meshing",
         "pair_margins": "gears.checks",

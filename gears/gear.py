@@ -30,6 +30,7 @@ from gears.arguments import (
 )
 from gears.budget import check_budget
 from gears.checks import gear_margins, undercut_form_diameter
+from gears.contact.modification import Modification
 from gears.cutting.cutter import ShaperCutter, ShaperTool
 from gears.errors import GearError
 from gears.geometry import (
@@ -92,6 +93,11 @@ class Gear:
         The gear is cut by this shaper (:class:`gears.cutting.cutter.ShaperCutter`) instead of the
         rack-type tool: its root and form circles, undercut, outline and the pair checks then
         follow that cutter. None (default): rack-cut (an internal gear: the shaper's rack limit).
+    modification : Modification or None
+        Flank modifications (tip and root relief, crowning, end relief, helix slope:
+        :class:`gears.contact.modification.Modification`), which the contact analysis
+        (:meth:`GearPair.contact`) takes into account, and :meth:`outline` draws (tip and
+        root relief). None: the unmodified involute.
 
     Examples
     --------
@@ -112,6 +118,7 @@ class Gear:
     rack: BasicRack = field(default_factory=BasicRack.iso53)
     tip_alteration: float = 0.0
     cutter: ShaperCutter | None = None
+    modification: Modification | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -136,6 +143,10 @@ class Gear:
             if not isinstance(self.cutter, ShaperCutter):
                 raise GearError(f"cutter must be a ShaperCutter or None; got {self.cutter!r}")
             _ = self._shaper_tool  # the cutter must fit this gear: a clear error now
+        if self.modification is not None and not isinstance(self.modification, Modification):
+            raise GearError(
+                f"modification must be a Modification or None; got {self.modification!r}"
+            )
         self._require_real_dimensions()
 
     @staticmethod
@@ -533,12 +544,31 @@ class Gear:
         ``progress(done, total)`` is called as a simulation advances. The finest tolerance is
         :data:`gears.cutting.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
         tolerance that fits.
+        An external gear's ``modification`` takes its tip and root relief off the flanks
+        (:func:`gears.contact.flank.modified_outline`; a length left None is the short
+        relief against the basic rack); pairs' outlines and solids draw the unmodified
+        flanks.
         """
         from gears.cutting.outline import gear_outline  # the cutting family: when drawn
 
-        return gear_outline(
+        poly = gear_outline(
             self, tolerance, method, backlash, bore, rim, angle, center, cutter, progress
         )
+        m = self.modification
+        if m is None or self.internal or not (m.tip_relief or m.root_relief):
+            return poly
+        from gears.contact.flank import modified_outline, rack_short_relief
+
+        short = rack_short_relief(
+            self.base_diameter / 2, self.tip_diameter / 2, self.transverse_pressure_angle,
+            self.rack.addendum, self.profile_shift, self.module, self.base_pitch,
+        )  # fmt: skip
+        tip_length, root_length, _ = m.lengths(short, self.face_width or 1.0)
+        form = self._form / 2 if self._form > self.base_diameter else self.base_diameter / 2
+        return modified_outline(
+            poly, self.base_diameter / 2, form, self.tip_diameter / 2,
+            m.tip_relief, tip_length, m.root_relief, root_length, m.kind, center,
+        )  # fmt: skip
 
     def mesh(
         self, face_width: float | None = None, tolerance: float = 0.01, method: str = "analytic",

@@ -62,6 +62,7 @@ if TYPE_CHECKING:
     import trimesh
     from numpy.typing import ArrayLike
 
+    from gears.contact.result import Contact, HarrisMap
     from gears.cutting.cutter import ShaperCutter
     from gears.rating.capacity import Rating
     from gears.rating.losses import MeshLosses
@@ -640,8 +641,8 @@ class GearPair:
         oil_viscosity : float
             nu_40 of the oil, mm^2/s.
         tip_relief : float, optional
-            Tip relief C_a in mm, at most 0.1 m_n (default: the running-in amount of
-            ISO 6336-1).
+            Tip relief C_a in mm, at most 0.1 m_n (default: the larger of the gears'
+            ``modification.tip_relief``, else the running-in amount of ISO 6336-1).
         sigma_Hlim, sigma_Flim : float or pair, optional
             Allowable stress numbers replacing the material's, MPa.
         face_width : float, optional
@@ -664,7 +665,9 @@ class GearPair:
             for a ground flank with a hobbed root).
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
-            replaces the computed one (:data:`gears.rating.iso6336.FACTORS`).
+            replaces the computed one (:data:`gears.rating.iso6336.FACTORS`); ``K_Hbeta`` and
+            ``K_Halpha`` may be ``"contact"``: from the loaded contact analysis
+            (:meth:`contact`) at the torque times K_A, with ``misalignment`` as F_betax.
 
         Returns
         -------
@@ -685,9 +688,16 @@ class GearPair:
         """
         from gears.rating.capacity import rate_pair  # the rating family: loaded when rated
 
+        if tip_relief is None:  # the gears' own tip relief, the larger (ISO 6336-1 C_a)
+            reliefs = [m.tip_relief for g in (self.g1, self.g2)
+                       if (m := getattr(g, "modification", None)) is not None]  # fmt: skip
+            tip_relief = max(reliefs) if any(reliefs) else None
         if spectrum is not None:
             if torque is not None or speed is not None:
                 raise GearError("give either torque and speed or spectrum=, not both")
+            if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):
+                raise GearError('K_Hbeta="contact" / K_Halpha="contact" take the contact analysis '
+                                "at one torque: give torque and speed, not spectrum=")  # fmt: skip
             from gears.rating.spectrum import check_spectrum, spectrum_rating
 
             bins = check_spectrum(spectrum)
@@ -701,6 +711,8 @@ class GearPair:
             return spectrum_rating(ratings, material, rows)
         if torque is None or speed is None:
             raise GearError("rating needs torque (N m) and speed (rpm), or spectrum=")
+        if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):
+            factors = self._contact_factors(torque * application_factor, misalignment, factors)
         return rate_pair(
             self, torque, speed, material, life=life, application_factor=application_factor,
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
@@ -708,6 +720,53 @@ class GearPair:
             face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
             root=root, root_roughness=root_roughness, **factors,
         )  # fmt: skip
+
+    def _contact_factors(self, torque, misalignment, factors: dict) -> dict:
+        """``K_Hbeta="contact"`` / ``K_Halpha="contact"``: the factors from the loaded contact
+        analysis at ``torque`` (N m, times K_A), with ``misalignment`` F_betax in um."""
+        f_bx = 0.0 if misalignment is None else check_real("misalignment", misalignment, -1e4, 1e4)
+        c = self.contact(torque, misalignment=f_bx / 1000.0)
+        out = dict(factors)
+        if out.get("K_Hbeta") == "contact":
+            out["K_Hbeta"] = c.K_Hbeta
+        if out.get("K_Halpha") == "contact":
+            out["K_Halpha"] = c.K_Halpha
+            out.setdefault("K_Falpha", c.K_Halpha)  # ISO 6336-1 clause 8: K_Falpha = K_Halpha
+        return out
+
+    # --- loaded tooth contact analysis ---------------------------------------------------------
+    def contact(
+        self, torque: float, *, misalignment: float = 0.0, positions: int = 64, slices: int = 30,
+        center_distance_error: float = 0.0, modulus: float = 206000.0, poisson: float = 0.3,
+    ) -> Contact:  # fmt: skip
+        """The loaded tooth contact analysis under ``torque`` (N m on gear 1) over one mesh
+        cycle: transmission error, mesh stiffness, load sharing, contact pattern, K_Hbeta and
+        K_Halpha (:func:`gears.contact.result.contact`; the gears' ``modification`` apply).
+
+        Examples
+        --------
+        >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+        >>> c = p.contact(300)
+        >>> round(c.mean_mesh_stiffness, 2), round(c.peak_to_peak, 2)   # N/(mm um), um
+        (17.75, 12.7)
+        """
+        from gears.contact.result import contact
+
+        return contact(
+            self, torque, misalignment=misalignment, positions=positions, slices=slices,
+            center_distance_error=center_distance_error, modulus=modulus, poisson=poisson,
+        )  # fmt: skip
+
+    def harris(
+        self, torques: ArrayLike, reliefs: ArrayLike, *, relief_length: float | None = None,
+        kind: str = "linear", positions: int = 64, slices: int | None = None,
+    ) -> HarrisMap:  # fmt: skip
+        """The Harris map: transmission error peak to peak over tip ``reliefs`` (mm, the same
+        on both gears) and ``torques`` (N m on gear 1) (:func:`gears.contact.result.harris`)."""
+        from gears.contact.result import harris
+
+        return harris(self, torques, reliefs, relief_length=relief_length, kind=kind,
+                      positions=positions, slices=slices)  # fmt: skip
 
     # --- checks ----------------------------------------------------------------------------------
     def outlines(

@@ -52,9 +52,11 @@ __all__ = [
     "share_load",
 ]
 
-#: Points on the path of contact at which the pair's compliance is integrated; the cells'
-#: compliance is interpolated between them (a smooth function: the error is below 1e-6).
-TABLE = 257
+#: Points on the path of contact at which the pair's compliance is integrated; a cubic spline
+#: through them gives every cell's (a smooth function: within 5e-6 relative of the integral at
+#: the cell, measured on a 20/50 pair and on an 8/12 pair with shifts 0.5; linear
+#: interpolation would need 1000 points for that).
+TABLE = 65
 
 
 def share_load(stiffness, gaps, load):
@@ -103,11 +105,14 @@ def mesh_cells(start, end, base_pitch, face_width, tan_base_helix, positions, sl
 
 def cell_stiffness(u, start, end, n2, gear1, gear2, modulus, poisson, width):
     """Stiffness (N/mm) of cells of width ``width`` (mm) at the roll positions ``u``: the
-    pair's compliance integrated at :data:`TABLE` points of ``[start, end]`` and interpolated.
+    pair's compliance integrated at :data:`TABLE` points of ``[start, end]``, a cubic spline
+    between them.
     ``gear1``/``gear2`` are ``(rb, alpha2, rf, bore_radius)``; ``n2`` is u at N2."""
+    from scipy.interpolate import CubicSpline  # heavy: imported where used
+
     grid = np.linspace(start, end, TABLE)
     table = mesh_compliance(grid / gear1[0], (n2 - grid) / gear2[0], gear1, gear2, poisson)
-    return modulus * width / np.interp(u, grid, table)
+    return modulus * width / CubicSpline(grid, table)(u)
 
 
 def loaded_contact(geometry: dict, load, gaps_from, positions=64, slices=30, modulus=206000.0,

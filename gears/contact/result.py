@@ -23,6 +23,7 @@ from gears.contact.analysis import (
     harris_map,
     loaded_contact,
     pair_gaps,
+    share_load,
 )
 from gears.contact.modification import KINDS, Modification
 from gears.errors import GearError
@@ -133,8 +134,17 @@ class Contact:
     torque: float
     load: float
     arrays: dict = field(repr=False)
-    ideal: dict = field(repr=False)
     settings: dict = field(default_factory=dict)
+
+    @cached_property
+    def _ideal_forces(self) -> np.ndarray:
+        """The cell loads of the same pair without modification or misalignment (the same
+        cells and stiffness, every gap 0), for K_Halpha."""
+        a = self.arrays
+        k = a["stiffness"].reshape(a["u"].shape[0], -1)
+        gaps = np.where(k > 0, 0.0, np.inf)
+        _, forces = share_load(k, gaps, np.full(k.shape[0], self.load))
+        return forces.reshape(a["u"].shape)
 
     @property
     def face(self) -> np.ndarray:
@@ -242,7 +252,7 @@ class Contact:
 
     @cached_property
     def _factors(self) -> tuple[float, float]:
-        kb, ka = contact_factors(self.arrays["forces"], self.ideal["forces"],
+        kb, ka = contact_factors(self.arrays["forces"], self._ideal_forces,
                                  self.arrays["y"].size)  # fmt: skip
         return float(kb), float(ka)
 
@@ -318,14 +328,12 @@ def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 
     plain = m1 is None and m2 is None and misalignment == 0.0
     arrays = loaded_contact(geometry, load, None if plain else gaps, positions, slices,
                             modulus, poisson)  # fmt: skip
-    ideal = arrays if plain else loaded_contact(geometry, load, None, positions, slices,
-                                                modulus, poisson)  # fmt: skip
     settings = {
         "positions": positions, "slices": slices, "misalignment": misalignment,
         "center_distance_error": center_distance_error, "modulus": modulus,
         "poisson": poisson, "face_width": b,
     }  # fmt: skip
-    return Contact(pair, torque, load, arrays, ideal, settings)
+    return Contact(pair, torque, load, arrays, settings)
 
 
 @dataclass(frozen=True)

@@ -284,9 +284,14 @@ def meshing_pairs(draw):
     x1 = draw(st.floats(-0.3, 0.8))
     m = draw(st.sampled_from([0.5, 2.0, 7.0]))
     b = draw(st.floats(2.0, 30.0)) * m
+    mod = draw(st.none() | st.builds(
+        Modification, tip_relief=st.floats(0, 0.1), tip_relief_length=st.none() | st.floats(0, 50),
+        root_relief=st.floats(0, 0.05), crowning=st.floats(0, 0.05), end_relief=st.floats(0, 0.05),
+        helix_slope=st.floats(-0.05, 0.05), kind=st.sampled_from(["linear", "parabolic"]),
+    ))  # fmt: skip
     try:
         return GearPair(
-            Gear(z1, m, helix_angle=beta, profile_shift=x1, face_width=b),
+            Gear(z1, m, helix_angle=beta, profile_shift=x1, face_width=b, modification=mod),
             Gear(z2, m, helix_angle=-beta, face_width=b),
         )
     except GearError:
@@ -307,7 +312,8 @@ def test_contact_is_finite_or_refused(pair, torque, positions, slices, misalignm
     try:
         c = contact(pair, torque, positions=positions, slices=slices, misalignment=misalignment)
     except GearError as e:
-        assert any(w in str(e) for w in ("torque", "positions", "misalignment", "contact ratio"))
+        words = ("torque", "positions", "misalignment", "contact ratio", "end_relief_length")
+        assert any(w in str(e) for w in words), str(e)
         return
     for v in (c.transmission_error, c.mesh_stiffness, c.load_sharing, c.pressure):
         assert np.all(np.isfinite(v))
@@ -345,3 +351,179 @@ def test_harris_is_finite(torques, reliefs, length):
     h = harris(spur(), torques, reliefs, relief_length=length, positions=16)
     assert h.peak_to_peak.shape == (len(reliefs), len(torques))
     assert np.all(np.isfinite(h.peak_to_peak)) and np.all(h.peak_to_peak >= -1e-9)
+
+
+# --- modifications on the gear, unloaded transmission error, rating ---------------------------
+@pytest.mark.parametrize("kind", ["linear", "parabolic"])
+@pytest.mark.parametrize("length_share", [0.3, 0.45, 0.7, 0.95])
+def test_unloaded_te_of_tip_relief_equals_its_closed_form(kind, length_share):
+    # closed form (derived in docs/contact.md): tip relief C over a roll length L on both gears
+    # of a spur pair; the leaving pair's ramp and the entering pair's meet at the middle of the
+    # double-contact zone, so TE peak to peak = C max(0, 1 - (eps_alpha - 1) p_bt / (2 L))
+    # (squared for a parabolic relief), valid for L <= min(p_bt, g_alpha / 2); 0 elsewhere in
+    # single contact. Sampled at 1024 positions: within C p_bt / (512 L).
+    plain = spur()
+    pb, eps = plain.g1.base_pitch, plain.contact_ratio
+    length = length_share * min(pb, eps * pb / 2)
+    c_a = 0.02
+    m = Modification(tip_relief=c_a, tip_relief_length=length, kind=kind)
+    pair = GearPair(plain.g1.with_(modification=m), plain.g2.with_(modification=m))
+    te = pair.contact(1.0, positions=1024, slices=1).unloaded_transmission_error / 1000  # mm
+    share = max(0.0, 1 - (eps - 1) * pb / (2 * length))
+    expected = c_a * (share**2 if kind == "parabolic" else share)
+    assert te.min() == pytest.approx(0.0, abs=1e-15)
+    assert te.max() == pytest.approx(expected, abs=c_a * pb / (512 * length))
+
+
+def test_crowning_centres_the_contact_pattern():
+    # a crowned pair carries more at the face centre than at its ends: K_Hbeta > 1, and the
+    # pattern is symmetric about the centre (to 1e-9 relative)
+    m = Modification(crowning=0.01)
+    pair = GearPair(Gear(20, 3, face_width=30, modification=m), Gear(50, 3, face_width=30))
+    c = pair.contact(300.0, slices=20)
+    per_slice = c.pressure.max(axis=1)
+    assert c.K_Hbeta > 1.05
+    assert per_slice[10] > per_slice[0]
+    np.testing.assert_allclose(per_slice, per_slice[::-1], rtol=1e-9)
+
+
+def test_rating_takes_k_hbeta_from_the_contact_analysis():
+    # the rating's K_Hbeta="contact" is the contact analysis' K_Hbeta at T K_A with the rating's
+    # F_betax (um) as the misalignment (mm); more misalignment, a larger factor, a lower S_H
+    pair = tr_example_1()
+    r0 = pair.rating(9000, 360, K_Hbeta="contact", application_factor=1.25)
+    r1 = pair.rating(9000, 360, K_Hbeta="contact", misalignment=20.0)
+    c1 = pair.contact(9000 * 1.0, misalignment=0.020)
+    assert r0.factors["K_Hbeta"] == pytest.approx(pair.contact(9000 * 1.25).K_Hbeta, rel=1e-12)
+    assert r1.factors["K_Hbeta"] == pytest.approx(c1.K_Hbeta, rel=1e-12)
+    assert r1.factors["K_Hbeta"] > r0.factors["K_Hbeta"]
+    assert r1.safety_pitting[0] < pair.rating(9000, 360, K_Hbeta="contact").safety_pitting[0]
+    with pytest.raises(GearError, match="modification"):
+        Gear(20, 3, modification="tip relief")
+
+
+def test_unmodified_outlines_touch_in_mesh_at_every_angle():
+    # independent route to "no load, no transmission error": the drawn outlines of the pair,
+    # turned through a mesh cycle, touch without overlapping: the gap between the flanks (the
+    # geometric transmission error along the flanks' normal) stays within the outline tolerance
+    pair, tolerance = spur(), 1e-3
+    pitch = 360.0 / pair.g1.teeth
+    for angle in np.linspace(0.0, pitch, 5):
+        p1, p2 = pair.outlines(angle=float(angle), tolerance=tolerance)
+        assert p1.distance(p2) <= tolerance
+        assert p1.intersection(p2).area <= tolerance**2
+
+
+@given(st.integers(8, 200), st.floats(-0.4, 1.0), st.floats(0.0, 1.0), st.floats(0.05, 0.45))
+@SWEEP
+def test_tooth_compliance_is_finite_and_positive(z, x, where, nu):
+    # on the active flank (between the form circle's roll and the tip's) every part is finite;
+    # bending, shear and the foundation are positive; the sum grows toward the tip
+    try:
+        g = Gear(z, 2, profile_shift=x)
+    except GearError:
+        return
+    rb = g.base_diameter / 2
+    tip = math.sqrt(max((g.tip_diameter / 2 / rb) ** 2 - 1, 0.0))
+    low = math.sqrt(max((g.form_diameter / 2 / rb) ** 2 - 1, 0.0)) if g.form_diameter else 0.0
+    if not (math.isfinite(low) and tip > low):
+        return
+    t = np.array([low, low + where * (tip - low), tip])
+    c = tooth_compliance(t, rb, g.base_thickness / g.base_diameter, g.root_diameter / 2, poisson=nu)
+    for name, v in c.items():
+        assert np.all(np.isfinite(v)), name
+    assert np.all(c["bending"] > 0) and np.all(c["shear"] > 0) and np.all(c["foundation"] > 0)
+    total = sum(c.values())
+    assert total[2] > total[0]
+
+
+@given(
+    st.floats(-50, 50),
+    st.floats(0, 0.5),
+    st.floats(0, 30),
+    st.floats(0, 0.5),
+    st.floats(0, 30),
+    st.sampled_from(["linear", "parabolic"]),
+)
+@SWEEP
+def test_profile_relief_stays_within_its_amounts(u, ca, la, cf, lf, kind):
+    # a relief is 0 ... C_a + C_f, never negative: independent of where the roll lies
+    r = float(profile_relief(u, -10.0, 10.0, ca, la, cf, lf, kind))
+    assert 0.0 <= r <= ca + cf + 1e-15
+
+
+def test_rating_takes_the_tip_relief_of_the_gears_modification():
+    # ISO 6336-1 uses C_a (K_v, K_Halpha): a gear's Modification gives it, the same as passing
+    # tip_relief= in mm to the rating (to 1e-12); an explicit tip_relief= still wins
+    m = Modification(tip_relief=0.03)
+    plain = spur()
+    relieved = GearPair(plain.g1.with_(modification=m), plain.g2)
+    given = plain.rating(300, 1500, tip_relief=0.03)
+    taken = relieved.rating(300, 1500)
+    for name in ("K_v", "K_Halpha"):
+        assert taken.factors[name] == pytest.approx(given.factors[name], rel=1e-12), name
+    default = plain.rating(300, 1500).factors["K_v"]  # the running-in C_a: 1.0311 against 1.0185
+    assert abs(taken.factors["K_v"] - default) > 1e-3
+    assert relieved.rating(300, 1500, tip_relief=0.0).factors["K_v"] == pytest.approx(
+        plain.rating(300, 1500, tip_relief=0.0).factors["K_v"], rel=1e-12
+    )
+
+
+@pytest.mark.parametrize("kind", ["linear", "parabolic"])
+def test_modified_outline_is_thinner_by_the_relief(kind):
+    # independent route: the arc thickness measured on the drawn outline (gears.cutting.measure)
+    # falls by 2 r delta(r) / r_b where the relief delta takes material off (an involute moved
+    # along its normal by delta is the same involute turned by delta / r_b), within the
+    # tolerance; below the relief the tooth keeps its thickness
+    from gears.cutting.measure import thickness_on
+
+    c_a, length, tolerance = 0.05, 3.0, 1e-4
+    plain = Gear(20, 3)
+    relieved = plain.with_(modification=Modification(tip_relief=c_a, tip_relief_length=length,
+                                                     kind=kind))  # fmt: skip
+    p, q = plain.outline(tolerance=tolerance), relieved.outline(tolerance=tolerance)
+    assert q.is_valid and len(q.exterior.coords) == len(p.exterior.coords)
+    rb, ra = plain.base_diameter / 2, plain.tip_diameter / 2
+    rho_a = math.sqrt(ra**2 - rb**2)
+    for d in (2 * ra - 0.01, 2 * ra - 0.6, 2 * ra - 1.2, plain.reference_diameter):
+        r = d / 2
+        share = max(0.0, (math.sqrt(r * r - rb * rb) - (rho_a - length)) / length)
+        delta = c_a * (share**2 if kind == "parabolic" else share)
+        lost = thickness_on(p, d) - thickness_on(q, d)
+        np.testing.assert_allclose(lost, 2 * r * delta / rb, atol=4 * tolerance)
+    assert (
+        plain.with_(modification=Modification(crowning=0.01)).outline(tolerance=tolerance).equals(p)
+    )  # a lead modification leaves the transverse outline alone
+
+
+@given(
+    st.integers(6, 120),
+    st.floats(-0.3, 0.8),
+    st.floats(0.0, 0.5),
+    st.none() | st.floats(0, 20),
+    st.floats(0.0, 0.2),
+    st.sampled_from(["linear", "parabolic"]),
+)
+@settings(max_examples=15, deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))  # fmt: skip
+def test_modified_outline_is_a_valid_polygon_or_refused(z, x, c_a, length, c_f, kind):
+    try:
+        m = Modification(tip_relief=c_a, tip_relief_length=length, root_relief=c_f, kind=kind)
+        g = Gear(z, 2, profile_shift=x, modification=m)
+        poly = g.outline(tolerance=0.01)
+    except GearError:
+        return
+    assert poly.is_valid and poly.area > 0
+    assert poly.area <= g.with_(modification=None).outline(tolerance=0.01).area + 1e-9
+
+
+def test_centre_distance_error_keeps_the_involute_conjugate():
+    # involutes stay conjugate at any centre distance (ISO 21771: the working pressure angle
+    # changes, the ratio does not): no unloaded transmission error, a shorter path of contact
+    # (fewer pairs in contact on average: a lower mean mesh stiffness, a larger peak to peak)
+    pair = spur()
+    near, far = pair.contact(300.0), pair.contact(300.0, center_distance_error=0.5)
+    assert np.max(np.abs(far.unloaded_transmission_error)) < 1e-12
+    assert far.mean_mesh_stiffness < near.mean_mesh_stiffness
+    assert far.peak_to_peak > near.peak_to_peak
+    np.testing.assert_allclose(far.load_sharing.sum(axis=0), far.load, rtol=1e-12)
