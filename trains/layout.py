@@ -96,6 +96,9 @@ class Axes:
 
 
 def shared_axes(train, planets: Mapping[str, tuple[str, int]]) -> Axes:
+    """The members of ``train`` grouped by the axis they turn about: shafts coupled through two
+    stages, the central members of a carrier with the carrier, declared coaxial groups (the
+    ``planets`` turn about axes of their own)."""
     axes = Axes(train.members)
     for r in train.relations:
         if r.kind == "couple" and r.a not in planets and r.b not in planets:
@@ -186,5 +189,6 @@ def direction(m: Mesh, pos: Mapping[str, np.ndarray], axes: Axes, angle: float) 
 
 
 def turn(v: np.ndarray, th: float) -> np.ndarray:
+    """The plane vector ``v`` turned by ``th`` radians (counter-clockwise)."""
     c, s = math.cos(th), math.sin(th)
     return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])

@@ -48,7 +48,8 @@ SAMPLING = 1 / 1500
 Colour = Sequence[float]  # RGB(A), 0-255, as gears.solid.mesh.COLOURS
 #: gear 1 and gear 2 (the RGB of gears.solid.mesh.COLOURS, which the classes pass in)
 _PAIR_COLOURS = ((70, 130, 180), (222, 140, 60))
-LINE = {"fill": "none"}  # stroke widths and dashes are given in pixels (see picture)
+#: the style of a drawn line (no fill); stroke widths and dashes are given in pixels (see picture)
+LINE = {"fill": "none"}
 
 
 def display_tolerance(size: float) -> float:
@@ -83,6 +84,8 @@ def _css(colour: Colour) -> str:
 
 
 def filled(colour: Colour) -> dict[str, Any]:
+    """The SVG style of a filled shape of ``colour`` (RGB 0-255): the fill at 45 % and its
+    outline."""
     return {"fill": _css(colour), "fill-opacity": 0.45, "stroke": _css(colour),
             "stroke-width": 1}  # fmt: skip
 

@@ -13,6 +13,7 @@ from gears.files import check_output, writing
 
 __all__ = ["TABLE_FORMATS", "check_table_output", "write_table"]
 
+#: the suffixes a result table can be written as
 TABLE_FORMATS = (".parquet", ".csv")
 
 
