@@ -14,7 +14,13 @@ import re
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 GUIDES = sorted(DOCS.glob("*.md"))
-CODE = sorted(p for d in ("gears", "trains", "examples", "docs") for p in (ROOT / d).rglob("*.py"))
+GENERATED = ("_build", "auto_examples", "generated")  # the site's build output, not its sources
+CODE = sorted(
+    p
+    for d in ("gears", "trains", "examples", "docs")
+    for p in (ROOT / d).rglob("*.py")
+    if not set(GENERATED).intersection(p.relative_to(ROOT).parts)
+)
 SOURCES = [*CODE, ROOT / "README.md", *GUIDES]
 
 

@@ -54,6 +54,8 @@ from gears.solid.mesh import COLOURS, scene
 if TYPE_CHECKING:
     import trimesh
 
+    from gears.rating.capacity import Rating
+
 __all__ = [
     "ANIMATION_BUDGET_3D",
     "DRAWN_PER_VERTEX",
@@ -456,7 +458,8 @@ class BevelPair:
 
     # --- load capacity ---------------------------------------------------------------------------
     def rating(self, torque: float, speed: float, material: Any = "case-carburized", *,
-               life: float = 20000.0, mounting: str = "both-straddle", **options: Any):  # fmt: skip
+               life: float = 20000.0, mounting: str = "both-straddle",
+               **options: Any) -> Rating:  # fmt: skip
         """Pitting and bending rating through the virtual cylindrical gears at the mean cone,
         after ISO 10300 method B1 (:func:`gears.bevel.rating.bevel_rating`: what is ISO
         10300's there and what is ISO 6336's).

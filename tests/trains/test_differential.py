@@ -156,7 +156,7 @@ def test_train_bevel_mesh_input_is_checked():
         t.mesh("a", "b", teeth=(10, 16), opposed=True)
     with pytest.raises(TrainError, match="opposed"):
         t.mesh("a", "b", pair=p, opposed="yes")
-    with pytest.raises(TrainError, match=r"GearPair or gears\.BevelPair"):
+    with pytest.raises(TrainError, match=r"gears\.GearPair, gears\.BevelPair or gears\.WormPair"):
         t.mesh("a", "b", pair="pair")
     t.mesh("a", "b", pair=p)
     assert t.ratio("a", "b") == Fraction(-16, 10)  # an external mesh about outward axes
