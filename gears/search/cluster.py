@@ -21,6 +21,7 @@ from gears.errors import GearError
 from gears.geometry import check_real
 
 __all__ = [
+    "check_workers",
     "dask_client",
     "dask_results",
     "dask_timeout",
@@ -50,15 +51,28 @@ def _check_scheduler(address: str, seconds: float) -> None:
     import asyncio
 
     from distributed.comm import connect
-    from distributed.comm.addressing import parse_address
+    from distributed.comm.addressing import parse_address, parse_host_port
     from distributed.comm.registry import get_backend
 
     try:
-        get_backend(parse_address(address)[0])
+        scheme, location = parse_address(address)
+        get_backend(scheme)
     except (ValueError, TypeError) as exc:
         raise GearError(
             f"Dask scheduler address {address!r}: {exc}; an address reads tcp://host:8786"
         ) from None
+    if scheme in ("tcp", "tls"):  # a malformed port is bad input, not a server's answer
+        port = location.rpartition(":")[2] if ":" in location else ""
+        try:
+            parse_host_port(location)
+            ok = port.isdigit() and 0 < int(port) < 65536
+        except (ValueError, TypeError):
+            ok = False
+        if not ok:
+            raise GearError(
+                f"Dask scheduler address {address!r}: the port {port!r} is not a port number "
+                "(1 ... 65535); an address reads tcp://host:8786"
+            )
 
     async def identity():
         comm = await connect(address, timeout=seconds)
@@ -114,15 +128,22 @@ def dask_client(client, timeout: float | None = None):
         seconds = dask_timeout(timeout)
         _check_scheduler(client, seconds)
         try:
-            return Client(client, timeout=seconds)
+            opened = Client(client, timeout=seconds)
         except (OSError, TimeoutError) as exc:
             raise GearError(
                 f"the Dask scheduler at {client!r} did not take a client: {exc}"
             ) from None
+        try:
+            check_workers(opened)
+        except BaseException:
+            opened.close()
+            raise
+        return opened
     if client is not None:
         if not hasattr(client, "submit"):
             raise GearError(f"client must be a dask.distributed.Client or an address; "
                             f"got {client!r}")  # fmt: skip
+        check_workers(client)
         return client
     if "distributed" in sys.modules:  # an active client implies distributed is imported
         try:
@@ -132,6 +153,39 @@ def dask_client(client, timeout: float | None = None):
         except (ValueError, ImportError):
             return None
     return None
+
+
+def check_workers(client) -> None:
+    """A GearError unless every worker of ``client`` has this version of geartrain: a worker
+    without it (or with another) would fail every task with a traceback from deep in Dask.
+    Asked of each worker through :func:`importlib.metadata.version`, which every worker has."""
+    import importlib.metadata
+
+    try:  # this process's version, as gears.__version__ gives it
+        __version__ = importlib.metadata.version("geartrain")
+    except importlib.metadata.PackageNotFoundError:  # pragma: no cover - a bare source tree
+        __version__ = None
+    try:
+        found = client.run(importlib.metadata.version, "geartrain", on_error="return")
+    except (OSError, TimeoutError) as exc:
+        raise GearError(f"the Dask cluster could not be asked for its versions: {exc}") from None
+    # a worker that left meanwhile answers with a connection error: not a missing library
+    missing = sorted(w for w, v in found.items()
+                     if isinstance(v, importlib.metadata.PackageNotFoundError))  # fmt: skip
+    other = sorted(f"{w} has {v}" for w, v in found.items() if isinstance(v, str)
+                   and __version__ is not None and v != __version__)  # fmt: skip
+    if missing or other:
+        what = []
+        if missing:
+            what.append(f"{len(missing)} without geartrain ({', '.join(missing[:3])}"
+                        f"{', ...' if len(missing) > 3 else ''})")  # fmt: skip
+        if other:
+            what.append(f"{len(other)} with another version ({', '.join(other[:3])})")
+        raise GearError(
+            f"of the Dask cluster's {len(found)} workers, {' and '.join(what)}: every worker "
+            f"needs geartrain {__version__} (pip install 'geartrain[scale]=={__version__}' "
+            "where the workers run)"
+        )
 
 
 _HEAP = {"lock": None, "active": 0}
@@ -207,12 +261,23 @@ def dask_results(client, pending: set, timeout: float | None = None):
     traceback: a worker lost with its task or with data the work needs (``KilledWorker``, a
     cancelled future), a lost connection to the scheduler, or a cluster left without workers
     for ``timeout`` seconds (default :func:`dask_timeout`). An error raised by the task itself
-    reaches the caller unchanged.
+    reaches the caller unchanged. On any exception (Ctrl-C too) the futures still pending are
+    cancelled, so no task of the search stays on the scheduler.
     """
+    seconds = dask_timeout(timeout)
+    try:
+        yield from _results(client, pending, seconds)
+    except BaseException:  # an error, Ctrl-C (KeyboardInterrupt), a closed generator
+        # no task of this search stays on the scheduler
+        with contextlib.suppress(Exception):
+            client.cancel(list(pending))
+        raise
+
+
+def _results(client, pending: set, seconds: float):
     from distributed import wait
     from distributed.scheduler import KilledWorker
 
-    seconds = dask_timeout(timeout)
     lost = (CancelledError, KilledWorker, OSError)
     idle_since = None
     while pending:

@@ -25,6 +25,7 @@ this one. See ``docs/design_search.md``.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import time
 from dataclasses import dataclass
@@ -165,7 +166,7 @@ def pairs(
     (26, 78, 10.0, 1.101)
     """
     t0 = time.perf_counter()
-    space, client, threads = _prepare(
+    space, resolved, threads = _prepare(
         ratio, center_distance, module, teeth, shifts, helix, ratio_tolerance=ratio_tolerance,
         split=split, pressure_angle=pressure_angle, rack=rack, internal=internal,
         tip_shortening=tip_shortening, limits=limits, objective=objective, top=top,
@@ -174,10 +175,21 @@ def pairs(
         dataset=dataset, chunk_size=chunk_size, client=client, threads=threads,
         **rating_options,
     )  # fmt: skip
-    table, feasible, examined, chunks = run_chunks(
-        space, client, threads, chunk_size, progress, max_seconds
-    )
+    try:
+        table, feasible, examined, chunks = run_chunks(
+            space, resolved, threads, chunk_size, progress, max_seconds
+        )
+    finally:
+        _close_opened(client, resolved)
     return SearchResult(table, examined, feasible, chunks, time.perf_counter() - t0, space)
+
+
+def _close_opened(given, resolved) -> None:
+    """Close the client opened here from an address (one per call would pile up on the
+    scheduler); a client the caller gave stays theirs."""
+    if isinstance(given, str) and resolved is not None:
+        with contextlib.suppress(Exception):
+            resolved.close()
 
 
 def _prepare(*args, client=None, threads=None, **kwargs) -> tuple[_Space, object, int]:
@@ -208,6 +220,10 @@ class Estimate:
     sampled : int
     threads : int
         Local threads :func:`pairs` would use.
+    connect_seconds : float
+        Time taken to reach the Dask scheduler given as ``client=`` (its address asked, a
+        client opened, its workers' versions checked), which a search on it spends again;
+        0 without a cluster.
     """
 
     candidates: int
@@ -215,6 +231,7 @@ class Estimate:
     rate: float
     sampled: int
     threads: int
+    connect_seconds: float = 0.0
 
     @property
     def local_seconds(self) -> float:
@@ -225,8 +242,13 @@ class Estimate:
     @property
     def worker_seconds(self) -> float:
         """Expected time on one single-threaded Dask worker: a cluster of ``w`` of them takes
-        about ``worker_seconds / w``."""
+        about ``connect_seconds + worker_seconds / w``."""
         return self.candidates / self.rate
+
+    def cluster_seconds(self, worker_threads: int) -> float:
+        """Expected wall time on a Dask cluster of ``worker_threads`` threads, the connection
+        counted."""
+        return self.connect_seconds + self.worker_seconds / max(1, int(worker_threads))
 
     def __str__(self) -> str:
         return (
@@ -234,6 +256,11 @@ class Estimate:
             f"{self.rate:.3g} candidates/s per thread (measured on {self.sampled:,}): about "
             f"{_duration(self.local_seconds)} on {self.threads} local thread(s); on a Dask "
             f"cluster about {_duration(self.worker_seconds)} divided by its worker threads"
+            + (
+                f", plus {_duration(self.connect_seconds)} to connect"
+                if self.connect_seconds
+                else ""
+            )
         )
 
 
@@ -266,7 +293,11 @@ def estimate(*args, sample: int = ESTIMATE_SAMPLE, **kwargs) -> Estimate:
         kwargs.pop(name, None)
     if isinstance(sample, bool) or not isinstance(sample, int) or sample < 1:
         raise GearError(f"sample = {sample!r}; valid is an integer >= 1")
-    space, _, threads = _prepare(*args, **kwargs)
+    t_connect = time.perf_counter()
+    space, resolved, threads = _prepare(*args, **kwargs)
+    # what reaching the cluster took, the space's own checks aside (microseconds)
+    connect = time.perf_counter() - t_connect if resolved is not None else 0.0
+    _close_opened(kwargs.get("client"), resolved)
     chunk_size = kwargs.get("chunk_size", 1 << 16)
     space = _replace(space, dataset=None, top=1 if space.top is not None else None)
     n = space.size
@@ -281,7 +312,7 @@ def estimate(*args, sample: int = ESTIMATE_SAMPLE, **kwargs) -> Estimate:
         checked += evaluate_chunk(space, lo, min(lo + width, n), _LOCAL_BLOCK)[2]
     seconds = max(time.perf_counter() - t0, 1e-9)
     rate = checked / seconds if checked else LOCAL_RATE
-    return Estimate(space.candidates, -(-n // chunk_size), rate, checked, threads)
+    return Estimate(space.candidates, -(-n // chunk_size), rate, checked, threads, connect)
 
 
 def _replace(space: _Space, **changes) -> _Space:

@@ -5,6 +5,7 @@ number of candidates; a local search estimated over ``max_seconds`` is refused b
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
 
@@ -113,7 +114,6 @@ def _run_local(space, bounds, threads, report):
 
 
 def _run_dask(space, bounds, client, report):
-    total = space.candidates
     if not bounds:
         return np.empty(0, _dtype(space.columns)), 0, 0
     seconds = dask_timeout()
@@ -124,6 +124,16 @@ def _run_dask(space, bounds, client, report):
             f"the Dask cluster took no work within {seconds:g} s "
             f"(distributed.comm.timeouts.connect): {exc}; start workers, or run without client="
         ) from None
+    try:
+        return _run_on(client, spec, space, bounds, report)
+    except BaseException:  # Ctrl-C too: the shared data leaves the scheduler with the tasks
+        with contextlib.suppress(Exception):
+            client.cancel([spec])
+        raise
+
+
+def _run_on(client, spec, space, bounds, report):
+    total = space.candidates
     window = max(4, 4 * len(client.scheduler_info().get("workers", {}) or [0]))
     queue = iter(bounds)
     first = [client.submit(evaluate_chunk, spec, *b, pure=False) for b in

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import logging
 import math
 import os
 import re
@@ -659,15 +660,26 @@ def dask_session(args: argparse.Namespace, announce: bool = True) -> Iterator[ob
     from gears.search.cluster import dask_client
 
     seconds = args.connect_timeout or CONNECT_TIMEOUT
-    with dask.config.set({"distributed.comm.timeouts.connect": seconds}):
-        client = dask_client(args.scheduler)
-        try:
-            link = getattr(client, "dashboard_link", None)
-            if announce and link and show_progress():
-                print(f"Dask dashboard: {link}", file=sys.stderr)  # beside the bar
-            yield client
-        finally:
-            client.close()
+    # a scheduler lost mid-run is told in one line (the library's error); Dask's own log of it
+    # (a traceback per failed reconnection) would bury that line
+    quiet = [logging.getLogger(name) for name in ("distributed", "tornado", "asyncio")]
+    levels = [log.level for log in quiet]
+    for log in quiet:
+        log.setLevel(logging.CRITICAL + 1)
+    try:
+        with dask.config.set({"distributed.comm.timeouts.connect": seconds}):
+            client = dask_client(args.scheduler)
+            try:
+                link = getattr(client, "dashboard_link", None)
+                if announce and link and show_progress():
+                    print(f"Dask dashboard: {link}", file=sys.stderr)  # beside the bar
+                yield client
+            finally:
+                with contextlib.suppress(Exception):  # a scheduler gone cannot be told
+                    client.close(timeout=seconds)
+    finally:
+        for log, level in zip(quiet, levels, strict=True):
+            log.setLevel(level)
 
 
 def face_widths(text: str) -> list[float]:

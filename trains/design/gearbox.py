@@ -34,6 +34,7 @@ same product); with one, in the order found best.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 import numbers
@@ -356,15 +357,20 @@ def synthesize_gearbox(
     plan = _plan(objective, module, torque, speed, material, face_width, life, min_safety,
                  rating_options)  # fmt: skip
     runner = _runner(threads, chunk_size, progress, client)
-    # 1. stage sets, in blocks of tooth-count sets; 2. the ratio tuples, the stages sized
-    pool, counts = _stage_pool(runner, names, target, k, tol, n_planets, z_min, z_max,
-                               mesh_checks, cr, chunk_size)  # fmt: skip
-    table, lists, key_tuples, errors, n_tuples, design = _stage_lists(
-        runner, pool, plan, names, target, k, tol, top)  # fmt: skip
-    # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
-    out, checked = _walk(runner, table, lists, key_tuples, errors, plan, top, full_checks, cr,
-                         names, target)  # fmt: skip
-    runner.finish()
+    try:
+        # 1. stage sets, in blocks of tooth-count sets; 2. the ratio tuples, the stages sized
+        pool, counts = _stage_pool(runner, names, target, k, tol, n_planets, z_min, z_max,
+                                   mesh_checks, cr, chunk_size)  # fmt: skip
+        table, lists, key_tuples, errors, n_tuples, design = _stage_lists(
+            runner, pool, plan, names, target, k, tol, top)  # fmt: skip
+        # 3. combine in chunks of tuples (tasks), each reduced to its best; then check lazily
+        out, checked = _walk(runner, table, lists, key_tuples, errors, plan, top, full_checks,
+                             cr, names, target)  # fmt: skip
+        runner.finish()
+    finally:
+        if isinstance(client, str) and runner.client is not None:  # opened here: close it
+            with contextlib.suppress(Exception):
+                runner.client.close()
     sized = 0 if design is None else len(design["stage"])
     return Gearboxes(out, counts, n_tuples, checked, time.perf_counter() - t0, runner.tasks, sized)
 
