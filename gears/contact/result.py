@@ -276,6 +276,24 @@ class Contact:
         kind = check_choice("kind", kind, ("te", "pattern"))
         return (te_figure if kind == "te" else pattern_figure)(self, ax=ax)
 
+    def _repr_html_(self) -> str:
+        """The results as a table (notebooks)."""
+        from gears.display import html_table
+
+        te = self.transmission_error
+        rows = [
+            ("torque on gear 1", f"{self.torque:g}", "N m"),
+            ("load along the line of action F_bt", f"{self.load:.1f}", "N"),
+            ("transmission error", f"{te.min():.3f} ... {te.max():.3f}", "um"),
+            ("peak to peak", f"{self.peak_to_peak:.3f}", "um"),
+            ("mean mesh stiffness", f"{self.mean_mesh_stiffness:.3f}", "N/(mm um)"),
+            ("largest single-pair stiffness", f"{self.single_stiffness:.3f}", "N/(mm um)"),
+            ("largest Hertzian pressure", f"{self.pressure.max():.1f}", "MPa"),
+            ("K_Hbeta", f"{self.K_Hbeta:.4f}", ""),
+            ("K_Halpha", f"{self.K_Halpha:.4f}", ""),
+        ]
+        return html_table(["", "value", "unit"], rows, caption="loaded tooth contact")
+
     def __repr__(self) -> str:
         return (
             f"Contact(torque={self.torque:g} N m, peak_to_peak={self.peak_to_peak:.4g} um, "

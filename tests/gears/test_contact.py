@@ -527,3 +527,11 @@ def test_centre_distance_error_keeps_the_involute_conjugate():
     assert far.mean_mesh_stiffness < near.mean_mesh_stiffness
     assert far.peak_to_peak > near.peak_to_peak
     np.testing.assert_allclose(far.load_sharing.sum(axis=0), far.load, rtol=1e-12)
+
+
+def test_contact_shows_as_a_table_in_a_notebook():
+    # the notebook display lists the figures the object holds, each with its unit
+    c = spur().contact(300.0, positions=16, slices=4)
+    html = c._repr_html_()
+    assert html.startswith("<table") or "<table" in html
+    assert f"{c.peak_to_peak:.3f}" in html and "K_Hbeta" in html and "N/(mm um)" in html
