@@ -24,12 +24,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from functools import lru_cache
 from types import SimpleNamespace
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.errors import GearError
 from gears.geometry import (
     CROSSING,
     base_diameter,
@@ -54,6 +56,7 @@ from gears.rack import BasicRack, RackTool
 __all__ = [
     "GearMargins",
     "PairMargins",
+    "center_distance_reach",
     "equal_sliding_split",
     "flank_depth",
     "form_lengths",
@@ -62,6 +65,7 @@ __all__ = [
     "pair_margins",
     "pointed_tip_margin",
     "proportional_split",
+    "split_shift_sum",
     "tip_diameter_limits",
     "tip_interference",
     "tooth_height_margin",
@@ -520,3 +524,70 @@ def _form(z, m, x, pressure_angle, helix_angle, internal, rack):
     ring = form_diameter(z, m, x, pressure_angle, helix_angle, flank_depth(rack, pressure_angle),
                          True, rack.dedendum)  # fmt: skip
     return np.where(internal, ring, ext)
+
+
+@lru_cache(maxsize=256)
+def center_distance_reach(
+    z1, z2, module, pressure_angle, helix_angle, internal, tip_shortening, whole
+):
+    """``(low, high)``: the centre distances profile shift can reach for the pair's data (not
+    its shifts: the range does not depend on them; :meth:`gears.GearPair.center_distance_range`
+    says how); ``whole`` is the smaller whole depth h_a* + h_f* in module units. Cached: a
+    search over centre distances asks it once per candidate."""
+    from scipy.optimize import brentq  # heavy: imported where used
+
+    s = -1.0 if internal else 1.0
+    zsum = z2 + s * z1
+    # alpha_t as Gear.transverse_pressure_angle gives it (degrees, then back to radians)
+    at = math.radians(math.degrees(transverse_pressure_angle(pressure_angle, helix_angle)))
+    a_d = zsum * (module / math.cos(math.radians(helix_angle))) / 2
+    low = a_d * math.cos(at)
+    if internal or not tip_shortening:
+        return low, math.inf
+
+    def left(total: float) -> float:  # tooth left after shortening, module units
+        k = pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).tip_alteration
+        return float(k) + whole
+
+    lowest = -zsum * float(inv(at))
+    lowest /= 2 * math.tan(math.radians(pressure_angle))
+    lowest += 1e-9 * max(1.0, abs(lowest))  # just inside: inv alpha_wt >= 0 despite rounding
+    # the tooth left is whole at x1 + x2 = 0 and shrinks on both sides (k = y - sum <= 0)
+    top = max(1.0, zsum / 4)
+    while left(top) > 0 and top < 250:
+        top *= 2
+
+    def distance(total: float) -> float:
+        return float(
+            pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).center_distance
+        )
+
+    high = distance(brentq(left, 0.0, top, xtol=1e-12)) if left(top) <= 0 else math.inf
+    if left(lowest) <= 0:
+        low = distance(brentq(left, lowest, 0.0, xtol=1e-12))
+    return low, high
+
+
+def split_shift_sum(z1, z2, module, total, pressure_angle, helix_angle, internal, addendum,
+                    tip_shortening, split, x1_kept):  # fmt: skip
+    """Gear 1's shift x1 when the shift sum ``total`` (x1 + x2; internal x2 - x1) is split by
+    ``split`` (:meth:`gears.GearPair.at_center_distance` says how each rule splits it):
+    ``"keep"`` keeps ``x1_kept``, ``"proportional"`` (external pairs) and ``"equal_sliding"``
+    solve for it. Raises GearError where the rule has no answer."""
+    if split == "keep":
+        return x1_kept
+    if split == "proportional":
+        if internal:
+            raise GearError("split='proportional' is defined for external pairs; use 'keep'")
+        return float(proportional_split(z1, z2, total))
+    x1 = float(
+        equal_sliding_split(
+            z1, z2, module, total, pressure_angle, helix_angle, internal, addendum, tip_shortening
+        )
+    )
+    if not math.isfinite(x1):
+        raise GearError(
+            f"no split of the shift sum {total:.4f} balances the specific sliding of "
+            f"z1 = {z1} and z2 = {z2}; use split='keep' or 'proportional'"
+        )
+    return x1

@@ -14,35 +14,25 @@ import os
 import pathlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import cached_property, lru_cache
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
 
 from gears.arguments import (
-    check_angle,
-    check_callback,
-    check_choice,
-    check_flag,
-    check_fps,
-    check_frames,
-    check_length,
     check_positive,
-    check_tolerance,
 )
-from gears.budget import check_budget
 from gears.checks import (
-    equal_sliding_split,
+    center_distance_reach,
     form_lengths,
-    proportional_split,
+    split_shift_sum,
     tip_diameter_limits,
 )
 from gears.errors import GearError
-from gears.files import check_output
 from gears.forces import PairForces, pair_forces
 from gears.gear import Gear
-from gears.geometry import check_real, transverse_pressure_angle
+from gears.geometry import check_real
 from gears.interference import interference_findings
 from gears.involute import inv
 from gears.mating import PathOfContact, Rack
@@ -55,8 +45,7 @@ from gears.meshing import (
     specific_sliding,
 )
 from gears.report import Finding, Report
-from gears.solid.animate import FORMATS, write_animation
-from gears.solid.mesh import COLOURS, gear_solid, helix_twist, scene, solid_levels, transform
+from gears.solid.mesh import COLOURS
 
 if TYPE_CHECKING:
     import trimesh
@@ -75,45 +64,6 @@ __all__ = ["GearPair"]
 def _same(name: str, a: float, b: float) -> None:
     if not math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-12):
         raise GearError(f"the gears of a pair need equal {name}; got {a:g} and {b:g}")
-
-
-@lru_cache(maxsize=256)
-def _reachable(z1, z2, module, pressure_angle, helix_angle, internal, tip_shortening, whole):
-    """:meth:`GearPair.center_distance_range` of the pair's data (not its shifts: the range
-    does not depend on them), cached: a search over centre distances asks it once per
-    candidate."""
-    from scipy.optimize import brentq  # heavy: imported where used
-
-    s = -1.0 if internal else 1.0
-    zsum = z2 + s * z1
-    # alpha_t as Gear.transverse_pressure_angle gives it (degrees, then back to radians)
-    at = math.radians(math.degrees(transverse_pressure_angle(pressure_angle, helix_angle)))
-    a_d = zsum * (module / math.cos(math.radians(helix_angle))) / 2
-    low = a_d * math.cos(at)
-    if internal or not tip_shortening:
-        return low, math.inf
-
-    def left(total: float) -> float:  # tooth left after shortening, module units
-        k = pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).tip_alteration
-        return float(k) + whole
-
-    lowest = -zsum * float(inv(at))
-    lowest /= 2 * math.tan(math.radians(pressure_angle))
-    lowest += 1e-9 * max(1.0, abs(lowest))  # just inside: inv alpha_wt >= 0 despite rounding
-    # the tooth left is whole at x1 + x2 = 0 and shrinks on both sides (k = y - sum <= 0)
-    top = max(1.0, zsum / 4)
-    while left(top) > 0 and top < 250:
-        top *= 2
-
-    def distance(total: float) -> float:
-        return float(
-            pair_geometry(z1, z2, module, total, 0.0, pressure_angle, helix_angle).center_distance
-        )
-
-    high = distance(brentq(left, 0.0, top, xtol=1e-12)) if left(top) <= 0 else math.inf
-    if left(lowest) <= 0:
-        low = distance(brentq(left, lowest, 0.0, xtol=1e-12))
-    return low, high
 
 
 @dataclass(frozen=True, init=False)
@@ -260,24 +210,10 @@ class GearPair:
             )
         )  # fmt: skip
         s = -1.0 if g2.internal else 1.0
-        if split == "keep":
-            x1 = g1.profile_shift
-        elif split == "proportional":
-            if g2.internal:
-                raise GearError("split='proportional' is defined for external pairs; use 'keep'")
-            x1 = float(proportional_split(g1.teeth, g2.teeth, total))
-        else:
-            x1 = float(
-                equal_sliding_split(
-                    g1.teeth, g2.teeth, g1.module, total, g1.pressure_angle, g1.helix_angle,
-                    g2.internal, g1.rack.addendum, tip_shortening,
-                )
-            )  # fmt: skip
-            if not math.isfinite(x1):
-                raise GearError(
-                    f"no split of the shift sum {total:.4f} balances the specific sliding of "
-                    f"z1 = {g1.teeth} and z2 = {g2.teeth}; use split='keep' or 'proportional'"
-                )
+        x1 = split_shift_sum(
+            g1.teeth, g2.teeth, g1.module, total, g1.pressure_angle, g1.helix_angle,
+            g2.internal, g1.rack.addendum, tip_shortening, split, g1.profile_shift,
+        )  # fmt: skip
         x2 = total - x1 if s > 0 else total + x1  # external x1 + x2 = S; internal x2 - x1 = S
         try:
             return cls(
@@ -308,7 +244,7 @@ class GearPair:
         (50.7434, 66.5654)
         """
         whole = min(g.rack.addendum + g.rack.dedendum for g in (g1, g2))
-        return _reachable(
+        return center_distance_reach(
             g1.teeth, g2.teeth, g1.module, g1.pressure_angle, g1.helix_angle, g2.internal,
             bool(tip_shortening), whole,
         )  # fmt: skip
@@ -563,39 +499,10 @@ class GearPair:
         >>> round(float(m.efficiency), 4), round(float(m.loss_factor), 4)
         (0.9898, 0.1583)
         """
-        t = check_positive("torque", torque, "N m")
-        n = check_positive("speed", speed, "rpm")
-        b = self._face_width(face_width)
-        ra = roughness if isinstance(roughness, tuple) else (roughness, roughness)
-        if len(ra) != 2:
-            raise GearError(f"roughness = {roughness!r}; valid is Ra > 0 (um) or a pair")
-        ra_m = 0.5 * sum(check_positive("roughness", r, "um") for r in ra)
-        eta = check_positive("viscosity", viscosity, "mPa s")
-        from gears.rating.losses import MeshLosses, lubricant_factor, mesh_losses  # when asked
+        from gears.rating.losses import pair_efficiency  # the rating family: when asked
 
-        x_l = lubricant_factor(lubricant)
-        p = self.path_of_contact
-        eps = p.length / p.base_pitch
-        if eps < 1.0:
-            raise GearError(
-                f"contact ratio epsilon_alpha = {eps:.4f}; the mesh loss needs a continuous "
-                "mesh (epsilon_alpha >= 1)"
-            )
-        g1 = self.g1
-        u = math.inf if self.is_rack else self.g2.teeth / g1.teeth
-        beta_b = math.degrees(math.asin(math.sin(math.radians(g1.helix_angle))
-                                        * math.cos(math.radians(g1.pressure_angle))))  # fmt: skip
-        out = mesh_losses(t, n, g1.teeth, u, g1.base_diameter / 2, self.working_pressure_angle,
-                          (p.end - p.pitch_point) / p.base_pitch,
-                          (p.pitch_point - p.start) / p.base_pitch, b, beta_b, self.internal,
-                          ra_m, eta, x_l)  # fmt: skip
-        if not (math.isfinite(float(out.efficiency)) and float(out.efficiency) > 0.0):
-            raise GearError(
-                f"mesh efficiency = {float(out.efficiency):.4g} at speed = {n:g} rpm: the "
-                "friction loss mu_mz H_V reaches the power; ISO/TR 14179-2's friction equation "
-                "does not apply here (raise the speed)"
-            )
-        return MeshLosses(*(float(v) for v in out))
+        return pair_efficiency(self, torque, speed, self._face_width(face_width), roughness,
+                               viscosity, lubricant)  # fmt: skip
 
     def _face_width(self, face_width: float | None) -> float:
         """b in mm: the given one, else the smaller of the gears' own."""
@@ -782,45 +689,6 @@ class GearPair:
 
         return pair_outlines(self, angle, tolerance, method, backlash, cutter, progress)
 
-    def _unplaced(self, tolerance: float, method: str, backlash: float, cutter,
-                  progress=None) -> tuple:  # fmt: skip
-        """Both outlines centred on their own axes, unturned (from :meth:`outlines` at 0)."""
-        from shapely import affinity
-
-        p1, p2 = self.outlines(0.0, tolerance, method, backlash, cutter, progress)
-        angle2, (x2, y2) = self._placement(0.0)
-        p2 = affinity.rotate(affinity.translate(p2, -x2, -y2), -angle2, origin=(0.0, 0.0))
-        return p1, p2
-
-    def _placement(self, angle: float) -> tuple[float, tuple[float, float]]:
-        if self.is_rack:
-            raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
-        from gears.cutting.outline import pair_placement
-
-        g1, g2 = self.mounted
-        return pair_placement(g1.teeth, g2.teeth, self.center_distance, self.internal, angle)
-
-    def _drawn(self, method: str, cutter) -> list[tuple]:
-        """``(gear, method, cutter)`` of both mounted gears as :meth:`outlines` draws them (a
-        rack cannot cut a ring: its default shaper does)."""
-        c1, c2 = cutter if isinstance(cutter, tuple | list) else (cutter, cutter)
-        g1, g2 = self.mounted
-        m2 = "shaper" if (g2.internal and method == "rack") else method
-        return [(g1, method, c1), (g2, m2, c2)]
-
-    def _check_drawing(self, tolerance, method, backlash, cutter, progress) -> tuple:
-        """The arguments every drawing of the pair shares, checked before any work."""
-        if self.is_rack:
-            raise GearError("a pinion-and-rack pair has no scene; mesh the gear alone")
-        from gears.cutting.outline import METHODS
-
-        tol = check_tolerance(tolerance, module=self.g1.module)
-        method = check_choice("method", method, METHODS)
-        check_callback("progress", progress)
-        if isinstance(cutter, tuple | list) and len(cutter) != 2:
-            raise GearError(f"cutter = {cutter!r}; valid is one ShaperCutter or a pair of them")
-        return tol, method
-
     def scene(
         self, angle: float = 0.0, face_width: float | None = None, tolerance: float = 0.01,
         method: str = "analytic", backlash: float = 0.0, herringbone: bool = False,
@@ -844,37 +712,11 @@ class GearPair:
         >>> sorted(p.scene(tolerance=0.05).graph.nodes_geometry)
         ['gear1', 'gear2']
         """
-        angle = check_angle("angle", angle)
-        tol, method = self._check_drawing(tolerance, method, backlash, cutter, progress)
-        herringbone = check_flag("herringbone", herringbone)
-        if face_width is not None:
-            check_positive("face_width", face_width)
-        drawn = self._drawn(method, cutter)
-        widths, twists = [], []
-        for gear, _, _ in drawn:
-            b = face_width if face_width is not None else gear.face_width
-            b = b if b is not None else 10.0 * gear.module
-            widths.append(check_length("face_width", b, gear.solid_radius(), "the gear's radius"))
-            twists.append(helix_twist(widths[-1], gear.helix_angle, gear.reference_diameter))
-        check_budget(
-            "mesh", f"the scene of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
-            lambda t: sum(g.solid_vertices(t, w, m, backlash, None, None, c, herringbone)
-                          for (g, m, c), w in zip(drawn, twists, strict=True)), tol,
-        )  # fmt: skip
-        angle2, centre2 = self._placement(angle)
-        outlines = self._unplaced(tol, method, backlash, cutter, progress)
-        radii = [g.solid_radius() for g, _, _ in drawn]
-        check_budget(  # the outlines as drawn (a simulation's may exceed the estimate)
-            "mesh", f"the scene of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
-            lambda t: sum(shapely.get_num_coordinates(o) * solid_levels(w, r, t, herringbone)
-                          for o, w, r in zip(outlines, twists, radii, strict=True)), tol,
-        )  # fmt: skip
-        parts = []
-        for i, (shape, b, twist) in enumerate(zip(outlines, widths, twists, strict=True)):
-            solid = gear_solid(shape, b, twist, tol, herringbone=herringbone)
-            place = transform(angle) if i == 0 else transform(angle2, centre2)
-            parts.append((f"gear{i + 1}", solid, place, COLOURS[f"gear{i + 1}"]))
-        return scene(parts)
+        from gears.pair_drawing import pair_scene  # drawn: the solids load here
+
+        return pair_scene(
+            self, angle, face_width, tolerance, method, backlash, herringbone, cutter, progress
+        )
 
     def animate(
         self, path: str | os.PathLike[str], frames: int = 48, fps: float = 20.0,
@@ -888,36 +730,11 @@ class GearPair:
         (:func:`gears.solid.animate.write_animation`). Every argument (the file's folder too) is
         checked and the drawing's size (frames times outline vertices) estimated before any
         work: over the animation budget it is refused with the tolerance that fits."""
-        from shapely import affinity
+        from gears.pair_drawing import pair_animation  # drawn: the solids load here
 
-        from gears.cutting.outline import outline_vertices
-
-        path = check_output(path, FORMATS)
-        n = check_frames(frames)
-        check_fps(fps)
-        turn = 360.0 / self.g1.teeth if turn is None else check_angle("turn", turn)
-        tol, method = self._check_drawing(tolerance, method, backlash, cutter, progress)
-        drawn = self._drawn(method, cutter)
-        check_budget(
-            "animation", f"{n} frames of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
-            lambda t: n * sum(outline_vertices(g, t, m, backlash, None, None, c)
-                              for g, m, c in drawn), tol, hint="fewer frames",
-        )  # fmt: skip
-        p1, p2 = self._unplaced(tol, method, backlash, cutter)
-        check_budget(
-            "animation", f"{n} frames of z = {drawn[0][0].teeth}/{drawn[1][0].teeth}",
-            lambda t: n * sum(shapely.get_num_coordinates(o) for o in (p1, p2)), tol,
-            hint="fewer frames",
-        )  # fmt: skip
-        c1, c2 = (np.asarray(COLOURS[k]) / 255.0 for k in ("gear1", "gear2"))
-
-        def frame(i: int) -> list:
-            a = i * turn / n
-            a2, (x2, y2) = self._placement(a)
-            q2 = affinity.translate(affinity.rotate(p2, a2, origin=(0.0, 0.0)), x2, y2)
-            return [(affinity.rotate(p1, a, origin=(0.0, 0.0)), c1), (q2, c2)]
-
-        return write_animation(path, frame, fps=fps, n_frames=n, progress=progress)
+        return pair_animation(
+            self, path, frames, fps, turn, tolerance, method, backlash, cutter, progress
+        )
 
     def check(self, min_contact_ratio: float = 1.1, min_tip_land: float = 0.2) -> Report:
         """Both gears' findings (prefixed ``g1.``/``g2.``) plus ``contact_ratio``,

@@ -92,6 +92,7 @@ LAYERS = {
         ],
         [
             "gear",
+            "pair_drawing",
             "rating.capacity",
             "solid.render",
             "bevel.drawing",
@@ -114,6 +115,7 @@ LAYERS = {
             "planetary.checks",
             "planetary.placement",
             "planetary.scene",
+            "planetary.shifts",
             "layout",
             "cycle",
         ],

@@ -30,11 +30,12 @@ Ra = (Ra_1 + Ra_2) / 2 in um and the lubricant factor X_L (:data:`LUBRICANT_FACT
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.arguments import check_positive
 from gears.errors import GearError
 from gears.meshing import line_positions, pair_geometry
 
@@ -45,6 +46,7 @@ __all__ = [
     "loss_factor",
     "lubricant_factor",
     "mesh_losses",
+    "pair_efficiency",
     "pair_losses",
 ]
 
@@ -268,3 +270,41 @@ def _checked(out: MeshLosses) -> MeshLosses:
             "power; ISO/TR 14179-2's friction equation does not apply here (raise the speed)"
         )
     return out
+
+
+def pair_efficiency(pair: Any, torque: float, speed: float, face_width: float,
+                    roughness: float | tuple[float, float], viscosity: float,
+                    lubricant: str | float) -> MeshLosses:  # fmt: skip
+    """:meth:`gears.GearPair.efficiency` of ``pair`` with its face width ``face_width`` mm
+    resolved (its docstring says what it computes)."""
+    t = check_positive("torque", torque, "N m")
+    n = check_positive("speed", speed, "rpm")
+    b = face_width  # resolved by the pair
+    ra = roughness if isinstance(roughness, tuple) else (roughness, roughness)
+    if len(ra) != 2:
+        raise GearError(f"roughness = {roughness!r}; valid is Ra > 0 (um) or a pair")
+    ra_m = 0.5 * sum(check_positive("roughness", r, "um") for r in ra)
+    eta = check_positive("viscosity", viscosity, "mPa s")
+    x_l = lubricant_factor(lubricant)
+    p = pair.path_of_contact
+    eps = p.length / p.base_pitch
+    if eps < 1.0:
+        raise GearError(
+            f"contact ratio epsilon_alpha = {eps:.4f}; the mesh loss needs a continuous "
+            "mesh (epsilon_alpha >= 1)"
+        )
+    g1 = pair.g1
+    u = math.inf if pair.is_rack else pair.g2.teeth / g1.teeth
+    beta_b = math.degrees(math.asin(math.sin(math.radians(g1.helix_angle))
+                                    * math.cos(math.radians(g1.pressure_angle))))  # fmt: skip
+    out = mesh_losses(t, n, g1.teeth, u, g1.base_diameter / 2, pair.working_pressure_angle,
+                      (p.end - p.pitch_point) / p.base_pitch,
+                      (p.pitch_point - p.start) / p.base_pitch, b, beta_b, pair.internal,
+                      ra_m, eta, x_l)  # fmt: skip
+    if not (math.isfinite(float(out.efficiency)) and float(out.efficiency) > 0.0):
+        raise GearError(
+            f"mesh efficiency = {float(out.efficiency):.4g} at speed = {n:g} rpm: the "
+            "friction loss mu_mz H_V reaches the power; ISO/TR 14179-2's friction equation "
+            "does not apply here (raise the speed)"
+        )
+    return MeshLosses(*(float(v) for v in out))

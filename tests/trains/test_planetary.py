@@ -393,7 +393,7 @@ def test_coaxial_solves_the_split_for_the_whole_grid_as_one_pair_would():
     # each sun shift must be the one GearPair.at_center_distance finds alone (the scalar route)
     import numpy as np
 
-    from trains.planetary.stage import _equal_sliding_suns
+    from trains.planetary.shifts import _equal_sliding_suns
 
     sun, planet = Gear(96, 0.1), Gear(5, 0.1)
     grid = np.array([4.9, 4.96, 5.0, 5.04, 5.1, 7.0])  # mm; 7.0 is beyond the reachable range
