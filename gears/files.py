@@ -5,6 +5,8 @@ writer) and every output option of the ``geartrain`` CLI calls :func:`check_outp
 work, so a bad path is one clear :class:`~gears.errors.GearError` naming the path and what is
 valid, never a ``FileNotFoundError`` after a long computation. :func:`writing` turns what can
 still go wrong during the write itself (a full disk, a read-only mount) into the same error.
+:func:`pyplot` is the one import of matplotlib that every figure makes (headless, or a clear
+error naming the extra that installs it).
 """
 
 from __future__ import annotations
@@ -14,10 +16,11 @@ import errno
 import os
 import pathlib
 from collections.abc import Iterable, Iterator
+from types import ModuleType
 
 from gears.errors import GearError
 
-__all__ = ["check_output", "writing"]
+__all__ = ["check_output", "pyplot", "writing"]
 
 
 def check_output(path, formats: Iterable[str], name: str = "path") -> pathlib.Path:
@@ -116,3 +119,16 @@ def writing(path) -> Iterator[None]:
     except OSError as exc:
         reason = exc.strerror or str(exc)
         raise GearError(f"path {str(path)!r} could not be written: {reason}") from exc
+
+
+def pyplot() -> ModuleType:
+    """``matplotlib.pyplot`` on a headless backend (Agg, unless one is already chosen), or a
+    :class:`~gears.errors.GearError` naming the ``plot`` extra when matplotlib is missing."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg", force=False)
+        import matplotlib.pyplot as plt
+    except ImportError as exc:  # pragma: no cover - the plot extra
+        raise GearError("figures need matplotlib: pip install 'geartrain[plot]'") from exc
+    return plt

@@ -9,26 +9,15 @@ existing axes (the stiffness panel of :func:`te_figure` then goes on a twin axis
 
 from __future__ import annotations
 
-from gears.errors import GearError
+from gears.files import pyplot
 
 __all__ = ["harris_figure", "pattern_figure", "te_figure"]
-
-
-def _plt():
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg", force=False)
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover
-        raise GearError("plots need matplotlib: pip install 'geartrain[plot]'") from exc
-    return plt
 
 
 def te_figure(contact, ax=None):
     """Loaded and unloaded transmission error (um, left) and mesh stiffness (N/(mm um),
     right) over one mesh cycle, against gear 1's rotation (degrees)."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 4))
     angle = contact.angle
     ax.plot(angle, contact.transmission_error, color="C0", lw=1.6, label="loaded TE")
@@ -53,7 +42,7 @@ def te_figure(contact, ax=None):
 def pattern_figure(contact, ax=None):
     """The contact pattern: the largest Hertzian pressure p_0 (MPa) over gear 1's flank in a
     mesh cycle, face width across, roll position on the line of action up."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(6, 4.5))
     face, roll, p = contact.face, contact.profile, contact.pressure
     mesh = ax.pcolormesh(face, roll, p.T, shading="nearest", cmap="inferno")
@@ -68,7 +57,7 @@ def pattern_figure(contact, ax=None):
 def harris_figure(harris_map, ax=None):
     """The Harris map: transmission error peak to peak (um, colour and contours) over tip
     relief (um) and torque (N m), with each torque's best relief."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(6, 4.5))
     r = harris_map.reliefs * 1000.0
     t = harris_map.torques

@@ -14,23 +14,13 @@ from typing import Any
 import numpy as np
 
 from gears.errors import GearError
+from gears.files import pyplot
 from gears.forces import PairForces
 
 __all__ = ["forces_figure", "pair_forces_figure"]
 
 #: Arrow colours: a mesh force, a bearing's reaction, a planet's pin.
 COLOURS = {"mesh": "#c62828", "bearing": "#1565c0", "pin": "#2e7d32"}
-
-
-def _plt():
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg", force=False)
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover - the plot extra
-        raise GearError("force figures need matplotlib: pip install 'geartrain[plot]'") from exc
-    return plt
 
 
 def forces_figure(
@@ -50,7 +40,7 @@ def forces_figure(
     >>> len(fig.axes[0].texts)   # the arrow and its label
     2
     """
-    plt = _plt()
+    plt = pyplot()
     if ax is None:
         fig, ax = plt.subplots(figsize=(6, 6))
     else:

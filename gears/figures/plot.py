@@ -18,20 +18,10 @@ from gears.cutting.generate import (
 )
 from gears.cutting.profile import ShaperProfile, ToothProfile
 from gears.errors import GearError
+from gears.files import pyplot
 from gears.meshing import line_of_action_points
 
 __all__ = ["generation_figure", "outlines_figure", "pair_figure", "tooth_figure"]
-
-
-def _plt():
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg", force=False)
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # pragma: no cover
-        raise GearError("plots need matplotlib: pip install 'geartrain[plot]'") from exc
-    return plt
 
 
 def _draw(ax, poly, **kw):
@@ -47,7 +37,7 @@ def _circle(ax, r, center=(0, 0), **kw):
 
 def outlines_figure(*outlines, ax=None):
     """All outlines, filled, equal axes, in mm."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 7))
     for i, p in enumerate(outlines):
         polys = getattr(p, "geoms", [p])
@@ -65,7 +55,7 @@ def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
     mm), so close circles (the form and base circles of an undercut pinion) never share a
     label."""
 
-    plt = _plt()
+    plt = pyplot()
     fig, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(5.2, 5.6))
     prof = ToothProfile(gear)
     rho, eta, kind = prof.half_space(tolerance)
@@ -101,7 +91,7 @@ def tooth_figure(gear, tolerance: float = 1e-3, ax=None):
 
 def pair_figure(pair, angle: float = 0.0, tolerance: float = 1e-3, ax=None):
     """Both gears in mesh with the line of action and the path of contact."""
-    plt = _plt()
+    plt = pyplot()
     p1, p2 = pair.outlines(angle, tolerance)
     fig = outlines_figure(p1, p2, ax=ax)
     ax = fig.axes[0]
@@ -131,7 +121,7 @@ def generation_figure(gear, tolerance: float = 1e-2, every: int = 1, ax=None,
     (:func:`gears.cutting.generate.shaper_positions`), for an external or an internal gear, over the
     outline that cutter leaves. ``every`` draws every n-th position.
     """
-    plt = _plt()
+    plt = pyplot()
     if method == "rack":
         if gear.internal:
             raise GearError("a rack cutter cannot generate an internal gear; use method='shaper'")
