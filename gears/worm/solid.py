@@ -29,7 +29,8 @@ The hob's positions leave scallops on the flanks: between two positions the toot
 ``rho`` keeps a ridge of height ``s^2 / (8 rho)`` (the chord sag of the generating positions,
 the same law as the rack's simulated cutting). :func:`hob_positions` takes ``N`` from the
 tolerance with ``rho`` the smallest radius of curvature of the mid-plane flank
-(``r_b2 tan alpha`` at the root form circle, at least one module).
+(``r_b2 tan alpha`` at the root form circle, at least one module), doubled: off the mid-plane
+the ridges grow (measured against a dense simulation).
 
 At the hob's own positions the worm fills exactly the space it cut: the pair placed at
 ``phi_1 = 0`` (a position of the hob) has no volume in common at zero backlash.
@@ -240,13 +241,15 @@ def wheel_blank(pair, tolerance: float):
 
 def hob_positions(pair, tolerance: float) -> int:
     """Hob positions over one angular pitch of the wheel that keep the flanks' scallops within
-    ``tolerance`` (module docstring): ``N = pi m / sqrt(8 rho tolerance)``."""
+    ``tolerance`` (module docstring): twice ``pi m / sqrt(8 rho tolerance)``. The mid-plane law
+    alone left the flanks 1.3 times the tolerance off a dense simulation 3 mm off the mid-plane
+    (z1 1, z2 10, m 2, tolerance 0.1 mm: 0.131 mm); twice the count gave 0.097 mm."""
     g = pair.geometry
     rb2 = float(g.wheel_diameter) / 2.0 * math.cos(math.radians(float(g.axial_pressure_angle)))
     rf2 = float(g.wheel_root_diameter) / 2.0
     rho = max(math.sqrt(max(rf2**2 - rb2**2, 0.0)), pair.module)
     s = math.sqrt(8.0 * rho * tolerance)
-    return int(min(max(math.ceil(math.pi * pair.module / s), 2), MAX_POSITIONS))
+    return int(min(max(math.ceil(2.0 * math.pi * pair.module / s), 2), MAX_POSITIONS))
 
 
 def _hob_matrix(pair, phi1: float) -> np.ndarray:
