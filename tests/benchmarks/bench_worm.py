@@ -14,7 +14,11 @@ Run: ``python tests/benchmarks/bench_worm.py`` (writes ``tests/benchmarks/result
   hobbing in that plane (600 hob positions, each hob's section in the plane drawn from the
   flank's axial section, united with shapely): the Hausdorff distance of the two boundaries
   within 30 degrees of the worm, mm.
-- Peers (OpenSCAD + BOSL2 ``worm_gear()``, the ``wormgear`` package) were not run in this round.
+- OpenSCAD + BOSL2 ``worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0,
+  profile_shift=0)`` where OpenSCAD is installed (give BOSL2's parent folder as OPENSCADPATH,
+  default /tmp/bosl; never part of this repository): the whole ``openscad -o wheel.stl``
+  process timed, its wheel's mid-plane measured against the involute the same way (x2 0).
+  The ``wormgear`` package was not run.
 """
 
 from __future__ import annotations
@@ -109,8 +113,45 @@ def run(z2: int, tolerance: float, dense: bool = False) -> dict:
     }  # fmt: skip
 
 
+def bosl2() -> dict | None:
+    """BOSL2's worm wheel z 16, m 2, worm diameter 20, timed and measured (None without
+    OpenSCAD)."""
+    import shutil
+    import subprocess
+    import tempfile
+
+    import trimesh
+
+    exe, lib = shutil.which("openscad"), os.environ.get("OPENSCADPATH", "/tmp/bosl")
+    if exe is None or not os.path.isdir(os.path.join(lib, "BOSL2")):
+        return None
+    with tempfile.TemporaryDirectory() as tmp:
+        scad, stl = os.path.join(tmp, "wheel.scad"), os.path.join(tmp, "wheel.stl")
+        with open(scad, "w") as f:
+            f.write("include <BOSL2/std.scad>\ninclude <BOSL2/gears.scad>\n"
+                    "worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0, "
+                    "profile_shift=0, pressure_angle=20);\n")  # fmt: skip
+        load0 = os.getloadavg()[0]
+        t0 = time.perf_counter()
+        subprocess.run([exe, "-o", stl, scad], env=dict(os.environ, OPENSCADPATH=lib),
+                       check=True, capture_output=True)  # fmt: skip
+        seconds = time.perf_counter() - t0
+        wheel = trimesh.load(stl)
+    w = WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA")
+    excess, deficit = accuracy(w, wheel)
+    return {
+        "peer": "BOSL2 worm_gear", "z2": 16, "wheel_s": seconds,
+        "wheel_vertices": len(wheel.vertices),
+        "watertight": bool(wheel.is_watertight), "thickness_excess_mm": excess,
+        "thickness_deficit_mm": deficit, "load_before": load0,
+    }  # fmt: skip
+
+
 def main() -> None:
     rows = [run(10, 0.1, dense=True), run(16, 0.05)]
+    peer = bosl2()
+    if peer is not None:
+        rows.append(peer)
     for r in rows:
         print(r)
     OUT.parent.mkdir(exist_ok=True)
