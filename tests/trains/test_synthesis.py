@@ -64,9 +64,11 @@ def test_real_geometry_rejects_textbook_answer_with_interference():
     relieved = Planetary(18, 18, 54, 3).check()
     assert relieved["planet-ring.involute_interference"].ok
     assert relieved["ring_tip_relief"].margin == pytest.approx(0.145, abs=1e-3)
-    best = synthesize(4, 3)[0]
-    assert best.teeth != (18, 18, 18, 54)
-    r = best.stage.check()
+    # synthesis judges the ring by the tip its stage gives it (issue 26: judged by the nominal
+    # tip, it removed stages that pass), so the relieved stage is found, and passes
+    found = synthesize(4, 3)
+    assert (18, 18, 18, 54) in [c.teeth for c in found]
+    r = found[0].stage.check()
     assert r["planet-ring.involute_interference"].ok and r["sun-planet.contact_ratio"].ok
 
 
@@ -164,3 +166,24 @@ def test_large_planet_count_and_narrow_range():
 def test_impossible_requests_raise(args, kw, match):
     with pytest.raises(TrainError, match=match):
         synthesize(*args, **kw)
+
+
+def test_full_checks_find_what_a_brute_force_finds():
+    # issue 26: the stage pre-filter judged the ring by its nominal tip, so stages whose ring
+    # passes only with Planetary's default tip relief (18-tooth planets) were removed, and the
+    # rated 1:20 gearbox search missed 12 of 68 gearboxes that pass Planetary.check(). Brute
+    # force: every simple stage of z 17 ... 60 with the ratio 7:2, built and checked alone
+    from trains import Planetary
+
+    ratio, k, z_min, z_max = Fraction(7, 2), 3, 17, 60
+    brute = set()
+    for sun in range(z_min, z_max + 1):
+        for planet in range(z_min, z_max + 1):
+            ring = sun + 2 * planet
+            if ring > z_max or Fraction(sun + ring, sun) != ratio:
+                continue
+            if Planetary(sun, planet, ring, n_planets=k).check().ok:
+                brute.add((sun, planet, ring))
+    found = synthesize(ratio, k, z_min=z_min, z_max=z_max, mesh_checks="full", limit=1000)
+    assert {c.teeth[:2] + c.teeth[3:] for c in found} == brute
+    assert any(planet == 18 for _, planet, _ in brute)  # the case the pre-filter lost

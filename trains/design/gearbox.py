@@ -338,11 +338,12 @@ def synthesize_gearbox(
     Examples
     --------
     1:12 in two simple stages, 3 planets each, every gear at most 100 teeth: the smallest ring
-    is 75 teeth (54/17 x 34/9 = 12 exactly).
+    is 65 teeth (10/3 x 18/5 = 12 exactly; the rings' tips relieved as :class:`Planetary`
+    relieves them).
 
     >>> best = synthesize_gearbox(12, stages=2, z_max=100, progress=False)[0]
     >>> best.ratio, [c.ratio for c in best.stages], [c.teeth for c in best.stages]
-    (Fraction(12, 1), [Fraction(54, 17), Fraction(34, 9)], [(34, 20, 20, 74), (27, 24, 24, 75)])
+    (Fraction(12, 1), [Fraction(10, 3), Fraction(18, 5)], [(27, 18, 18, 63), (25, 20, 20, 65)])
 
     The lightest 1:12 gearbox for 50 N m at 1500 rpm, modules of ISO 54, face widths 10 ... 30:
 

@@ -21,15 +21,12 @@ The stage's volume counts the sun, ``k`` planets (both gears of a stepped planet
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-from gears.checks import form_lengths, undercut_form_diameter
-from gears.meshing import pair_geometry
 from gears.rack import BasicRack
 from gears.rating.sizing import Load, gear_volume, rate
 from trains.capacity import LOAD_SHARING
+from trains.planetary.checks import ring_tip_alteration
 from trains.planetary.schemes import canonical_scheme
 
 __all__ = ["MODULE_WINDOW", "ring_tip_alteration", "size_stages", "stage_gears", "stage_meshes"]
@@ -106,30 +103,6 @@ def stage_gears(scheme: str, z1, z2, z2p, z3, n_planets) -> list[tuple]:
         return [(z1, False, 1.0), (z2, False, k), (z3, True, 1.0)]
     return [(z1, scheme == "internal", 1.0), (z2, False, k), (z2p, False, k),
             (z3, scheme in ("simple", "stepped", "internal", "double-planet"), 1.0)]  # fmt: skip
-
-
-def ring_tip_alteration(z_planet, z_ring, module, rack: BasicRack | None = None) -> np.ndarray:
-    """Tip alteration k (modules) :class:`trains.Planetary` gives a zero-shift ring meshing a
-    zero-shift spur planet (``ring_tip_relief``): 0 where the ring's tip clears the planet's
-    form circle, else the k that enlarges its tip circle to the limit rounded up to 1 um
-    (``GearPair.tip_diameter_limits``)."""
-    rack = rack or BasicRack.iso53()
-    pa = rack.pressure_angle
-    zp, zr, m = np.broadcast_arrays(*(np.asarray(v, float) for v in (z_planet, z_ring, module)))
-    shape = zp.shape
-    zp, zr, m = (v.ravel() for v in (zp, zr, m))  # pair_geometry takes flat arrays
-    g = pair_geometry(zp, zr, m, 0.0, 0.0, pa, 0.0, True, rack.addendum, True, threads=1)
-    cos_a = math.cos(math.radians(pa))
-    rb1, rb2 = zp * m * cos_a / 2, zr * m * cos_a / 2
-    tan_wt = np.tan(np.radians(g.working_pressure_angle))
-    u_n2 = rb1 * tan_wt - rb2 * tan_wt
-    with np.errstate(invalid="ignore"):
-        l1 = form_lengths(undercut_form_diameter(zp, m, 0.0, pa, 0.0, rack), 2 * rb1)
-    limit = 2.0 * np.sqrt(rb2 * rb2 + (u_n2 - l1) ** 2)
-    target = np.ceil(limit * 1000.0) / 1000.0
-    k = (zr * m - target) / (2 * m) - rack.addendum
-    relieve = np.isfinite(limit) & (np.asarray(g.tip_diameter_2) < limit)
-    return np.where(relieve, k, 0.0).reshape(shape)
 
 
 def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, torque, speed,

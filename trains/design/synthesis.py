@@ -36,18 +36,18 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from functools import cached_property
 from typing import Any
 
 import numpy as np
 
-from gears.meshing import pair_geometry
+from gears.meshing import contact_ratio, pair_geometry
 from gears.rack import BasicRack
 from gears.report import format_duration
 from trains.errors import TrainError
-from trains.planetary.checks import NEIGHBOUR_TOLERANCE
+from trains.planetary.checks import NEIGHBOUR_TOLERANCE, ring_tip_alteration
 from trains.planetary.schemes import (
     _default_roles,
     assembly_ticks,
@@ -365,11 +365,12 @@ def synthesize(
     >>> synthesize(16, 3, scheme="stepped", z_max=120, mesh_checks="textbook")[0].teeth
     (18, 54, 18, 90)
 
-    That lectures §4.4 scheme B answer has a planet 18 in ring 90 whose ring tip passes the
-    planet's base tangent point; on the real geometry the next set is the first:
+    That lectures §4.4 scheme B answer has a planet 18 in ring 90 whose nominal ring tip passes
+    the planet's base tangent point; the stage relieves the ring's tip to the planet's form
+    circle (``Planetary``'s ``ring_tip_relief``), so on the real geometry it stands too:
 
     >>> synthesize(16, 3, scheme="stepped", z_max=120)[0].teeth
-    (21, 63, 21, 105)
+    (18, 54, 18, 90)
     """
     scheme = canonical_scheme(scheme)
     target = _as_ratio(ratio)
@@ -725,14 +726,22 @@ class _Search:
         if len(z1) == 0 or not self.geometry:
             return np.ones(len(z1), bool)
         g = pair_geometry(z1, z2, 1.0, 0.0, 0.0, self.alpha, 0.0, internal, self.ha)
-        ok = g.contact_ratio >= self.min_eps
-        if internal:  # involute interference: z1/z2 >= 1 - tan(alpha_a2)/tan(alpha_w)
-            rb2 = z2 * math.cos(math.radians(self.alpha)) / 2
-            ra2 = g.tip_diameter_2 / 2
-            aa2 = np.arccos(np.minimum(rb2 / ra2, 1.0))
-            aw = np.radians(g.working_pressure_angle)
-            ok &= z1 / z2 >= 1 - np.tan(aa2) / np.tan(aw)
-        return ok
+        if not internal:
+            return g.contact_ratio >= self.min_eps
+        # a stage's ring has its tip relieved where it would reach the planet's fillet
+        # (Planetary's ring_tip_relief): judge the ring by the tip it will have, or the filter
+        # removes stages that pass (18-tooth planets, issue 26)
+        rack = replace(BasicRack.iso53().with_pressure_angle(self.alpha), addendum=self.ha)
+        k = ring_tip_alteration(z1, z2, 1.0, rack)
+        cos_a = math.cos(math.radians(self.alpha))
+        rb1, rb2 = z1 * cos_a / 2, z2 * cos_a / 2
+        ra1 = g.tip_diameter_1 / 2
+        ra2 = np.maximum(g.tip_diameter_2 / 2, z2 / 2 - (self.ha + k))
+        tan_wt = np.tan(np.radians(g.working_pressure_angle))
+        eps = contact_ratio(ra1, ra2, rb1, rb2, tan_wt, -1.0, math.pi * cos_a)
+        # involute interference: z1/z2 >= 1 - tan(alpha_a2)/tan(alpha_w)
+        aa2 = np.arccos(np.minimum(rb2 / ra2, 1.0))
+        return (eps >= self.min_eps) & (z1 / z2 >= 1 - np.tan(aa2) / tan_wt)
 
     # --- double planet: ratio and assembly on (z1, z3), then the planet grid
     def _double(self, b: dict) -> dict:

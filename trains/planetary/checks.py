@@ -24,10 +24,13 @@ from fractions import Fraction
 
 import numpy as np
 
+from gears.checks import form_lengths, undercut_form_diameter
+from gears.meshing import pair_geometry
+from gears.rack import BasicRack
 from gears.report import Finding, Report
 from trains.planetary.schemes import assembly_ticks, stage_ratio, textbook_assembly
 
-__all__ = ["NEIGHBOUR_TOLERANCE", "Assembly"]
+__all__ = ["MAX_PLANETS", "NEIGHBOUR_TOLERANCE", "Assembly", "ring_tip_alteration"]
 
 
 @dataclass(frozen=True)
@@ -271,3 +274,27 @@ def check(
     for name, pair in stage._pairs.items():
         findings.extend(pair.check(min_contact_ratio, min_tip_land).prefixed(name).values())
     return Report(findings)
+
+
+def ring_tip_alteration(z_planet, z_ring, module, rack: BasicRack | None = None) -> np.ndarray:
+    """Tip alteration k (modules) :class:`trains.Planetary` gives a zero-shift ring meshing a
+    zero-shift spur planet (``ring_tip_relief``): 0 where the ring's tip clears the planet's
+    form circle, else the k that enlarges its tip circle to the limit rounded up to 1 um
+    (``GearPair.tip_diameter_limits``)."""
+    rack = rack or BasicRack.iso53()
+    pa = rack.pressure_angle
+    zp, zr, m = np.broadcast_arrays(*(np.asarray(v, float) for v in (z_planet, z_ring, module)))
+    shape = zp.shape
+    zp, zr, m = (v.ravel() for v in (zp, zr, m))  # pair_geometry takes flat arrays
+    g = pair_geometry(zp, zr, m, 0.0, 0.0, pa, 0.0, True, rack.addendum, True, threads=1)
+    cos_a = math.cos(math.radians(pa))
+    rb1, rb2 = zp * m * cos_a / 2, zr * m * cos_a / 2
+    tan_wt = np.tan(np.radians(g.working_pressure_angle))
+    u_n2 = rb1 * tan_wt - rb2 * tan_wt
+    with np.errstate(invalid="ignore"):
+        l1 = form_lengths(undercut_form_diameter(zp, m, 0.0, pa, 0.0, rack), 2 * rb1)
+    limit = 2.0 * np.sqrt(rb2 * rb2 + (u_n2 - l1) ** 2)
+    target = np.ceil(limit * 1000.0) / 1000.0
+    k = (zr * m - target) / (2 * m) - rack.addendum
+    relieve = np.isfinite(limit) & (np.asarray(g.tip_diameter_2) < limit)
+    return np.where(relieve, k, 0.0).reshape(shape)
