@@ -10,10 +10,13 @@ solids of revolution bound the wheel's (its blank, its root cylinder).
 from __future__ import annotations
 
 import math
+import time
 
 import numpy as np
 import pytest
 import shapely
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from gears import GearError, WormPair
 from gears.cutting.measure import thickness_on
@@ -79,3 +82,26 @@ def test_scene_places_worm_and_wheel(pair):
     axis = worm_at[:3, :3] @ np.array([0.0, 0.0, 1.0])
     assert np.allclose(axis, [1.0, 0.0, 0.0], atol=1e-12)
     assert worm_at[1, 3] == pytest.approx(w.center_distance, rel=1e-14)
+
+
+BAD = st.sampled_from([float("nan"), float("inf"), -1.0, 0.0, "0.1", None])
+
+
+@given(st.one_of(st.floats(max_value=1e-7, allow_nan=False), BAD))
+@settings(max_examples=25, deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))  # fmt: skip
+def test_bad_tolerances_are_refused_before_any_work(tol):
+    w = WormPair(2, 40, 2.0)
+    t0 = time.perf_counter()
+    for make in (w.worm_mesh, w.wheel_mesh, lambda t: w.scene(tolerance=t)):
+        with pytest.raises(GearError, match="tolerance"):
+            make(tol)
+    assert time.perf_counter() - t0 < 5.0
+
+
+def test_too_large_a_wheel_is_refused_with_the_tolerance_that_fits():
+    # the budget (gears.budget): the estimate grows with the teeth and the hob positions
+    t0 = time.perf_counter()
+    with pytest.raises(GearError, match=r"mesh budget .* use tolerance >="):
+        WormPair(1, 400, 2.0).wheel_mesh(1e-4)
+    assert time.perf_counter() - t0 < 10.0
