@@ -14,7 +14,6 @@ import time
 import tomllib
 from pathlib import Path
 
-import dask
 import pytest
 from distributed import Client, LocalCluster
 
@@ -118,37 +117,61 @@ def test_ctrl_c_leaves_no_task_on_the_scheduler():
         assert _wait_until(lambda: not cluster.scheduler.tasks), len(cluster.scheduler.tasks)
 
 
-def test_a_scheduler_lost_mid_run_is_one_line(capfd, monkeypatch):
-    # the CLI printed a 23-line Dask traceback before its one-line message
-    from trains.cli.gear_commands import search as command
+@contextlib.contextmanager
+def _scheduler_and_worker_processes():
+    """A Dask scheduler and one worker as processes of their own on the loopback address (a
+    scheduler that can be killed as a real one dies)."""
+    import os
+    import socket
+    import subprocess
+    import sys
 
-    cluster = LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol="tcp",
-                           dashboard_address=None)  # fmt: skip
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    address = f"tcp://127.0.0.1:{port}"
+    root = str(Path(__file__).parents[1])
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([root, os.environ.get("PYTHONPATH", "")])}
+    quiet = {"env": env, "stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
+    scheduler = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host",
+                                  "127.0.0.1", "--port", str(port), "--dashboard-address", ":0",
+                                  "--no-show"], **quiet)  # fmt: skip
+    worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address,
+                               "--nthreads", "1", "--no-dashboard"], **quiet)  # fmt: skip
     try:
-
-        @contextlib.contextmanager
-        def killing_bar(desc, total=None, delay=1.0, unit="block"):
-            calls = []
-
-            def update(n, total):
-                calls.append(n)
-                if len(calls) == 1:
-                    cluster.sync(cluster.scheduler.close)
-
-            yield update
-
-        monkeypatch.setattr(command, "progress_bar", killing_bar)
-        argv = ["search", "pairs", "--ratio", "2", "--module", "1", "2", "3", "--teeth", "12",
-                "80", "--shifts", "-0.5", "1", "0.01", "--scheduler", cluster.scheduler_address,
-                "--connect-timeout", "2"]  # fmt: skip
-        with dask.config.set({"distributed.comm.timeouts.connect": 2}):
-            code = main(argv)
-        out, err = capfd.readouterr()
+        with Client(address, timeout=30) as probe:
+            probe.wait_for_workers(1, timeout=30)
+        yield address, scheduler
     finally:
-        with contextlib.suppress(Exception):
-            cluster.close(timeout=5)
-    assert code == 2, (out, err)
+        for p in (worker, scheduler):
+            p.kill()
+            p.wait(10)
+
+
+def test_a_scheduler_killed_mid_run_is_one_line():
+    # the CLI printed a 23-line Dask traceback (its log of the failed reconnections) before its
+    # one-line message. The command runs as a process of its own, as a user runs it (under
+    # pytest Dask's log would go to pytest's handler), and the scheduler is killed (SIGKILL)
+    # while the search runs (a space of 60+ chunks, several seconds on one worker thread)
+    import os
+    import subprocess
+    import sys
+
+    with _scheduler_and_worker_processes() as (address, scheduler):
+        root = str(Path(__file__).parents[1])
+        env = {**os.environ, "PYTHONPATH": root}
+        argv = ["search", "pairs", "--ratio", "2", "--module", "1", "2", "3", "--teeth", "12",
+                "80", "--shifts", "-0.5", "1", "0.01", "--scheduler", address,
+                "--connect-timeout", "2"]  # fmt: skip
+        run = "import sys; from trains.cli.app import main; sys.exit(main(sys.argv[1:]))"
+        cli = subprocess.Popen([sys.executable, "-c", run, *argv], env=env, text=True,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)  # fmt: skip
+        time.sleep(3.0)  # s: started, connected, chunks running
+        scheduler.kill()
+        out, err = cli.communicate(timeout=60)
+    assert cli.returncode == 2, (out, err)
     assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert "the Dask cluster lost work mid-run" in err or "scheduler" in err
 
 
 def test_the_all_extra_reads_parquet_with_pandas():

@@ -662,10 +662,9 @@ def dask_session(args: argparse.Namespace, announce: bool = True) -> Iterator[ob
     seconds = args.connect_timeout or CONNECT_TIMEOUT
     # a scheduler lost mid-run is told in one line (the library's error); Dask's own log of it
     # (a traceback per failed reconnection) would bury that line
-    quiet = [logging.getLogger(name) for name in ("distributed", "tornado", "asyncio")]
-    levels = [log.level for log in quiet]
-    for log in quiet:
-        log.setLevel(logging.CRITICAL + 1)
+    # (Dask sets the levels of its own loggers, so the log is switched off for the command)
+    before = logging.root.manager.disable
+    logging.disable(logging.CRITICAL)
     try:
         with dask.config.set({"distributed.comm.timeouts.connect": seconds}):
             client = dask_client(args.scheduler)
@@ -678,8 +677,7 @@ def dask_session(args: argparse.Namespace, announce: bool = True) -> Iterator[ob
                 with contextlib.suppress(Exception):  # a scheduler gone cannot be told
                     client.close(timeout=seconds)
     finally:
-        for log, level in zip(quiet, levels, strict=True):
-            log.setLevel(level)
+        logging.disable(before)
 
 
 def face_widths(text: str) -> list[float]:
