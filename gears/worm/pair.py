@@ -27,6 +27,7 @@ from gears.arguments import (
     check_tolerance,
 )
 from gears.errors import GearError
+from gears.forces import PairForces, worm_pair_forces
 from gears.meshing import check_friction
 from gears.report import Finding, Report
 from gears.solid.mesh import COLOURS, scene
@@ -337,6 +338,12 @@ class WormPair:
         ``friction``: what :func:`trains.power_flow` charges a worm mesh of a train in each
         direction (the second at or below zero for a self-locking pair)."""
         return self.efficiency(friction, "worm"), self.efficiency(friction, "wheel")
+
+    def forces(self, torque: float, friction: float = 0.0, driving: str = "worm") -> PairForces:
+        """The mesh forces under ``torque`` N m on the worm, with ``friction`` mu and the
+        ``driving`` member: tangential, radial and axial components on worm and wheel (DIN 3996;
+        :func:`gears.forces.worm_pair_forces`, which says the frame)."""
+        return worm_pair_forces(self, torque, friction, driving)
 
     def self_locking(self, friction: float) -> bool:
         """True when the wheel cannot drive the worm (``gamma <= phi'``)."""

@@ -367,3 +367,17 @@ def test_property_views_finite_or_gear_error(torque, friction, mass, speed):
         values = (out.vectors, out.normal, out.torque_2) if hasattr(out, "vectors") else (out,)
         for v in values:
             assert np.all(np.isfinite(np.asarray(v, float)))
+
+
+def test_worm_pair_forces_view_is_the_formula():
+    # WormPair.forces is the thin view of gears.forces.worm_pair_forces (same numbers), and its
+    # tangential force on the worm is F_t1 = 2000 T / d_1 (DIN 3996; worm W1: z1 2, q 10, m 5)
+    from gears import WormPair
+    from gears.forces import worm_pair_forces
+
+    pair = WormPair(2, 40, 5, diameter_quotient=10)
+    view = pair.forces(12.0, 0.05)
+    formula = worm_pair_forces(pair, 12.0, 0.05)
+    assert view.rows() == formula.rows()
+    d1 = pair.worm_diameter  # q m = 50 mm
+    assert abs(view.tangential[0] - 2000 * 12.0 / d1) < 1e-9 * 2000 * 12.0 / d1
