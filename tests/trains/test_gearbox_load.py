@@ -339,8 +339,9 @@ def test_the_rated_search_keeps_stages_that_pass_thanks_to_the_ring_relief():
     # the 12 missing ones have 18-tooth planets whose rings pass only with the default tip
     # relief (the stage pre-filter judged the nominal tip). Now they are found, and every
     # stage found passes its own check (the brute-force comparison is in test_synthesis.py)
-    found = synthesize_gearbox(20, 2, z_max=100, torque=50, speed=1500,
-                               face_width=[10, 15, 20, 25, 30], top=100, progress=False)  # fmt: skip
+    widths = [10, 15, 20, 25, 30]
+    found = synthesize_gearbox(20, 2, z_max=100, torque=50, speed=1500, face_width=widths,
+                               top=100, progress=False)  # fmt: skip
     planets18 = [g for g in found if any(18 in c.teeth[1:3] for c in g.stages)]
     assert planets18
     for g in planets18:
