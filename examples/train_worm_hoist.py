@@ -48,3 +48,33 @@ for worm in (
     g, phi = math.radians(worm.lead_angle), math.radians(worm.friction_angle(MU))
     assert abs(up.efficiency - math.tan(g) / math.tan(g + phi) * 0.98) < 1e-9
     assert down.self_locking == (worm.lead_angle <= worm.friction_angle(MU))
+
+# the worm's efficiency both ways over its lead angle (Ozols (14.15), (14.18)) at this friction:
+# lowering stays at or below zero (self-locking) until the lead angle passes the friction angle
+try:
+    import matplotlib.pyplot as plt
+except ImportError:
+    pass
+else:
+    from gears.worm import worm_efficiency
+
+    phi = WormPair(1, 40, 4.0, diameter_quotient=16).friction_angle(MU)
+    gammas = [0.5 + 0.25 * k for k in range(119)]  # lead angle, deg
+    fig, ax = plt.subplots(figsize=(6, 3.6))
+    for driving, label in (("worm", "lifting (worm drives)"), ("wheel", "lowering (load drives)")):
+        eta = [max(float(worm_efficiency(g, phi, driving)), 0.0) for g in gammas]
+        ax.plot(gammas, eta, label=label)
+    for worm in (
+        WormPair(1, 40, 4.0, diameter_quotient=16),
+        WormPair(2, 40, 4.0, diameter_quotient=10),
+    ):
+        ax.axvline(worm.lead_angle, color="0.5", ls=":", lw=0.8)
+        ax.annotate(f"z1 {worm.starts}, q {worm.diameter_quotient:g}", (worm.lead_angle, 0.05),
+                    rotation=90, fontsize=8, ha="right")  # fmt: skip
+    ax.axvline(phi, color="k", lw=0.8, label=f"friction angle {phi:.2f} deg")
+    ax.set_xlabel("lead angle gamma [deg]")
+    ax.set_ylabel("tooth efficiency")
+    ax.set_ylim(0, 1)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
