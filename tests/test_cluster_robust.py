@@ -117,10 +117,25 @@ def test_ctrl_c_leaves_no_task_on_the_scheduler():
         assert _wait_until(lambda: not cluster.scheduler.tasks), len(cluster.scheduler.tasks)
 
 
+#: a worker whose environment has no geartrain: its version lookup finds no distribution
+_NO_GEARTRAIN = """
+import importlib.metadata as m, sys
+found = m.version
+def version(name):
+    if name == "geartrain":
+        raise m.PackageNotFoundError(name)
+    return found(name)
+m.version = version
+from distributed.cli.dask_worker import main
+sys.exit(main())
+"""
+
+
 @contextlib.contextmanager
-def _scheduler_and_worker_processes():
+def _scheduler_and_worker_processes(worker_code: str | None = None):
     """A Dask scheduler and one worker as processes of their own on the loopback address (a
-    scheduler that can be killed as a real one dies)."""
+    scheduler that can be killed as a real one dies); ``worker_code`` runs the worker instead
+    of ``python -m distributed.cli.dask_worker``."""
     import os
     import socket
     import subprocess
@@ -136,8 +151,9 @@ def _scheduler_and_worker_processes():
     scheduler = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host",
                                   "127.0.0.1", "--port", str(port), "--dashboard-address", ":0",
                                   "--no-show"], **quiet)  # fmt: skip
-    worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address,
-                               "--nthreads", "1", "--no-dashboard"], **quiet)  # fmt: skip
+    run = ["-c", worker_code] if worker_code else ["-m", "distributed.cli.dask_worker"]
+    worker = subprocess.Popen([sys.executable, *run, address, "--nthreads", "1",
+                               "--no-dashboard", "--no-nanny"], **quiet)  # fmt: skip
     try:
         with Client(address, timeout=30) as probe:
             probe.wait_for_workers(1, timeout=30)
@@ -172,6 +188,20 @@ def test_a_scheduler_killed_mid_run_is_one_line():
     assert cli.returncode == 2, (out, err)
     assert err.count("\n") == 1 and "Traceback" not in err, err
     assert "the Dask cluster lost work mid-run" in err or "scheduler" in err
+
+
+def test_a_worker_without_geartrain_is_named_before_any_work(capsys):
+    # issue 26: a 57-line traceback ending in "a bug in geartrain" (pair search) or "workers
+    # died" (gearbox search); now one GearError / TrainError naming the worker, before any work
+    with _scheduler_and_worker_processes(_NO_GEARTRAIN) as (address, _):
+        with pytest.raises(GearError, match=r"1 workers, 1 without geartrain \(tcp://"):
+            pairs(**SEARCH, client=address, progress=False)
+        with pytest.raises(TrainError, match="without geartrain"):
+            synthesize_gearbox(12, 2, z_max=60, client=address, progress=False)
+        code = main(["search", "pairs", "--ratio", "2", "--module", "2", "--teeth", "14", "40",
+                     "--scheduler", address])  # fmt: skip
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "without geartrain" in err, err
 
 
 def test_the_all_extra_reads_parquet_with_pandas():
