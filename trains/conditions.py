@@ -34,9 +34,17 @@ from typing import Any
 
 import numpy as np
 
-from gears import BevelPair, Finding, Gear, GearPair
+from gears import BevelPair, Finding, Gear, GearError, GearPair
+from gears.arguments import check_flag
+from trains.errors import TrainError
 
-__all__ = ["assembly_number", "bevel_neighbour_gap", "closure_margin", "neighbour_gap"]
+__all__ = [
+    "assembly_number",
+    "bevel_neighbour_gap",
+    "closure_margin",
+    "neighbour_gap",
+    "refuse_failing",
+]
 
 
 def assembly_number(z_a, z_c, z_d, z_b, internal_a=False, internal_b=False):
@@ -266,3 +274,21 @@ def bevel_neighbour_finding(planet: str, r, k: int, clearance: float) -> Finding
         f"{reach:.4f} mm from the apex): gap between neighbours {gap:.4f} mm vs clearance "
         f"{need:.4f} mm",
     )  # fmt: skip
+
+
+def refuse_failing(design: Any, check: bool, what: str) -> None:
+    """Refuse to draw a design (a planetary stage, a differential) that fails its ``check()``
+    (planets or pinions that collide, teeth that interfere) unless ``check`` is False: its
+    ``what`` (scene, animation) would show what cannot be built."""
+    try:
+        check = check_flag("check", check)
+    except GearError as exc:
+        raise TrainError(str(exc)) from None
+    if check:
+        failed = design.check().failed()
+        if failed:
+            raise TrainError(
+                f"{design!r} fails its checks ({', '.join(failed)}: see check()), so its {what} "
+                "would show what cannot be built; fix the design, or pass check=False to draw "
+                "it anyway"
+            )

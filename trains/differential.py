@@ -36,6 +36,7 @@ from gears import BevelPair, GearError, Report
 from gears.arguments import MAX_TEETH, check_integer, check_real
 from gears.bevel.drawing import bevel_svg
 from gears.bevel.solid import rotation
+from trains.conditions import refuse_failing
 from trains.errors import TrainError
 from trains.willis import Motion, Train
 
@@ -265,24 +266,6 @@ class Differential:
             self._meshes[key] = (side, pinion)
         return self._meshes[key]
 
-    def _refuse_failing(self, check: bool, what: str) -> None:
-        """Refuse to draw a design that fails :meth:`check` (its pinions may collide, its teeth
-        interfere) unless ``check`` is False."""
-        from gears.arguments import check_flag
-
-        try:
-            check = check_flag("check", check)
-        except GearError as exc:
-            raise TrainError(str(exc)) from None
-        if check:
-            failed = self.check().failed()
-            if failed:
-                names = ", ".join(failed)
-                raise TrainError(
-                    f"{self!r} fails its checks ({names}: see check()), so its {what} would show "
-                    "what cannot be built; fix the design, or pass check=False to draw it anyway"
-                )
-
     def scene(
         self, angle: float = 0.0, left: float = 1.0, right: float = 1.0, tolerance: float = 0.02,
         backlash: float = 0.0, bore: float | None = None, check: bool = True,
@@ -303,7 +286,7 @@ class Differential:
         from gears.solid.mesh import scene
 
         place = self.placements(angle, left, right)
-        self._refuse_failing(check, "scene")
+        refuse_failing(self, check, "scene")
         try:
             tolerance = check_tolerance(tolerance, module=self.module)
             check_budget(
@@ -353,7 +336,7 @@ class Differential:
             raise TrainError(str(exc)) from None
         turn = 2 * 360.0 / self.pinion if turn is None else turn
         self.placements(0.0, left, right)  # refuse bad speeds and unassemblable pinions now
-        self._refuse_failing(check, "animation")
+        refuse_failing(self, check, "animation")
         if isinstance(turn, bool) or not isinstance(turn, numbers.Real) or not math.isfinite(turn):
             raise TrainError(f"turn = {turn!r}; valid is a finite number of degrees")
         side, pinion = self._solids(tolerance, 0.0, None)

@@ -36,6 +36,7 @@ from gears.files import check_output
 from gears.solid.animate import FORMATS, write_animation
 from gears.solid.mesh import COLOURS, gear_solid, helix_twist, transform
 from gears.solid.mesh import scene as solid_scene
+from trains.conditions import refuse_failing
 from trains.errors import TrainError
 
 if TYPE_CHECKING:
@@ -108,23 +109,6 @@ def outlines(stage, angle: float = 0.0, tolerance: float = 0.01, fixed: str = "r
     except GearError as exc:
         raise TrainError(str(exc)) from None
     return {name: p for name, _, p in placed_outlines(stage, angle, tolerance, fixed, {})}
-
-
-def refuse_failing(stage, check: bool, what: str) -> None:
-    """Refuse to draw a stage that fails its checks (planets that collide, teeth that
-    interfere) unless ``check`` is False: a drawing would show what cannot be built."""
-    try:
-        check = check_flag("check", check)
-    except GearError as exc:
-        raise TrainError(str(exc)) from None
-    if check:
-        failed = stage.check().failed()
-        if failed:
-            raise TrainError(
-                f"{stage!r} fails its checks ({', '.join(failed)}: see check()), so its {what} "
-                "would show what cannot be built; fix the design, or pass check=False to draw "
-                "it anyway"
-            )
 
 
 def scene(stage, angle: float = 0.0, face_width: float | None = None,
