@@ -46,7 +46,8 @@ def test_virtual_pinion_carries_the_mean_cone_force():
     assert r.quantities["F_t"] == pytest.approx(2000 * 120.0 / d_m1, rel=1e-9)
     assert r.quantities["N_L"][0] == pytest.approx(60 * 900.0 * 20000.0, rel=1e-12)
     assert r.quantities["N_L"][1] == pytest.approx(60 * 900.0 * 20000.0 * 18 / 45, rel=1e-12)
-    assert r.settings["torque"] == 120.0 and "ISO 10300" in r.settings["bevel"]
+    assert r.settings["torque"] == pytest.approx(120.0, rel=1e-15)
+    assert "ISO 10300" in r.settings["bevel"]
 
 
 def test_differential_rating_is_its_pair_under_the_split_torque():

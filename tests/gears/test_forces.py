@@ -182,7 +182,7 @@ def test_bearing_reactions_balance(forces, zs, span):
     scale = 1 + np.abs(f).sum() * (span + 300)
     assert np.allclose(m[:2], 0.0, atol=1e-9 * scale)
     assert m[2] / 1000 == pytest.approx(torque, rel=1e-12, abs=1e-12 * scale)
-    assert r[1, 2] == 0.0  # the floating bearing takes no axial force
+    assert abs(r[1, 2]) <= 1e-12 * scale  # the floating bearing takes no axial force
 
 
 def test_rotate_forces_keeps_length_and_z():
