@@ -29,6 +29,7 @@ from trains.cli._common import (
     finite,
     integer,
     positive,
+    progress_bar,
     scene_argument,
     write_scene,
 )
@@ -169,9 +170,10 @@ def run(args: argparse.Namespace) -> int:
         from trains.errors import TrainError
 
         raise TrainError("--tolerance applies with --scene only")
-    write_scene(
-        args, lambda tol: pair.scene(tolerance=tol), SCENE_TOLERANCE,
-        lambda sc, tol: f"worm and hobbed wheel at zero backlash, "
-        f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
-    )  # fmt: skip
+    with progress_bar("hobbing the wheel", unit="position") as progress:  # seconds to minutes
+        write_scene(
+            args, lambda tol: pair.scene(tolerance=tol, progress=progress), SCENE_TOLERANCE,
+            lambda sc, tol: f"worm and hobbed wheel at zero backlash, "
+            f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
+        )  # fmt: skip
     return OK if report.ok else CHECK_FAILED
