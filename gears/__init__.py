@@ -35,6 +35,7 @@ _getattr, __dir__, __all__ = attach(
         "Material": "gears.rating.materials",
         "MATERIALS": "gears.rating.materials",
         "Modification": "gears.contact.modification",
+        "ModificationSearch": "gears.contact.result",
         "NonCircularPair": "gears.noncircular.pair",
         "pair_geometry": "gears.meshing",
         "pair_margins": "gears.checks",

@@ -51,7 +51,7 @@ if TYPE_CHECKING:
     import trimesh
     from numpy.typing import ArrayLike
 
-    from gears.contact.result import Contact, HarrisMap
+    from gears.contact.result import Contact, HarrisMap, ModificationSearch
     from gears.cutting.cutter import ShaperCutter
     from gears.rating.capacity import Rating
     from gears.rating.losses import MeshLosses
@@ -619,7 +619,9 @@ class GearPair:
         if torque is None or speed is None:
             raise GearError("rating needs torque (N m) and speed (rpm), or spectrum=")
         if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):
-            factors = self._contact_factors(torque * application_factor, misalignment, factors)
+            from gears.contact.result import rating_factors
+
+            factors = rating_factors(self, torque * application_factor, misalignment, factors)
         return rate_pair(
             self, torque, speed, material, life=life, application_factor=application_factor,
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
@@ -628,30 +630,18 @@ class GearPair:
             root=root, root_roughness=root_roughness, **factors,
         )  # fmt: skip
 
-    def _contact_factors(self, torque, misalignment, factors: dict) -> dict:
-        """``K_Hbeta="contact"`` / ``K_Halpha="contact"``: the factors from the loaded contact
-        analysis at ``torque`` (N m, times K_A), with ``misalignment`` F_betax in um."""
-        f_bx = 0.0 if misalignment is None else check_real("misalignment", misalignment, -1e4, 1e4)
-        c = self.contact(torque, misalignment=f_bx / 1000.0)
-        out = dict(factors)
-        if out.get("K_Hbeta") == "contact":
-            out["K_Hbeta"] = c.K_Hbeta
-        if out.get("K_Halpha") == "contact":
-            out["K_Halpha"] = c.K_Halpha
-            out.setdefault("K_Falpha", c.K_Halpha)  # ISO 6336-1 clause 8: K_Falpha = K_Halpha
-        return out
-
     # --- loaded tooth contact analysis ---------------------------------------------------------
     def contact(
-        self, torque: float, *, misalignment: float = 0.0, positions: int = 64, slices: int = 30,
-        center_distance_error: float = 0.0, modulus: float = 206000.0, poisson: float = 0.3,
+        self, torque: float, *, misalignment: float = 0.0, f_ma: float = 0.0, f_sh: float = 0.0,
+        positions: int = 64, slices: int = 30, center_distance_error: float = 0.0,
+        modulus: float = 206000.0, poisson: float = 0.3,
     ) -> Contact:  # fmt: skip
         """The loaded tooth contact analysis under ``torque`` (N m on gear 1) over one mesh
         cycle: transmission error, mesh stiffness, load sharing, contact pattern, K_Hbeta and
-        K_Halpha (:func:`gears.contact.result.contact`; the gears' ``modification`` apply).
+        K_Halpha (:func:`gears.contact.result.contact`; the gears' ``modification`` apply;
+        external and internal pairs; ``misalignment`` or its parts ``f_ma`` and ``f_sh``, mm
+        over the face in the plane of action).
 
-        Examples
-        --------
         >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
         >>> c = p.contact(300)
         >>> round(c.mean_mesh_stiffness, 2), round(c.peak_to_peak, 2)   # N/(mm um), um
@@ -660,8 +650,9 @@ class GearPair:
         from gears.contact.result import contact
 
         return contact(
-            self, torque, misalignment=misalignment, positions=positions, slices=slices,
-            center_distance_error=center_distance_error, modulus=modulus, poisson=poisson,
+            self, torque, misalignment=misalignment, f_ma=f_ma, f_sh=f_sh, positions=positions,
+            slices=slices, center_distance_error=center_distance_error, modulus=modulus,
+            poisson=poisson,
         )  # fmt: skip
 
     def harris(
@@ -674,6 +665,20 @@ class GearPair:
 
         return harris(self, torques, reliefs, relief_length=relief_length, kind=kind,
                       positions=positions, slices=slices)  # fmt: skip
+
+    def best_modification(self, torque: float, **options) -> ModificationSearch:
+        """The tip relief (both gears) and crowning (gear 1) of the least transmission error
+        peak to peak at the design ``torque``, N m on gear 1 (``options``: the grids, tilt
+        and limits of :func:`gears.contact.result.best_modification`).
+
+        >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+        >>> s = p.best_modification(300)
+        >>> round(s.tip_relief * 1000, 1), round(s.best_peak_to_peak, 2)   # um, um
+        (25.1, 1.83)
+        """
+        from gears.contact.result import best_modification
+
+        return best_modification(self, torque, **options)
 
     # --- checks ----------------------------------------------------------------------------------
     def outlines(

@@ -119,7 +119,7 @@ LAYERS = {
             "layout",
             "cycle",
         ],
-        ["capacity", "loading"],
+        ["capacity", "loading", "planetary.contact"],
         ["catalog", "differential", "planetary.stage"],
         [
             "toml_format",

@@ -28,6 +28,7 @@ _WHERE = {
     "PowerFlow": "trains.power",
     "Relation": "trains.relations",
     "RelationPower": "trains.power",
+    "StageContact": "trains.planetary.contact",
     "Structure": "trains.relations",
     "Train": "trains.willis",
     "TrainError": "trains.errors",

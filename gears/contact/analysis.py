@@ -20,6 +20,12 @@ springs its exact solution is found by the active set: cells sorted by gap enter
 until the next gap lies above the approach (:func:`share_load`, vectorised over positions,
 loads and reliefs at once). A test solves the same problem by ``scipy.optimize.nnls``.
 
+An internal pair (gear 2 a ring) is the same model on its own path of contact: N2 lies behind
+N1 (``u_N2 = (r_b1 - r_b2) tan alpha_wt``), the ring's tooth is the stockier internal tooth of
+:func:`gears.contact.compliance.tooth_compliance` and the Hertzian radius of a convex on a
+concave flank, ``rho_1 rho_2 / (rho_2 - rho_1)``, keeps the external form ``u (u_N2 - u) /
+u_N2``.
+
 Slices do not couple (each slice bends on its own), the Hertzian approach is linear, and the
 teeth are perfect involutes apart from their modifications: the model of the slice method
 (e.g. Harris 1958; Tavakoli and Houser 1986; Velex and Maatar 1996 without the coupling).
@@ -48,6 +54,7 @@ __all__ = [
     "harris_map",
     "loaded_contact",
     "mesh_cells",
+    "modification_grid",
     "pair_gaps",
     "share_load",
 ]
@@ -103,15 +110,17 @@ def mesh_cells(start, end, base_pitch, face_width, tan_base_helix, positions, sl
     return u, y, active
 
 
-def cell_stiffness(u, start, end, n2, gear1, gear2, modulus, poisson, width):
+def cell_stiffness(u, start, end, n2, gear1, gear2, modulus, poisson, width, internal=False):
     """Stiffness (N/mm) of cells of width ``width`` (mm) at the roll positions ``u``: the
     pair's compliance integrated at :data:`TABLE` points of ``[start, end]``, a cubic spline
     between them.
-    ``gear1``/``gear2`` are ``(rb, alpha2, rf, bore_radius)``; ``n2`` is u at N2."""
+    ``gear1``/``gear2`` are ``(rb, alpha2, rf, bore_radius)``; ``n2`` is u at N2 (a ring's
+    N2 lies behind N1: its roll length is ``u - n2``)."""
     from scipy.interpolate import CubicSpline  # heavy: imported where used
 
     grid = np.linspace(start, end, TABLE)
-    table = mesh_compliance(grid / gear1[0], (n2 - grid) / gear2[0], gear1, gear2, poisson)
+    t2 = (grid - n2 if internal else n2 - grid) / gear2[0]
+    table = mesh_compliance(grid / gear1[0], t2, gear1, gear2, poisson, internal=internal)
     return modulus * width / CubicSpline(grid, table)(u)
 
 
@@ -120,22 +129,26 @@ def loaded_contact(geometry: dict, load, gaps_from, positions=64, slices=30, mod
     """The loaded contact of one pair over a mesh cycle, as a dict of arrays.
 
     ``geometry`` holds the pair as numbers: ``rb1, rb2, ra1, ra2, center_distance,
-    base_pitch, face_width, tan_base_helix`` and ``gear1``/``gear2`` (``(rb, alpha2, rf,
-    bore_radius)``). ``load`` is the transverse load F_bt along the line of action (N; an array
-    broadcasts in front). ``gaps_from(u, y, start, end)`` gives the gaps (mm) of cells at roll
+    base_pitch, face_width, tan_base_helix``, ``gear1``/``gear2`` (``(rb, alpha2, rf,
+    bore_radius)``) and ``internal`` (gear 2 a ring; a ring's ``ra2`` is its inner tip).
+    ``load`` is the transverse load F_bt along the line of action (N; an array broadcasts in
+    front). ``gaps_from(u, y, start, end)`` gives the gaps (mm) of cells at roll
     ``u`` and face position ``y``, with leading axes of its own in front (reliefs), or None.
 
     Returns ``start, end, n2, u, y, active, stiffness (cells, N/mm), gaps, delta (mm), forces
     (N), unloaded (mm)`` over (..., positions, pairs, slices).
     """
     g = geometry
-    tan_wt = math.sqrt(max((g["center_distance"] / (g["rb1"] + g["rb2"])) ** 2 - 1.0, 0.0))
+    internal = bool(g.get("internal", False))
+    sigma = -1.0 if internal else 1.0
+    base_sum = g["rb1"] + sigma * g["rb2"]
+    tan_wt = math.sqrt(max((g["center_distance"] / base_sum) ** 2 - 1.0, 0.0))
     start, end, n2 = (float(v) for v in line_positions(g["ra1"], g["ra2"], g["rb1"], g["rb2"],
-                                                        tan_wt, 1.0))  # fmt: skip
+                                                        tan_wt, sigma))  # fmt: skip
     b, pb = g["face_width"], g["base_pitch"]
     u, y, active = mesh_cells(start, end, pb, b, g["tan_base_helix"], positions, slices)
     k = cell_stiffness(np.clip(u, start, end), start, end, n2, g["gear1"], g["gear2"], modulus,
-                       poisson, b / slices)  # fmt: skip
+                       poisson, b / slices, internal)  # fmt: skip
     k = np.where(active, k, 0.0)
     gaps = np.zeros(u.shape) if gaps_from is None else gaps_from(u, y, start, end)
     gaps = np.where(active, gaps, np.inf)
@@ -183,6 +196,29 @@ def harris_map(geometry: dict, loads, reliefs, shape_of, positions=64, slices=30
                          slices, modulus, poisson)  # fmt: skip
     d = out["delta"]
     return d.max(axis=-1) - d.min(axis=-1)
+
+
+def modification_grid(geometry: dict, load, tip_reliefs, crownings, shapes_of, positions=64,
+                      slices=30, modulus=206000.0, poisson=0.3):  # fmt: skip
+    """Transmission error peak to peak (mm) and K_Hbeta over a grid of tip reliefs (rows, mm)
+    and crownings (columns, mm) at one load (N): the gaps are ``base + C_a tip + C_b crown``
+    where ``shapes_of(u, y, start, end)`` returns ``(base, tip, crown)`` (the gaps the pair
+    has anyway, and the shapes per unit amount). One solve over the whole grid."""
+    ca = np.asarray(tip_reliefs, float)[:, None]
+    cb = np.asarray(crownings, float)[None, :]
+    grid = (ca + 0.0 * cb).ravel(), (cb + 0.0 * ca).ravel()
+
+    def gaps(u, y, start, end):
+        base, tip, crown = shapes_of(u, y, start, end)
+        return base + grid[0][:, None, None, None] * tip + grid[1][:, None, None, None] * crown
+
+    out = loaded_contact(geometry, load, gaps, positions, slices, modulus, poisson)
+    d = out["delta"]
+    shape = (ca.shape[0], cb.shape[1])
+    p2p = (d.max(axis=-1) - d.min(axis=-1)).reshape(shape)
+    per_slice = out["forces"].sum(axis=-2).mean(axis=-2)
+    k_hbeta = (per_slice.max(axis=-1) / per_slice.mean(axis=-1)).reshape(shape)
+    return p2p, k_hbeta
 
 
 def pair_gaps(u, y, start, end, face_width, mods1, mods2, lengths1, lengths2, misalignment=0.0):

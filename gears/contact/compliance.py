@@ -16,6 +16,17 @@ under the tooth adds the fillet-foundation compliance of Sainsot, Velex and Duve
 J. Mech. Des. 126, eq. 8), and the two flanks the Hertzian approach of a line contact, taken
 constant with the load (Yang and Sun 1985: 4 (1 - nu^2) / (pi E L)).
 
+A ring's (internal gear's) tooth is the same cantilever turned inside out: its root circle lies
+outside, its flanks are concave involutes that spread apart toward the root (the half angle at
+roll ``t`` is ``psi_0 + inv``, where an external tooth's is ``psi_0 - inv``), and the load meets
+its centreline at ``alpha_1 = t + psi_0`` (an external tooth's ``t - psi_0``); the integrals
+run from the point of contact out to the root circle, and the moment arm keeps its form with
+the distance measured outward (the internal-gear potential-energy model of Chen and Shao 2013,
+Mech. Mach. Theory 69; Liang, Zuo and Pandey 2014, Mech. Mach. Theory 76). Its foundation takes
+Sainsot's fit with the same body ratio as an external gear's default (a thick rim): as the
+tooth count grows, an internal and an external tooth both tend to the basic rack's tooth, which
+a test checks.
+
 Every function returns a compliance times ``E L`` (dimensionless): divide by the Young modulus
 and the face width of a slice to get mm/N. The involute is parametrised by its roll angle
 ``t = tan alpha_y`` (radians), so a contact ``u`` mm along the line of action from the base
@@ -66,7 +77,8 @@ def _involute_point(t, rb, alpha2):
     return r * np.cos(psi), r * np.sin(psi)
 
 
-def tooth_compliance(t, rb, alpha2, rf, bore_radius=None, poisson=0.3, nodes=24):
+def tooth_compliance(t, rb, alpha2, rf, bore_radius=None, poisson=0.3, nodes=24,
+                     internal=False):  # fmt: skip
     """Compliance times ``E L`` of one tooth loaded at the roll angle ``t`` (radians):
     ``{"bending", "shear", "axial", "foundation"}`` (arrays over ``t``; the gear's values
     broadcast with it).
@@ -77,17 +89,22 @@ def tooth_compliance(t, rb, alpha2, rf, bore_radius=None, poisson=0.3, nodes=24)
         Roll angle of the point of contact, ``tan`` of its pressure angle (radians).
     rb, alpha2, rf : float or array
         Base radius (mm), half the angle the tooth subtends on the base circle (s_b / d_b,
-        radians), root radius (mm).
+        radians; a ring's: s_t / d - inv alpha_t, which may be negative), root radius (mm).
     bore_radius : float, optional
-        r_int of the gear body for the foundation (default: half the root radius).
+        r_int of the gear body for the foundation (default: half the root radius; a ring's
+        foundation takes the same body ratio).
     poisson : float
         Poisson's ratio nu.
     nodes : int
         Gauss-Legendre points over each part of the tooth.
+    internal : bool
+        A ring's tooth (see the module docstring).
     """
     t = np.asarray(t, float)
     rb, alpha2, rf = (np.asarray(v, float) for v in (rb, alpha2, rf))
     r_int = rf / 2.0 if bore_radius is None else np.asarray(bore_radius, float)
+    if internal:
+        return _ring_tooth(t, rb, alpha2, rf, r_int, poisson, nodes)
     x, w = _gauss(nodes)
     # the tooth starts at the root circle: on the involute when it lies above the base circle,
     # else at the base circle with a straight part of the base thickness below it
@@ -123,7 +140,24 @@ def tooth_compliance(t, rb, alpha2, rf, bore_radius=None, poisson=0.3, nodes=24)
     b2, i2 = parts(ys, hs, length * w)
     bend, inv_h = bend + b2, inv_h + i2
     # fillet foundation, Sainsot et al. (2004) eq. 8
-    uf = yk - hk * np.tan(a1) - yf
+    found = _foundation(yk - hk * np.tan(a1) - yf, hf, rf, r_int, a1)
+    return _parts(bend, inv_h, a1, found, poisson)
+
+
+def _parts(bend, inv_h, a1, found, poisson):
+    cos1, sin1 = np.cos(a1), np.sin(a1)
+    return {
+        "bending": bend,
+        "shear": 1.2 * (1.0 + poisson) * cos1**2 * inv_h,
+        "axial": 0.5 * sin1**2 * inv_h,
+        "foundation": found,
+    }
+
+
+def _foundation(uf, hf, rf, r_int, a1):
+    """Sainsot, Velex and Duverger (2004) eq. 8 times ``E L``: ``uf`` the distance along the
+    centreline from where the load line crosses it to the root section, ``hf`` the half chord
+    there."""
     sf = 2.0 * hf
     theta_f = np.arcsin(np.clip(hf / rf, -1.0, 1.0))
     hfi = rf / r_int
@@ -133,15 +167,42 @@ def tooth_compliance(t, rb, alpha2, rf, bore_radius=None, poisson=0.3, nodes=24)
         for row in SAINSOT
     ]  # fmt: skip
     ratio = uf / sf
-    found = cos1**2 * (
+    return np.cos(a1) ** 2 * (
         coef[0] * ratio**2 + coef[1] * ratio + coef[2] * (1 + coef[3] * np.tan(a1) ** 2)
     )
-    return {
-        "bending": bend,
-        "shear": 1.2 * (1.0 + poisson) * cos1**2 * inv_h,
-        "axial": 0.5 * sin1**2 * inv_h,
-        "foundation": found,
-    }
+
+
+def _ring_tooth(t, rb, psi0, rf, r_int, poisson, nodes):
+    """A ring's tooth loaded at roll ``t``: the involute from the point of contact out to the
+    root circle (where the fillet starts the tooth is taken as involute, as an external tooth
+    whose root lies above its base circle), half angle ``psi0 + t - atan t``."""
+    x, w = _gauss(nodes)
+    tf = np.sqrt(np.maximum((rf / rb) ** 2 - 1.0, 0.0))
+    t = np.minimum(t, tf)
+
+    def point(tau):
+        r = rb * np.sqrt(1.0 + tau * tau)
+        psi = psi0 + tau - np.arctan(tau)
+        return r, psi
+
+    rk, psik = point(t)
+    xk, hk = rk * np.cos(psik), rk * np.sin(psik)
+    a1 = t + psi0
+    half = (tf - t)[..., None] / 2.0
+    tau = t[..., None] + half * (x + 1.0)
+    rb_, p0 = (np.asarray(v)[..., None] if np.ndim(v) else v for v in (rb, psi0))
+    r = rb_ * np.sqrt(1.0 + tau * tau)
+    psi = p0 + tau - np.arctan(tau)
+    slope = tau / (1.0 + tau * tau)
+    dx = r * (slope * np.cos(psi) - np.sin(psi) * tau * slope) * (half * w)
+    xs, hs = r * np.cos(psi), r * np.sin(psi)
+    arm = (xs - xk[..., None]) * np.cos(a1)[..., None] - hk[..., None] * np.sin(a1)[..., None]
+    bend = np.sum(1.5 * arm * arm / hs**3 * dx, axis=-1)
+    inv_h = np.sum(dx / hs, axis=-1)
+    r_f, psi_f = point(tf)
+    xf, hf = r_f * np.cos(psi_f), r_f * np.sin(psi_f)
+    found = _foundation(xf - xk - hk * np.tan(a1), hf, rf, r_int, a1)
+    return _parts(bend, inv_h, a1, found, poisson)
 
 
 def hertz_compliance(poisson=0.3):
@@ -150,10 +211,11 @@ def hertz_compliance(poisson=0.3):
     return 4.0 * (1.0 - np.asarray(poisson, float) ** 2) / np.pi
 
 
-def mesh_compliance(t1, t2, gear1, gear2, poisson=0.3, nodes=24):
+def mesh_compliance(t1, t2, gear1, gear2, poisson=0.3, nodes=24, internal=False):
     """Compliance times ``E L`` of one tooth pair touching at the roll angles ``t1`` (gear 1)
     and ``t2`` (gear 2): both teeth (bending, shear, axial, foundation) and the Hertzian
-    approach, in series. ``gear1`` and ``gear2`` are ``(rb, alpha2, rf, bore_radius)``."""
+    approach, in series. ``gear1`` and ``gear2`` are ``(rb, alpha2, rf, bore_radius)``;
+    ``internal``: gear 2 is a ring."""
     c1 = tooth_compliance(t1, *gear1, poisson=poisson, nodes=nodes)
-    c2 = tooth_compliance(t2, *gear2, poisson=poisson, nodes=nodes)
+    c2 = tooth_compliance(t2, *gear2, poisson=poisson, nodes=nodes, internal=internal)
     return sum(c1.values()) + sum(c2.values()) + hertz_compliance(poisson)

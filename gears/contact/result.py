@@ -1,5 +1,6 @@
 """Layer 8, classes: :class:`Contact`, the loaded tooth contact analysis of one pair as a thin
-view, and :class:`HarrisMap`, the transmission error over relief and load.
+view, :class:`HarrisMap`, the transmission error over relief and load, and
+:class:`ModificationSearch`, the tip relief and crowning that minimise it at a design load.
 
 ``GearPair.contact(torque, ...)`` calls :func:`contact`, which reads the pair's geometry and
 its gears' :class:`gears.contact.modification.Modification` and calls the vectorised
@@ -11,7 +12,7 @@ face width; loads in N along the transverse line of action (F_bt = T1 / r_b1).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from typing import TYPE_CHECKING
 
@@ -22,10 +23,11 @@ from gears.contact.analysis import (
     contact_factors,
     harris_map,
     loaded_contact,
+    modification_grid,
     pair_gaps,
     share_load,
 )
-from gears.contact.modification import KINDS, Modification
+from gears.contact.modification import KINDS, Modification, lead_relief
 from gears.errors import GearError
 
 if TYPE_CHECKING:
@@ -33,7 +35,17 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
     from numpy.typing import ArrayLike
 
-__all__ = ["MAX_CELLS", "Contact", "HarrisMap", "contact", "contact_geometry", "harris"]
+__all__ = [
+    "MAX_CELLS",
+    "Contact",
+    "HarrisMap",
+    "ModificationSearch",
+    "best_modification",
+    "contact",
+    "contact_geometry",
+    "harris",
+    "rating_factors",
+]
 
 #: The most cells (positions x tooth pairs x slices, times loads x reliefs for a map) one call
 #: solves: about 100 MB of arrays and a second of work.
@@ -47,13 +59,16 @@ ARCSEC = 180.0 / math.pi * 3600.0
 
 def contact_geometry(pair, center_distance_error: float = 0.0) -> dict:
     """The pair as the numbers :func:`gears.contact.analysis.loaded_contact` takes, or a
-    :class:`GearError` for a pair the analysis does not cover (racks, internal gears, no face
-    width, a contact ratio below 1)."""
-    if getattr(pair, "is_rack", False) or getattr(pair, "internal", False):
+    :class:`GearError` for a pair the analysis does not cover (racks, no face width, a contact
+    ratio below 1)."""
+    if getattr(pair, "is_rack", False):
         raise GearError(
-            "contact analysis covers external gear pairs; got a "
-            f"{'rack' if pair.is_rack else 'ring (internal gear)'} as gear 2"
+            "contact analysis covers external and internal gear pairs; got a rack as gear 2 "
+            "(a rack's tooth is a straight-sided beam the compliance model does not cover)"
         )
+    internal = bool(pair.internal)
+    sigma = -1.0 if internal else 1.0
+    pair.path_of_contact  # noqa: B018 - refuses a tip inside its base circle, naming it
     g1, g2 = pair.g1, pair.g2
     widths = [w for w in (g1.face_width, g2.face_width) if w]
     if not widths:
@@ -63,19 +78,22 @@ def contact_geometry(pair, center_distance_error: float = 0.0) -> dict:
     a = pair.center_distance
     da = check_real("center_distance_error", center_distance_error, -0.5 * g1.module,
                     0.5 * g1.module)  # fmt: skip
-    if a + da <= rb1 + rb2:
+    base_sum = rb1 + sigma * rb2
+    if a + da <= abs(base_sum):
+        what = "difference" if internal else "sum"
         raise GearError(f"center_distance_error = {da:g} mm puts the centres within the base "
-                        "circles' sum: no line of action")  # fmt: skip
+                        f"circles' {what}: no line of action")  # fmt: skip
     geometry = {
         "rb1": rb1, "rb2": rb2, "ra1": ra1, "ra2": ra2, "center_distance": a + da,
         "base_pitch": g1.base_pitch, "face_width": min(widths),
         "tan_base_helix": math.tan(math.radians(g1.base_helix_angle)),
         "gear1": (rb1, g1.base_thickness / g1.base_diameter, g1.root_diameter / 2, None),
-        "gear2": (rb2, g2.base_thickness / g2.base_diameter, g2.root_diameter / 2, None),
+        "gear2": (rb2, _half_angle(g2), g2.root_diameter / 2, None),
+        "internal": internal,
     }  # fmt: skip
-    tan_wt = math.sqrt((a + da) ** 2 / (rb1 + rb2) ** 2 - 1.0)
-    n2 = (rb1 + rb2) * tan_wt
-    path = math.sqrt(ra1**2 - rb1**2) - (n2 - math.sqrt(ra2**2 - rb2**2))
+    tan_wt = math.sqrt((a + da) ** 2 / base_sum**2 - 1.0)
+    n2 = base_sum * tan_wt
+    path = math.sqrt(ra1**2 - rb1**2) - (n2 - sigma * math.sqrt(ra2**2 - rb2**2))
     total = (path + geometry["face_width"] * abs(geometry["tan_base_helix"])) / g1.base_pitch
     if total < 1.0:
         raise GearError(
@@ -84,6 +102,17 @@ def contact_geometry(pair, center_distance_error: float = 0.0) -> dict:
         )
     geometry["path"] = path
     return geometry
+
+
+def _half_angle(gear) -> float:
+    """Half the angle a tooth subtends on the base circle, radians: s_b / d_b for an external
+    gear; a ring's ``s_t / d - inv alpha_t`` (its teeth widen outward and may not reach the
+    base circle, so the value may be negative)."""
+    if not gear.internal:
+        return gear.base_thickness / gear.base_diameter
+    alpha_t = math.radians(gear.transverse_pressure_angle)
+    s_t = gear.tooth_thickness(gear.reference_diameter)
+    return float(s_t / gear.reference_diameter - (math.tan(alpha_t) - alpha_t))
 
 
 def _modifications(pair):
@@ -302,9 +331,10 @@ class Contact:
         )
 
 
-def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 64,
-            slices: int = 30, center_distance_error: float = 0.0,
-            modulus: float = STEEL[0], poisson: float = STEEL[1]) -> Contact:  # fmt: skip
+def contact(pair, torque: float, *, misalignment: float = 0.0, f_ma: float = 0.0,
+            f_sh: float = 0.0, positions: int = 64, slices: int = 30,
+            center_distance_error: float = 0.0, modulus: float = STEEL[0],
+            poisson: float = STEEL[1]) -> Contact:  # fmt: skip
     """The loaded tooth contact analysis of ``pair`` under ``torque`` (N m on gear 1).
 
     Parameters
@@ -314,8 +344,17 @@ def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 
     torque : float
         Torque on gear 1, N m > 0.
     misalignment : float
-        Mesh misalignment in the plane of action, mm over the face width (f_ma + f_sh as the
-        effective F_betax of ISO 6336-1), within +- one module.
+        Mesh misalignment in the plane of action, mm over the face width, as one number
+        (the sum of ``f_ma`` and ``f_sh`` when those are not given apart), within +- one
+        module.
+    f_ma, f_sh : float
+        The two parts of the misalignment ISO 6336-1 (clause 7.6) separates: f_ma from
+        manufacture (the helix slope deviations and the bores' alignment; either sign, fixed
+        with the load) and f_sh from the deflection of the shafts and bearings at this
+        torque (its sign: the end of the face it closes); each mm over the face width in
+        the plane of action, within +- one module. The analysis tilts the flanks by
+        ``misalignment + f_ma + f_sh``: its gaps are the real tilt, so ISO's 1.33 on f_sh
+        (an allowance for the estimate of method C) does not apply.
     positions, slices : int
         Positions over one base pitch (4 ... 4096) and slices across the face (1 ... 1000).
     center_distance_error : float
@@ -331,7 +370,14 @@ def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 
     """
     geometry = contact_geometry(pair, center_distance_error)
     torque, positions, slices = _checked(torque, positions, slices, geometry)
-    misalignment = check_real("misalignment", misalignment, -pair.g1.module, pair.g1.module)
+    limit = pair.g1.module
+    misalignment = check_real("misalignment", misalignment, -limit, limit)
+    f_ma = check_real("f_ma", f_ma, -limit, limit)
+    f_sh = check_real("f_sh", f_sh, -limit, limit)
+    tilt = misalignment + f_ma + f_sh
+    if abs(tilt) > limit:
+        raise GearError(f"misalignment + f_ma + f_sh = {tilt:g} mm; valid is within +- one "
+                        f"module ({limit:g} mm)")  # fmt: skip
     modulus = check_real("modulus", modulus, 1.0, 1e7)
     poisson = check_real("poisson", poisson, 0.0, 0.5, False, True)
     load = 1000.0 * torque / geometry["rb1"]
@@ -341,17 +387,33 @@ def contact(pair, torque: float, *, misalignment: float = 0.0, positions: int = 
     def gaps(u, y, start, end):
         short = max(end - start - geometry["base_pitch"], 0.0)
         return pair_gaps(u, y, start, end, b, m1, m2, _lengths(m1, short, b),
-                         _lengths(m2, short, b), misalignment)  # fmt: skip
+                         _lengths(m2, short, b), tilt)  # fmt: skip
 
-    plain = m1 is None and m2 is None and misalignment == 0.0
+    plain = m1 is None and m2 is None and tilt == 0.0
     arrays = loaded_contact(geometry, load, None if plain else gaps, positions, slices,
                             modulus, poisson)  # fmt: skip
     settings = {
-        "positions": positions, "slices": slices, "misalignment": misalignment,
+        "positions": positions, "slices": slices, "misalignment": tilt, "f_ma": f_ma,
+        "f_sh": f_sh,
         "center_distance_error": center_distance_error, "modulus": modulus,
         "poisson": poisson, "face_width": b,
     }  # fmt: skip
     return Contact(pair, torque, load, arrays, settings)
+
+
+def rating_factors(pair, torque, misalignment, factors: dict) -> dict:
+    """``K_Hbeta="contact"`` / ``K_Halpha="contact"`` of :meth:`gears.GearPair.rating`: the
+    factors from the loaded contact analysis at ``torque`` (N m, times K_A), with
+    ``misalignment`` F_betax in um."""
+    f_bx = 0.0 if misalignment is None else check_real("misalignment", misalignment, -1e4, 1e4)
+    c = contact(pair, torque, misalignment=f_bx / 1000.0)
+    out = dict(factors)
+    if out.get("K_Hbeta") == "contact":
+        out["K_Hbeta"] = c.K_Hbeta
+    if out.get("K_Halpha") == "contact":
+        out["K_Halpha"] = c.K_Halpha
+        out.setdefault("K_Falpha", c.K_Halpha)  # ISO 6336-1 clause 8: K_Falpha = K_Halpha
+    return out
 
 
 @dataclass(frozen=True)
@@ -408,6 +470,132 @@ def harris(
     short = max(geometry["path"] - geometry["base_pitch"], 0.0)
     length = short if relief_length is None else relief_length
     return HarrisMap(reliefs, torques, p2p * 1000.0, float(length))
+
+
+@dataclass(frozen=True)
+class ModificationSearch:
+    """Peak-to-peak transmission error (um) and K_Hbeta over tip relief (rows, mm, the same on
+    both gears) and crowning (columns, mm, on gear 1: the pair's C_b) at one design torque
+    (:func:`best_modification`)."""
+
+    tip_reliefs: np.ndarray
+    crownings: np.ndarray
+    peak_to_peak: np.ndarray
+    K_Hbeta: np.ndarray
+    torque: float
+    relief_length: float
+    kind: str = "linear"
+    max_K_Hbeta: float | None = None
+
+    @property
+    def index(self) -> tuple[int, int]:
+        """(row, column) of the best cell: the smallest peak to peak among the cells whose
+        K_Hbeta is within ``max_K_Hbeta`` (all cells when it is None or none is)."""
+        p2p = self.peak_to_peak
+        if self.max_K_Hbeta is not None and np.any(self.K_Hbeta <= self.max_K_Hbeta):
+            p2p = np.where(self.K_Hbeta <= self.max_K_Hbeta, p2p, np.inf)
+        i, j = np.unravel_index(int(np.argmin(p2p)), p2p.shape)
+        return int(i), int(j)
+
+    @property
+    def tip_relief(self) -> float:
+        """The best tip relief C_a, mm."""
+        return float(self.tip_reliefs[self.index[0]])
+
+    @property
+    def crowning(self) -> float:
+        """The best crowning C_b, mm."""
+        return float(self.crownings[self.index[1]])
+
+    @property
+    def best_peak_to_peak(self) -> float:
+        """The peak to peak at the best cell, um."""
+        return float(self.peak_to_peak[self.index])
+
+    @property
+    def modifications(self) -> tuple[Modification, Modification]:
+        """The best cell as ``(gear 1's, gear 2's)`` :class:`Modification`: the tip relief on
+        both, the crowning on gear 1."""
+        kw = {"tip_relief_length": self.relief_length, "kind": self.kind}
+        return (Modification(tip_relief=self.tip_relief, crowning=self.crowning, **kw),
+                Modification(tip_relief=self.tip_relief, **kw))  # fmt: skip
+
+    def apply(self, pair):
+        """``pair`` with the best modifications on its gears (each gear's other modifications,
+        such as a root relief or a helix slope, are replaced)."""
+        m1, m2 = self.modifications
+        return type(pair)(pair.g1.with_(modification=m1), pair.g2.with_(modification=m2),
+                          pair.tip_shortening)  # fmt: skip
+
+
+def best_modification(
+    pair, torque: float, *, tip_reliefs: ArrayLike | None = None,
+    crownings: ArrayLike | None = None, relief_length: float | None = None,
+    kind: str = "linear", misalignment: float = 0.0, f_ma: float = 0.0, f_sh: float = 0.0,
+    max_K_Hbeta: float | None = None, positions: int = 32, slices: int | None = None,
+) -> ModificationSearch:  # fmt: skip
+    """The tip relief and crowning that minimise the transmission error's peak to peak at the
+    design ``torque`` (N m on gear 1), over a grid solved at once
+    (:func:`gears.contact.analysis.modification_grid`).
+
+    ``tip_reliefs`` (mm, on both gears) default to 41 values from 0 to twice the unmodified
+    pair's largest loaded transmission error at this torque (the relief that cancels the
+    deflection lies below it, Harris 1958); ``crownings`` (mm, on gear 1) to 0 for an aligned
+    pair, else 9 values from 0 to the larger of the tilt and that deflection. The tilt is
+    ``misalignment + f_ma + f_sh`` (mm over the face, as in :func:`contact`); ``max_K_Hbeta``
+    keeps the best cell among those whose face load factor is within it. The gears' own tip
+    relief and crowning are replaced; their other modifications stay. ``slices`` defaults to 1
+    for an aligned spur pair without lead modification, else 20.
+    """
+    geometry = contact_geometry(pair)
+    torque = check_positive("torque", torque, "N m")
+    limit = pair.g1.module
+    tilt = sum(check_real(n, v, -limit, limit) for n, v in
+               (("misalignment", misalignment), ("f_ma", f_ma), ("f_sh", f_sh)))  # fmt: skip
+    kind = check_choice("kind", kind, KINDS)
+    if relief_length is not None:
+        relief_length = check_real("relief_length", relief_length, 0.0, 1e6)
+    if max_K_Hbeta is not None:
+        max_K_Hbeta = check_real("max_K_Hbeta", max_K_Hbeta, 1.0, 1e3, False)
+    positions = check_integer("positions", positions, 4, 4096)
+    own = [None if m is None else replace(m, tip_relief=0.0, crowning=0.0)
+           for m in _modifications(pair)]  # fmt: skip
+    load = 1000.0 * torque / geometry["rb1"]
+    if tip_reliefs is None or crownings is None:
+        d = loaded_contact(geometry, load, None, positions, 1)["delta"]
+        deflection = float(np.max(d))
+    tip_reliefs = (np.linspace(0.0, min(2.0 * deflection, 1.0), 41) if tip_reliefs is None
+                   else _array("tip_reliefs", tip_reliefs, -1e-12, 1.0))  # fmt: skip
+    if crownings is None:
+        top = min(max(abs(tilt), deflection), 1.0)
+        crownings = np.linspace(0.0, top, 9) if tilt != 0.0 else np.zeros(1)
+    else:
+        crownings = _array("crownings", crownings, -1e-12, 1.0)
+    lead = any(m is not None and (m.end_relief or m.helix_slope) for m in own)
+    if slices is None:
+        aligned = tilt == 0.0 and not lead and not np.any(crownings > 0)
+        slices = 1 if pair.g1.helix_angle == 0 and aligned else 20
+    _checked(torque, positions, slices, geometry, tip_reliefs.size * crownings.size)
+    b = geometry["face_width"]
+    m1, m2 = own
+
+    def shapes(u, y, start, end):
+        short = max(end - start - geometry["base_pitch"], 0.0)
+        base = pair_gaps(u, y, start, end, b, m1, m2, _lengths(m1, short, b),
+                         _lengths(m2, short, b), tilt)  # fmt: skip
+        length = short if relief_length is None else relief_length
+        unit = Modification(tip_relief=1.0, tip_relief_length=length, kind=kind)
+        lengths = unit.lengths(short, b)
+        tip = pair_gaps(u, y, start, end, b, unit, unit, lengths, lengths)
+        crown = lead_relief(y, b, crowning=1.0) + 0.0 * u
+        return base, tip, crown
+
+    p2p, k_hbeta = modification_grid(geometry, load, tip_reliefs, crownings, shapes, positions,
+                                     int(slices))  # fmt: skip
+    short = max(geometry["path"] - geometry["base_pitch"], 0.0)
+    length = short if relief_length is None else relief_length
+    return ModificationSearch(tip_reliefs, crownings, p2p * 1000.0, k_hbeta, torque,
+                              float(length), kind, max_K_Hbeta)  # fmt: skip
 
 
 def _array(name, values, low, high) -> np.ndarray:

@@ -262,8 +262,6 @@ def test_bad_input_names_the_value(kwargs, word):
 def test_pairs_outside_the_model_are_refused():
     with pytest.raises(GearError, match="face_width"):
         contact(GearPair(Gear(20, 3), Gear(50, 3)), 10)
-    with pytest.raises(GearError, match="ring"):
-        contact(GearPair(Gear(20, 3, face_width=10), Gear(60, 3, internal=True)), 10)
     with pytest.raises(GearError, match="rack"):
         contact(GearPair(Gear(20, 3, face_width=10), Rack(3)), 10)
     with pytest.raises(GearError, match="tip_relief"):

@@ -32,6 +32,7 @@ from trains.errors import TrainError
 from trains.loading import TrainLoads, planetary_loads
 from trains.planetary import checks, placement, scene
 from trains.planetary.checks import MAX_PLANETS, Assembly
+from trains.planetary.contact import StageContact, stage_contact
 from trains.planetary.placement import Placement
 from trains.planetary.schemes import (
     _GEARS,
@@ -566,6 +567,25 @@ class Planetary:
         fixed, input, output = ({"carrier": self.carrier}.get(r, r) for r in roles)
         k = load_sharing(self.n_planets) if load_sharing_factor is None else load_sharing_factor
         return planetary_loads(self, input, output, fixed, torque, speed, k, **options)
+
+    def contact(self, torque: float, *, fixed: str = "ring", input: str | None = None,
+                output: str | None = None, load_sharing_factor: float = 1.0,
+                face_width: float | None = None, angles: Iterable[float] | None = None,
+                **options: Any) -> StageContact:  # fmt: skip
+        """Loaded tooth contact of every mesh (:class:`trains.planetary.contact.StageContact`):
+        one planet's mesh of each kind by :meth:`gears.GearPair.contact` under its torque share
+        (``torque`` N m on the input, roles as in :meth:`ratio`, times ``load_sharing_factor``),
+        the planets' mesh phases from :meth:`placement` (``angles``), and the net transmission
+        error. ``face_width`` (mm) replaces the gears' own; ``options`` go to the contact.
+
+        >>> c = Planetary(19, 29, 77, n_planets=3, module=2).contact(40, face_width=20,
+        ...                                                          positions=32, slices=1)
+        >>> [round(g, 4) for g in c.phases["sun-planet"]], c.in_phase("sun-planet")
+        ([0.0, 0.3333, 0.6667], False)
+        """
+        return stage_contact(self, torque, fixed=fixed, input=input, output=output,
+                             load_sharing_factor=load_sharing_factor, face_width=face_width,
+                             angles=angles, **options)  # fmt: skip
 
     # ---- conditions (trains.planetary.checks) ---------------------------------------------
     def assembly(self) -> Assembly:
