@@ -669,13 +669,7 @@ class GearPair:
     def best_modification(self, torque: float, **options) -> ModificationSearch:
         """The tip relief (both gears) and crowning (gear 1) of the least transmission error
         peak to peak at the design ``torque``, N m on gear 1 (``options``: the grids, tilt
-        and limits of :func:`gears.contact.result.best_modification`).
-
-        >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
-        >>> s = p.best_modification(300)
-        >>> round(s.tip_relief * 1000, 1), round(s.best_peak_to_peak, 2)   # um, um
-        (25.1, 1.83)
-        """
+        and limits of :func:`gears.contact.result.best_modification`)."""
         from gears.contact.result import best_modification
 
         return best_modification(self, torque, **options)

@@ -546,6 +546,12 @@ def best_modification(
     keeps the best cell among those whose face load factor is within it. The gears' own tip
     relief and crowning are replaced; their other modifications stay. ``slices`` defaults to 1
     for an aligned spur pair without lead modification, else 20.
+
+    >>> from gears import Gear, GearPair
+    >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
+    >>> s = p.best_modification(300)
+    >>> round(s.tip_relief * 1000, 1), round(s.best_peak_to_peak, 2)   # um, um
+    (25.1, 1.83)
     """
     geometry = contact_geometry(pair)
     torque = check_positive("torque", torque, "N m")
