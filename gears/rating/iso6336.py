@@ -570,8 +570,9 @@ def _checked(args, m1, m2):
 
 
 def _blocks(a, mats, fields, threads, key=None):
-    """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of
-    ``_CHUNK`` pairs on ``threads`` threads, as :class:`PairRatings`."""
+    """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of about
+    ``_CHUNK`` pairs (whole rows of the first axis) on ``threads`` threads, as
+    :class:`PairRatings`."""
     if key is not None and all(type(a[k]) is np.float64 for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
@@ -592,25 +593,34 @@ def _blocks(a, mats, fields, threads, key=None):
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
         )
-    flat = {k: v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
-    store = {f: np.empty(n, bool if f == "valid" else int if f == "reason" else float)
+    out_shape, inner = shape, n // shape[0]
+    if len(shape) > 1 and inner > _CHUNK:  # rows too long for a block: the pairs one by one
+        a = {k: v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
+        shape, inner = (n,), 1
+    # blocks of whole rows along the first axis: an argument constant along it (a spectrum's
+    # bins, shape (bins,) beside pairs of shape (pairs, 1)) is not copied to each row, and the
+    # gears' part runs once per pair, not once per pair and bin
+    rows = max(1, _CHUNK // inner)
+    lead = len(shape)
+    part_of = {k: v.ndim == lead and v.shape[0] > 1 for k, v in a.items()}
+    store = {f: np.empty(shape, bool if f == "valid" else int if f == "reason" else float)
              for f in wanted}  # fmt: skip
 
     def work(bounds):
         i0, i1 = bounds
-        part = {k: v if v.ndim == 0 else v[i0:i1] for k, v in flat.items()}
+        part = {k: v[i0:i1] if part_of[k] else v for k, v in a.items()}
         res = rate_block(part, mats, fields)
         for f, column in store.items():
             column[i0:i1] = res[f]
 
-    blocks = list(itertools.pairwise([*range(0, n, _CHUNK), n]))
+    blocks = list(itertools.pairwise([*range(0, shape[0], rows), shape[0]]))
     if threads == 1:
         for blk in blocks:
             work(blk)
     else:
         for _ in _pool(threads).map(work, blocks):
             pass
-    return PairRatings(**{f: store[f].reshape(shape) if f in store else None for f in _FIELDS})
+    return PairRatings(**{f: store[f].reshape(out_shape) if f in store else None for f in _FIELDS})
 
 
 def _number_of(v):

@@ -31,6 +31,7 @@ from numpy.typing import ArrayLike
 
 from gears.display import html_table
 from gears.errors import GearError
+from gears.meshing import _pool, default_threads
 from gears.rating.iso6336 import rate_pairs
 from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
 from gears.rating.materials import material
@@ -56,8 +57,9 @@ LIFE_CAP = 1e12
 MODES = ("pitting", "bending")
 #: Most bins a spectrum may have.
 MAX_BINS = 10_000
+_BLOCK = 1 << 15  # bins x pairs solved at once: the arrays stay in the cache
+_THREADED = 1 << 14  # ratings (pairs x bins) from which the gears and modes run on threads
 _TABLES = {"pitting": _PITTING_TABLE, "bending": _BENDING_TABLE}
-_BISECTIONS = 48  # halvings of ln S over [ln 1e-4, ln 1e4]: 18.4 / 2^48 ~ 7e-14 (at most)
 
 
 def _mode_table(mode: str):
@@ -77,20 +79,25 @@ def _knots(code, table):
     return tuple(v[..., None] for v in (*logn[code].T, *logy[code].T))
 
 
-def _log_cycles(z, knots):
-    """``(ln N_f, d ln N_f / d z)`` at ``z = ln(sigma / sigma_inf)``: ln N_f = +inf below the
-    endurance knot, 0 (one cycle) above the static knot, the log-log lines between."""
+def _slopes(knots):
+    """The S-N curve's slopes d ln N_f / d ln sigma above and below its knee (both < 0)."""
     k0, k1, k2, y0, y1, y2 = knots
-    a1 = (k1 - k0) / (y1 - y0)
-    a2 = (k2 - k1) / (y2 - y1)
-    upper = z > y1
-    slope = np.where(upper, a1, a2)
-    ln_nf = np.where(upper, k1 + (z - y1) * a1, k1 + (z - y1) * a2)
-    static = z > y0
-    ln_nf = np.where(static, 0.0, ln_nf)
-    slope = np.where(static, 0.0, slope)
-    endless = z <= y2
-    return np.where(endless, np.inf, ln_nf), np.where(endless, 0.0, slope)
+    return (k1 - k0) / (y1 - y0), (k2 - k1) / (y2 - y1)
+
+
+def _sloped_log_cycles(u, knots):
+    """ln N_f on the sloped part of the S-N curve, ``u`` = ln(sigma / sigma_inf) - y1 from its
+    knee (the log-log lines through the knots)."""
+    a1, a2 = _slopes(knots)
+    return knots[1] + a2 * np.minimum(u, 0.0) + a1 * np.maximum(u, 0.0)
+
+
+def _log_cycles(z, knots):
+    """ln N_f at ``z = ln(sigma / sigma_inf)``: +inf below the endurance knot, 0 (one cycle)
+    above the static knot, the log-log lines between."""
+    y0, y1, y2 = knots[3:]
+    ln_nf = np.where(z > y0, 0.0, _sloped_log_cycles(z - y1, knots))
+    return np.where(z <= y2, np.inf, ln_nf)
 
 
 def cycles_to_failure(ratio, code, mode="pitting"):
@@ -108,8 +115,7 @@ def cycles_to_failure(ratio, code, mode="pitting"):
     knots = _knots(code, _mode_table(mode))
     if code.ndim:
         knots = tuple(v[..., 0] for v in knots)
-    ln_nf, _ = _log_cycles(z, knots)
-    return np.exp(np.minimum(ln_nf, math.log(LIFE_CAP * 3.6e6)))
+    return np.exp(np.minimum(_log_cycles(z, knots), math.log(LIFE_CAP * 3.6e6)))
 
 
 def _log_ratio_cycles(stress, strength, cycles, axis):
@@ -131,8 +137,7 @@ def miner_damage(stress, strength, cycles, code, mode="pitting", axis=-1):
     0.5
     """
     z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
-    ln_nf, _ = _log_cycles(z, _knots(code, _mode_table(mode)))
-    return np.sum(np.exp(lc - ln_nf), axis=-1)
+    return np.sum(np.exp(lc - _log_cycles(z, _knots(code, _mode_table(mode)))), axis=-1)
 
 
 def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
@@ -140,70 +145,104 @@ def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
     between D(S sigma) < 1 and D(S sigma) >= 1 in [1e-4, 1e4] (arrays broadcast, the bins on
     ``axis``; an array ``code`` has the shape of the result).
 
-    Found by Newton's method on ln D(ln S), kept inside a bracket that each step narrows, and by
-    bisection where Newton cannot step (no damage yet, or the jump at the endurance limit),
-    until the bracket or the step is below 10^-13.
+    With x = ln S, each bin's damage is 0 up to its endurance knot, exp(g - a x) on a sloped
+    segment of the S-N curve (a the segment's slope d ln N_f / d ln sigma) and N_L above the
+    static knot: D(x) is non-decreasing, smooth between the knots of the bins and jumps at
+    some. A bisection over the bins' knots, sorted (3 per bin), finds the stretch where D
+    reaches 1; there D = C + A_1 exp(-a_1 x) + A_2 exp(-a_2 x): the answer is the stretch's
+    start where D jumps over 1, in closed form where one segment is loaded, and by Newton's
+    method on the convex ln D from the stretch's end otherwise.
 
     >>> round(float(equivalent_safety([1000.0], [1000.0], [5e7], 4)), 9)   # one bin at its knot
     1.0
     """
+    return _damage_and_safety(stress, strength, cycles, code, mode, axis)[1]
+
+
+def _damage_and_safety(stress, strength, cycles, code, mode, axis=-1):
+    """Miner's sum and the equivalent safety (:func:`equivalent_safety`) of the same bins."""
     z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
-    knots = _knots(code, _mode_table(mode))
-    shape = z.shape[:-1]
-    bins = z.shape[-1]
-    z = z.reshape(-1, bins)
-    lc = lc.reshape(-1, bins)
-    knots = tuple(np.broadcast_to(k, (*shape, 1)).reshape(-1, 1) if np.ndim(k) else k
-                  for k in knots)  # fmt: skip
-    lo, hi, x, active = _jump_bracket(z, lc, knots)
-    for _ in range(_BISECTIONS + 40):
-        if active.size == 0:
-            break
-        kn = tuple(k[active] if np.ndim(k) else k for k in knots)
-        xa = x[active]
-        ln_nf, slope = _log_cycles(z[active] + xa[:, None], kn)
-        terms = np.exp(lc[active] - ln_nf)
-        d = terms.sum(axis=1)
-        dd = -(terms * slope).sum(axis=1)  # dD / dx >= 0
-        failed = d >= 1.0
-        la = np.where(failed, lo[active], xa)
-        ha = np.where(failed, xa, hi[active])
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = xa - np.log(d) * d / dd
-        newton = np.isfinite(step) & (d > 0) & (dd > 0) & (step > la) & (step < ha)
-        nxt = np.where(newton, step, 0.5 * (la + ha))
-        finished = (ha - la < 1e-13) | (newton & (np.abs(step - xa) < 1e-13))
-        lo[active], hi[active], x[active] = la, ha, nxt
-        active = active[~finished]
-    return np.exp(x).reshape(shape)[()] if not shape else np.exp(x).reshape(shape)
+    shape, bins = z.shape[:-1], z.shape[-1]
+    z, lc = z.reshape(-1, bins), lc.reshape(-1, bins)
+    n = len(z)
+    knots = tuple(np.broadcast_to(k, (*shape, 1)).reshape(n) if np.ndim(k) else k
+                  for k in _knots(code, _mode_table(mode)))  # fmt: skip
+    d, s = np.empty(n), np.empty(n)
+    step = max(1, _BLOCK // bins)  # blocks that stay in the cache
+    for i in range(0, n, step):
+        rows = slice(i, i + step)
+        # the bins on the first axis, the rows contiguous on the last (fast broadcasts, sums)
+        d[rows], s[rows] = _solve(z[rows].T.copy(), lc[rows].T.copy(),
+                                  tuple(k[rows] if np.ndim(k) else k for k in knots))  # fmt: skip
+    return (d.reshape(shape), s.reshape(shape)) if shape else (d[0], s[0])
 
 
-def _jump_bracket(z, lc, knots):
-    """The start of :func:`equivalent_safety` on ``(pairs, bins)`` arrays: D jumps where a bin
-    reaches the endurance knot (x_j = y2 - z_j). Where D crosses 1 in a jump, that x_j is the
-    answer; elsewhere the jumps bracket a stretch where D is continuous, for Newton's method.
-    Returns ``(lo, hi, x, active)``: the brackets, the start (the answer where found) and the
-    rows still to solve."""
-    y2 = knots[5]
-    k2 = knots[2]
-    xe = y2 - z  # (n, B) jump points
-    kn = tuple(k[:, :, None] if np.ndim(k) else k for k in knots)
-    # D just below each jump point: bin j itself (and any bin jumping there too) is endless
-    ln_nf, _ = _log_cycles(z[:, None, :] + xe[:, :, None], kn)
-    left = np.exp(lc[:, None, :] - ln_nf).sum(axis=2)  # (n, B): D(x_j - 0)
-    same = xe[:, :, None] == xe[:, None, :]
-    right = left + (same * np.exp(lc - k2)[:, None, :]).sum(axis=2)  # D(x_j + 0)
-    lo0, hi0 = math.log(1e-4), math.log(1e4)
-    inside = (xe > lo0) & (xe < hi0)
-    jump = inside & (left < 1.0) & (right >= 1.0)
-    found = jump.any(axis=1)
-    x_jump = np.where(jump, xe, np.inf).min(axis=1)
-    lo = np.where(inside & (right < 1.0), xe, lo0).max(axis=1)
-    hi = np.where(inside & (left >= 1.0), xe, hi0).min(axis=1)
-    lo = np.maximum(lo, lo0)
-    hi = np.minimum(hi, hi0)
-    x = np.where(found, x_jump, 0.5 * (lo + hi))
-    return lo, hi, x, np.flatnonzero(~found)
+def _solve(z, lc, knots):
+    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows)."""
+    n = z.shape[1]
+    y0, y1, y2 = knots[3:]
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        # each bin's knots in x = ln S: endless up to e2, the knee at e1, static above e0
+        e2, e1, e0 = y2 - z, y1 - z, y0 - z
+        n_l = np.exp(lc)
+
+        def log_terms(x):
+            """ln of each bin's damage at x on its sloped segment (the slope's ends held)."""
+            u = np.minimum(np.maximum(x - e1, y2 - y1), y0 - y1)
+            return lc - _sloped_log_cycles(u, knots)
+
+        def damage(x):
+            """D at x (left-continuous: a bin at one of its knots is on the side below)."""
+            terms = np.exp(log_terms(x)) * (x > e2)
+            static = x > e0
+            if static.any():
+                terms = np.where(static, n_l, terms)
+            return terms.sum(axis=0)
+
+        d0 = damage(np.zeros(n))
+        # the first stretch (knots[k-1], knots[k]] at whose end D >= 1 (k = 3 bins: beyond the
+        # last knot, every bin static)
+        sorted_knots = np.sort(np.concatenate([e2, e1, e0]).T, axis=1)
+        last = sorted_knots.shape[1]
+        rows = np.arange(n)
+        lo, hi = np.zeros(n, int), np.full(n, last)
+        while np.any(lo < hi):
+            mid = (lo + hi) // 2
+            reached = (damage(sorted_knots[rows, np.minimum(mid, last - 1)]) >= 1.0) | (mid == last)
+            searching = lo < hi
+            hi = np.where(searching & reached, mid, hi)
+            lo = np.where(searching & ~reached, mid + 1, lo)
+        end = np.where(hi < last, sorted_knots[rows, np.minimum(hi, last - 1)], np.inf)
+        start = np.where(hi > 0, sorted_knots[rows, np.maximum(hi - 1, 0)], -np.inf)
+        # on the stretch D = C + A1 exp(-a1 w) + A2 exp(-a2 w), w = x - its end: each bin on
+        # its segment there
+        ref = np.where(np.isfinite(end), end, 0.0)
+        sloped = (end > e2) & (end <= e0)
+        t = np.exp(np.maximum(log_terms(ref), -700.0))
+        c = np.where(end > e0, n_l, 0.0).sum(axis=0)
+        A1 = (t * (sloped & (end > e1))).sum(axis=0)
+        A2 = (t * (sloped & (end <= e1))).sum(axis=0)
+        a1, a2 = (np.broadcast_to(a, (n,)) for a in _slopes(knots))
+        w0 = start - ref
+        jumped = c + A1 * np.exp(-a1 * w0) + A2 * np.exp(-a2 * w0) >= 1.0  # at its start
+        left = np.log1p(-np.minimum(c, 1.0))  # ln(1 - C)
+        w = np.where(A1 > 0, (np.log(A1) - left) / a1, (np.log(A2) - left) / a2)
+        both = np.flatnonzero(~jumped & (A1 > 0) & (A2 > 0) & np.isfinite(end))
+        wb = np.zeros(both.size)
+        for _ in range(60):  # ln D is convex: Newton from the end comes down monotonically
+            if both.size == 0:
+                break
+            t1 = A1[both] * np.exp(-a1[both] * wb)
+            t2 = A2[both] * np.exp(-a2[both] * wb)
+            d = c[both] + t1 + t2
+            step = np.log(d) * d / (-a1[both] * t1 - a2[both] * t2)
+            wb = wb - step
+            w[both] = wb
+            more = np.abs(step) > 1e-15 * (1.0 + np.abs(wb + ref[both]))
+            both, wb = both[more], wb[more]
+        x = np.where(jumped, start, np.where(np.isfinite(end) | (c >= 1.0), ref + w, np.inf))
+        x = np.where(np.isnan(x), np.inf, x)
+    return d0, np.exp(np.clip(x, math.log(1e-4), math.log(1e4)))
 
 
 def check_spectrum(spectrum: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -333,7 +372,9 @@ def rate_spectrum(z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: A
                    torques, speeds, life=hours, fields=_NEEDED, errors="raise",
                    **extra)  # fmt: skip
     m1, m2 = _materials(options.get("material", "case-carburized"))
-    return _combine(r, m1.code, m2.code, float(hours.sum()))
+    threads = options.get("threads")
+    threads = default_threads() if threads is None else threads
+    return _combine(r, m1.code, m2.code, float(hours.sum()), threads)
 
 
 def _materials(value):
@@ -343,24 +384,32 @@ def _materials(value):
     return material(mats[0]), material(mats[1])
 
 
-def _combine(r, code1: int, code2: int, total_hours: float) -> SpectrumRatings:
+def _combine(r, code1: int, code2: int, total_hours: float, threads: int = 1) -> SpectrumRatings:
     """Miner's sums, equivalent safeties and lives from the bins' stresses (bins on the last
-    axis of every field of ``r``)."""
+    axis of every field of ``r``); the four gears and modes on ``threads`` threads."""
+
+    def one(job):
+        mode, s, p, f, sym, i, code = job
+        stress = np.asarray(getattr(r, f"{s}{i}"), float)
+        strength = np.asarray(getattr(r, f"{p}{i}"), float) / np.asarray(
+            getattr(r, f"{f}{i}"), float
+        )
+        cycles = np.asarray(getattr(r, f"N_L{i}"), float)
+        d, safety = _damage_and_safety(stress, strength, cycles, code, mode)
+        with np.errstate(divide="ignore"):
+            life = np.where(d > 0, np.minimum(total_hours / d, LIFE_CAP), LIFE_CAP)
+        return {f"D_{sym}{i}": d, f"S_{sym}{i}": safety, f"L_{sym}{i}": life}
+
+    jobs = [(*mode, i, code) for mode in (("pitting", "sigma_H", "sigma_HP", "Z_NT", "H"),
+                                          ("bending", "sigma_F", "sigma_FP", "Y_NT", "F"))
+            for i, code in ((1, code1), (2, code2))]  # fmt: skip
     out = {}
-    for mode, s, p, f, sym in (("pitting", "sigma_H", "sigma_HP", "Z_NT", "H"),
-                               ("bending", "sigma_F", "sigma_FP", "Y_NT", "F")):  # fmt: skip
-        for i, code in ((1, code1), (2, code2)):
-            stress = np.asarray(getattr(r, f"{s}{i}"), float)
-            strength = np.asarray(getattr(r, f"{p}{i}"), float) / np.asarray(
-                getattr(r, f"{f}{i}"), float
-            )
-            cycles = np.asarray(getattr(r, f"N_L{i}"), float)
-            d = miner_damage(stress, strength, cycles, code, mode)
-            out[f"D_{sym}{i}"] = d
-            out[f"S_{sym}{i}"] = equivalent_safety(stress, strength, cycles, code, mode)
-            with np.errstate(divide="ignore"):
-                out[f"L_{sym}{i}"] = np.where(d > 0, np.minimum(total_hours / d, LIFE_CAP),
-                                              LIFE_CAP)  # fmt: skip
+    if threads > 1 and np.size(r.sigma_H1) >= _THREADED:
+        for part in _pool(threads).map(one, jobs):
+            out |= part
+    else:
+        for job in jobs:
+            out |= one(job)
     return SpectrumRatings(**{k: v[()] if np.ndim(v) == 0 else v for k, v in out.items()})
 
 
