@@ -23,6 +23,7 @@ _getattr, __dir__, __all__ = attach(
         "BasicRack": "gears.rack",
         "BevelGear": "gears.bevel.gear",
         "BevelPair": "gears.bevel.pair",
+        "BevelRating": "gears.bevel.rating",
         "conjugate": "gears.noncircular.conjugate",
         "Contact": "gears.contact.result",
         "Finding": "gears.report",

@@ -56,7 +56,7 @@ LAYERS = {
             "bevel.cone",
             "rating._block",
             "rating.losses",
-            "bevel.rating",
+            "bevel.iso10300",
             "search.cluster",
             "contact.analysis",
             "contact.flank",
@@ -70,6 +70,7 @@ LAYERS = {
             "cutting.measure",
             "rating.iso6336",
             "bevel.spherical",
+            "bevel.rating",
             "worm.flank",
         ],
         [

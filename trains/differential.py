@@ -147,8 +147,9 @@ class Differential:
 
     def rating(self, torque: float, left: float, right: float,
                material: Any = "case-carburized", **options: Any) -> dict:  # fmt: skip
-        """Pitting and bending rating of every mesh (``"pinion-right"``, ``"pinion-left"``),
-        after ISO 10300 method B1 (:meth:`gears.BevelPair.rating`).
+        """Pitting and bending rating of every mesh (``"pinion-right"``, ``"pinion-left"``) by
+        ISO 10300 method B1 (:meth:`gears.BevelPair.rating`): a dict of
+        :class:`gears.BevelRating`.
 
         ``torque`` N m on the case, split equally between the side gears and among the
         ``n_pinions`` pinions (a differential without friction); ``left`` and ``right`` the
@@ -157,12 +158,12 @@ class Differential:
         loaded standing still is not rated by ISO 10300. Each pinion is loaded on opposite
         flanks by the two side gears (an idler, Y_M); each side gear meets ``n_pinions`` pinions
         per relative turn. ``options`` go to :meth:`gears.BevelPair.rating` (``life``,
-        ``mounting``, ``quality``, factors).
+        ``mounting``, ``pattern``, ``effective_width``, ``quality``, factors).
 
         >>> d = Differential(side=16, pinion=10, module=3, gleason=True)
         >>> r = d.rating(torque=150, left=90, right=110)
         >>> [round(s, 2) for s in r["pinion-right"].safety_bending]
-        [1.65, 2.21]
+        [1.49, 2.11]
         """
         try:
             t = check_real("torque", torque, 0.0)

@@ -54,7 +54,7 @@ from gears.solid.mesh import COLOURS, scene
 if TYPE_CHECKING:
     import trimesh
 
-    from gears.rating.capacity import Rating
+    from gears.bevel.rating import BevelRating
 
 __all__ = [
     "ANIMATION_BUDGET_3D",
@@ -459,23 +459,26 @@ class BevelPair:
     # --- load capacity ---------------------------------------------------------------------------
     def rating(self, torque: float, speed: float, material: Any = "case-carburized", *,
                life: float = 20000.0, mounting: str = "both-straddle",
-               **options: Any) -> Rating:  # fmt: skip
-        """Pitting and bending rating through the virtual cylindrical gears at the mean cone,
-        after ISO 10300 method B1 (:func:`gears.bevel.rating.bevel_rating`: what is ISO
-        10300's there and what is ISO 6336's).
+               pattern: str = "light-load", **options: Any) -> BevelRating:  # fmt: skip
+        """Pitting and bending rating by ISO 10300 method B1 through the virtual cylindrical
+        gears at the mean cone (:func:`gears.bevel.rating.bevel_rating`: what is ISO 10300's
+        there and what it shares with ISO 6336).
 
-        ``torque`` N m on the pinion at ``speed`` rpm; ``mounting`` sets the mounting factor
-        K_Hbeta-be (:data:`gears.bevel.rating.MOUNTING_FACTORS`); ``options`` as for
-        :meth:`gears.GearPair.rating`. Returns a :class:`gears.Rating`.
+        ``torque`` N m on the pinion at ``speed`` rpm; ``mounting`` and ``pattern`` (how the
+        contact pattern was checked) set the mounting factor K_Hbeta-be
+        (:data:`gears.bevel.iso10300.MOUNTING_FACTORS`); ``effective_width`` (b_eff / b,
+        default 0.85), ``contacts`` and the options of :meth:`gears.GearPair.rating`
+        (``quality``, ``idler``, factors by symbol) pass on. Returns a
+        :class:`gears.bevel.rating.BevelRating`.
 
         >>> r = BevelPair(20, 40, module=3, face_width=20).rating(50, 1500)
         >>> [round(s, 3) for s in r.safety_pitting]
-        [1.699, 1.857]
+        [1.239, 1.266]
         """
         from gears.bevel.rating import bevel_rating  # the rating family: loaded when rated
 
         return bevel_rating(self, torque, speed, material, life=life, mounting=mounting,
-                            **options)  # fmt: skip
+                            pattern=pattern, **options)  # fmt: skip
 
     # --- forces ----------------------------------------------------------------------------------
     def forces(self, torque: float) -> PairForces:
