@@ -36,6 +36,8 @@ def scalar(v) -> bool:
 def where(cond, a, b):
     """``np.where`` that keeps one pair's numbers numpy scalars (a Python branch: ten times
     faster than 0-d arrays, which is most of rating one pair)."""
+    if type(cond) in _NUMBERS and type(a) in _NUMBERS and type(b) in _NUMBERS:
+        return a if cond else b  # the usual numbers, without a call per argument
     if scalar(cond) and scalar(a) and scalar(b):
         return a if cond else b
     return np.where(cond, a, b)

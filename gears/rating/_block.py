@@ -84,8 +84,20 @@ def rate_block(a, mats, fields, cache=None, key=None):
             if len(cache) >= _CACHE_SIZE:
                 cache.clear()
             cache[key] = q
-    q = dict(q)
-    given = _given(a)
+    return load_part(q, a, mats, fields)
+
+
+def load_part(gears, a, mats, fields):
+    """The load's part of :func:`rate_block` on ``gears``, the gears' part that
+    :func:`rate_block` made for the same arguments but the load's (kept and reused): the load
+    factors, stresses and safeties at ``a``'s load. The dict returned holds ``gears`` under
+    ``"gears"``."""
+    q = dict(gears)
+    q["gears"] = gears
+    o = gears["overrides"]  # the gears' own; the load's given factors come with the load
+    if "o_K_A" in a or "o_K_gamma" in a:
+        o = {**o, **{k[2:]: a[k] for k in ("o_K_A", "o_K_gamma") if k in a}}
+    given = _given(a, o)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         _load(q, a, given)
         _load_factors(q, a, mats, given)
@@ -98,8 +110,15 @@ def _hashable(v):
     return v.item() if type(v) is np.ndarray else v
 
 
-def _given(a):
-    o = {k[2:]: v for k, v in a.items() if k.startswith("o_")}
+def _overrides(a):
+    """The factors given by their symbol (``o_<name>`` in ``a``), by name."""
+    return {k[2:]: v for k, v in a.items() if k.startswith("o_")}
+
+
+def _given(a, o=None):
+    """``given(name, value)``: the factor given for ``name``, else ``value`` (``o`` the
+    overrides of ``a`` when known)."""
+    o = _overrides(a) if o is None else o
 
     def given(name, value):
         return o[name] if name in o else value
@@ -109,8 +128,10 @@ def _given(a):
 
 def _gears(a, mats):
     """The gears' part: everything that does not depend on the load."""
-    given = _given(a)
+    o = _overrides(a)
+    given = _given(a, o)
     q = _pair(a)
+    q["overrides"] = o
     _stiffness(q, a, mats, given)
     _contact(q, a, mats, given)
     _root_forms(q, a)

@@ -17,7 +17,7 @@ from gears.display import html_table
 from gears.errors import GearError
 from gears.rating._arrays import number, one_number
 from gears.rating.bending import load_point
-from gears.rating.iso6336 import FACTORS, QUANTITIES, PairRatings, rate_pairs
+from gears.rating.iso6336 import FACTORS, QUANTITIES, OnePair, PairRatings, rate_again, rate_one
 from gears.rating.materials import material
 from gears.rating.root import measure_root
 from gears.report import Finding, Report
@@ -50,12 +50,51 @@ class Rating:
     roots : (str, str)
         How each gear's root form was found (``"ISO 6336-3 (rack)"``, ``"measured (exact
         envelope)"``, ...).
+    kept : OnePair or None
+        The rating's checked arguments but the load's and its gears' part
+        (:class:`gears.rating.iso6336.OnePair`), which :meth:`at` rates at another load.
     """
 
     pair: object
     values: PairRatings
     settings: dict = field(default_factory=dict)
     roots: tuple[str, str] = ("", "")
+    kept: OnePair | None = field(default=None, repr=False, compare=False)
+
+    def at(
+        self, torque: float | None = None, speed: float | None = None, *,
+        life: float | None = None, application_factor: float | None = None,
+    ) -> Rating:  # fmt: skip
+        """The same mesh rated at another load: ``torque`` (N m on gear 1), ``speed`` (rpm),
+        ``life`` (h) and ``application_factor`` K_A, each this rating's where not given.
+
+        Equals ``pair.rating(...)`` with this rating's other settings at that load; only the
+        load's part runs again (F_t, v, K_v, K_Hbeta, K_alpha, Z_L, Z_v, Z_W, the life factors,
+        the stresses; :attr:`kept` holds the rest), the fastest way to rate one pair at many
+        loads. Every factor given to the first rating stays as given (a K_Hbeta or K_Halpha
+        from the contact analysis was found at the first torque: rate again with
+        ``pair.rating`` for it).
+
+        >>> from gears import Gear, GearPair
+        >>> r = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30)).rating(200, 1500)
+        >>> [round(s, 3) for s in r.at(100).safety_bending]
+        [5.519, 5.983]
+        """
+        st = self.settings
+        load = {"torque": st.get("torque") if torque is None else torque,
+                "speed": st.get("speed") if speed is None else speed,
+                "life": st.get("life") if life is None else life,
+                "application_factor": (st.get("application_factor") if application_factor is None
+                                       else application_factor)}  # fmt: skip
+        for name, v in load.items():
+            if type(v) is not float and type(v) is not int:
+                one_number(name, v)
+        if self.kept is None:
+            raise GearError("this Rating keeps no gears' part to rate again: use pair.rating")
+        values = rate_again(self.kept, load_sharing=1.0, **load)
+        settings = dict(st)
+        settings.update({k: float(v) for k, v in load.items()})
+        return Rating(self.pair, values, settings, self.roots, self.kept)
 
     def _get(self, name: str) -> float:
         return float(getattr(self.values, name))
@@ -288,8 +327,9 @@ def rate_pair(
         cutter = "shaper" if shaper else "rack"
         where = "exact envelope" if route == "measured" else "simulated cut"
         routes[i] = f"measured on the {where} ({cutter}-cut)"
-    values = rate_pairs(
-        g1.teeth, g2.teeth, g1.module, b, torque, speed, x1=g1.profile_shift,
+    values, kept = rate_one(
+        z1=g1.teeth, z2=g2.teeth, module=g1.module, face_width=b, torque=torque, speed=speed,
+        x1=g1.profile_shift,
         x2=g2.profile_shift, pressure_angle=g1.pressure_angle, helix_angle=g1.helix_angle,
         internal=g2.internal, material=(m1, m2), sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
         life=life, application_factor=application_factor, quality=quality, roughness=roughness,
@@ -311,7 +351,7 @@ def rate_pair(
         "oil_viscosity": oil_viscosity, "tip_relief": tip_relief, "contacts": contacts,
         "idler": idler, "given": dict(factors),
     }  # fmt: skip
-    return Rating(pair, values, settings, (routes[0], routes[1]))
+    return Rating(pair, values, settings, (routes[0], routes[1]), kept)
 
 
 _ONE = ("torque", "speed", "life", "application_factor", "quality", "roughness", "oil_viscosity",

@@ -46,6 +46,7 @@ not covered.
 
 from __future__ import annotations
 
+import inspect
 import itertools
 import math
 from collections.abc import Sequence
@@ -59,10 +60,19 @@ from gears.meshing import _CHUNK, _pool, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import number as _number
 from gears.rating._arrays import pair_of as _pair_of
-from gears.rating._block import rate_block
+from gears.rating._block import load_part, rate_block
 from gears.rating.materials import Material, material
 
-__all__ = ["FACTORS", "QUANTITIES", "REASONS", "PairRatings", "rate_pairs"]
+__all__ = [
+    "FACTORS",
+    "QUANTITIES",
+    "REASONS",
+    "OnePair",
+    "PairRatings",
+    "rate_again",
+    "rate_one",
+    "rate_pairs",
+]
 
 # --- the factors and their clauses: (symbol, per gear, what, clause) --------------------------
 #: Every factor :func:`rate_pairs` reports and accepts as an override (``K_v=1.0``,
@@ -384,7 +394,48 @@ def rate_pairs(
     >>> round(float(r.S_H1), 4), round(float(r.S_H2), 4)   # TR: 1.0285, 1.0870
     (1.0284, 1.0868)
     """
-    args = dict(locals())  # the arguments by name, before any other local
+    return _rate(dict(locals()))[0]  # the arguments by name
+
+
+_DEFAULTS = {k: p.default for k, p in inspect.signature(rate_pairs).parameters.items()
+             if p.default is not inspect.Parameter.empty}  # fmt: skip
+
+
+class OnePair(NamedTuple):
+    """One pair's checked arguments but the load's, its materials and its gears' part (the
+    dict of :func:`gears.rating._block.rate_block` that does not depend on the load): what
+    :func:`rate_again` rates at another load."""
+
+    arguments: dict
+    materials: tuple
+    gears: dict
+
+
+def rate_one(**arguments: Any) -> tuple[PairRatings, OnePair | None]:
+    """:func:`rate_pairs` (its arguments by name) and, for one pair, its :class:`OnePair` (None
+    for arrays)."""
+    return _rate({**_DEFAULTS, **arguments})
+
+
+def rate_again(one: OnePair, torque, speed, life, application_factor, load_sharing=1.0,
+               fields: Sequence[str] | None = None) -> PairRatings:  # fmt: skip
+    """The pair of ``one`` rated at another load (torque N m, speed rpm, life h, K_A, K_gamma;
+    checked as by :func:`rate_pairs`): its gears' part is not computed again, nor its other
+    arguments checked. Raises a GearError where the pair has no rating at this load."""
+    load = {"torque": torque, "speed": speed, "life": life,
+            "application_factor": application_factor, "load_sharing": load_sharing}  # fmt: skip
+    a = dict(one.arguments)
+    a.update(_load_arguments(load))
+    res = load_part(one.gears, a, one.materials, _RESULTS if fields is None else fields)
+    result, _ = _one_result(res, _RESULTS if fields is None else fields)
+    _raise_invalid(result)
+    return result
+
+
+def _rate(args):
+    """:func:`rate_pairs` on ``args`` (every argument by name), with the :class:`OnePair` of
+    one pair of plain numbers (else None)."""
+    errors, fields = args["errors"], args["fields"]
     if errors not in ("raise", "mask"):
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
     if fields is None:
@@ -395,13 +446,23 @@ def rate_pairs(
             raise GearError(f"fields = {fields!r}; valid are names of PairRatings: {_RESULTS}")
         fields = tuple(f for f in fields if f in _RESULTS)
     a, mats, key = _arguments(args)
-    result = _blocks(a, mats, fields, default_threads() if threads is None else threads, key)
-    if errors == "raise" and not np.all(result.valid):
+    threads = args["threads"]
+    result, gears = _blocks(a, mats, fields, default_threads() if threads is None else threads,
+                            key)  # fmt: skip
+    if errors == "raise":
+        _raise_invalid(result)
+    if gears is None:
+        return result, None
+    return result, OnePair({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats, gears)
+
+
+def _raise_invalid(result):
+    """A GearError naming the first pair without a rating (row and reason), if any."""
+    if not np.all(result.valid):
         bad = np.ravel(~np.asarray(result.valid))
         i = int(np.argmax(bad))
         where = f" (row {i})" if np.ndim(result.valid) else ""
         raise GearError(f"no ISO 6336 rating{where}: {REASONS[int(np.ravel(result.reason)[i])]}")
-    return result
 
 
 def _arguments(args):
@@ -572,7 +633,7 @@ def _checked(args, m1, m2):
 def _blocks(a, mats, fields, threads, key=None):
     """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of about
     ``_CHUNK`` pairs (whole rows of the first axis) on ``threads`` threads, as
-    :class:`PairRatings`."""
+    :class:`PairRatings`, with one pair's gears' part (else None)."""
     if key is not None and all(type(a[k]) is np.float64 for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
@@ -583,16 +644,10 @@ def _blocks(a, mats, fields, threads, key=None):
         one = n == 1 and shape == ()
         res = rate_block(a, mats, fields, _GEARS if one else None, key)
         if one:
-            if len(wanted) == len(_FIELDS):
-                f64 = np.float64
-                values = [res[f] for f in _FIELDS]
-                return PairRatings._make(
-                    [v if type(v) is f64 else np.asarray(v)[()] for v in values]
-                )
-            return PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
+            return _one_result(res, fields)
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
-        )
+        ), None
     out_shape, inner = shape, n // shape[0]
     if len(shape) > 1 and inner > _CHUNK:  # rows too long for a block: the pairs one by one
         a = {k: v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
@@ -620,7 +675,21 @@ def _blocks(a, mats, fields, threads, key=None):
     else:
         for _ in _pool(threads).map(work, blocks):
             pass
-    return PairRatings(**{f: store[f].reshape(out_shape) if f in store else None for f in _FIELDS})
+    return PairRatings(
+        **{f: store[f].reshape(out_shape) if f in store else None for f in _FIELDS}
+    ), None
+
+
+def _one_result(res, fields):
+    """One pair's :class:`PairRatings` from the dict of its rating, and its gears' part."""
+    if len(fields) == len(_RESULTS):
+        f64 = np.float64
+        values = [res[f] for f in _FIELDS]
+        result = PairRatings._make([v if type(v) is f64 else np.asarray(v)[()] for v in values])
+    else:
+        wanted = {*fields, "valid", "reason"}
+        result = PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
+    return result, res["gears"]
 
 
 def _number_of(v):

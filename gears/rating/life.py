@@ -77,6 +77,13 @@ def _life(cycles, code, table):
     return out[()] if out.ndim == 0 else out
 
 
+def _code(kind):
+    """The material group's integer code from its name or code (or an array of codes)."""
+    if type(kind) is int or isinstance(kind, np.integer):
+        return kind
+    return kind if np.issubdtype(np.asarray(kind).dtype, np.integer) else kind_code(kind)
+
+
 def pitting_life_factor(cycles, kind):
     """Life factor Z_NT at ``cycles`` load cycles (ISO 6336-2 Table 2; arrays broadcast).
 
@@ -86,8 +93,7 @@ def pitting_life_factor(cycles, kind):
     >>> round(float(pitting_life_factor(1.783e8, "Eh")), 3)   # ISO/TR 6336-30 Ex. 1: 0.962
     0.962
     """
-    code = kind if np.issubdtype(np.asarray(kind).dtype, np.integer) else kind_code(kind)
-    return _life(cycles, code, _PITTING_TABLE)
+    return _life(cycles, _code(kind), _PITTING_TABLE)
 
 
 def bending_life_factor(cycles, kind):
@@ -96,5 +102,4 @@ def bending_life_factor(cycles, kind):
     >>> float(bending_life_factor(3e6, "Eh")), float(bending_life_factor(1e3, "Eh"))
     (1.0, 2.5)
     """
-    code = kind if np.issubdtype(np.asarray(kind).dtype, np.integer) else kind_code(kind)
-    return _life(cycles, code, _BENDING_TABLE)
+    return _life(cycles, _code(kind), _BENDING_TABLE)

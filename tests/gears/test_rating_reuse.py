@@ -1,15 +1,21 @@
 """The rating's shared parts (issues 26 and 30): a pair's load-independent part computed once
-for many loads gives the numbers of a fresh rating, and Miner's equivalent safety is where
-Miner's sum crosses 1.
+for many loads (``Rating.at``, a spectrum's bins) gives the numbers of a fresh rating, and
+Miner's equivalent safety is where Miner's sum crosses 1.
 
 Sources: the fresh rating itself (``rate_pairs`` on each pair and load alone, the route that
 shares nothing), and Miner's elementary rule evaluated by ``miner_damage`` on both sides of the
 answer (the definition of the equivalent safety, ISO 6336-6).
 """
 
+import math
+
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
+from gears import Gear, GearPair
+from gears.errors import GearError
 from gears.rating.iso6336 import rate_pairs
 from gears.rating.spectrum import equivalent_safety, miner_damage, rate_spectrum
 
@@ -79,3 +85,75 @@ def test_equivalent_safety_over_random_spectra():
         below = miner_damage(ratio * (s * (1 - 1e-9))[:, None], 1.0, cycles, code, mode)
         above = miner_damage(ratio * (s * (1 + 1e-9))[:, None], 1.0, cycles, code, mode)
         assert np.all((below < 1.0)[inside]) and np.all((above >= 1.0 - 1e-9)[inside])
+
+
+def _same(a, b, rel=1e-12):
+    """Every field of two one-pair PairRatings equal within ``rel`` (NaN where both are)."""
+    for name, x, y in zip(a._fields, a, b, strict=True):
+        x, y = float(x), float(y)
+        if math.isnan(y):
+            assert math.isnan(x), name
+        else:
+            assert x == pytest.approx(y, rel=rel, abs=1e-300), name
+
+
+_PAIRS = {
+    "spur": lambda: GearPair(Gear(19, 3, face_width=30), Gear(61, 3, face_width=30)),
+    "helical": lambda: GearPair(
+        Gear(17, 8, profile_shift=0.145, helix_angle=15.8, face_width=100),
+        Gear(103, 8, helix_angle=-15.8, face_width=100),
+    ),
+    "ring": lambda: GearPair(Gear(20, 2, face_width=20), Gear(80, 2, internal=True, face_width=20)),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(_PAIRS))
+def test_rating_at_equals_a_fresh_rating(kind):
+    # Rating.at keeps the gears' part and reruns the load's: every number equals a fresh
+    # GearPair.rating at that load (with the kept parts cleared), to rounding
+    from gears.rating import iso6336
+
+    pair = _PAIRS[kind]()
+    options = dict(material=("case-carburized", "through-hardened"), quality=5, roughness=0.6,
+                   K_Hbeta=1.2, root_roughness=2.0)  # fmt: skip
+    first = pair.rating(150.0, 1450.0, **options)
+    for torque, speed, life, k_a in ((40.0, 300.0, 2e5, 1.0), (900.0, 6000.0, 50.0, 1.5)):
+        again = first.at(torque, speed, life=life, application_factor=k_a)
+        for kept in (iso6336._GEARS, iso6336._ARGUMENTS, iso6336._GEOMETRY):
+            kept.clear()
+        fresh = pair.rating(torque, speed, life=life, application_factor=k_a, **options)
+        _same(again.values, fresh.values)
+        assert again.settings["torque"] == pytest.approx(torque, rel=1e-15)
+        assert again.roots == fresh.roots
+    # not given: this rating's own load
+    _same(first.at().values, first.values)
+    _same(first.at(speed=700.0).values, pair.rating(150.0, 700.0, **options).values)
+
+
+@pytest.mark.parametrize(
+    "args, match",
+    [((np.array([1.0, 2.0]),), "torque"), ((100.0, -5.0), "speed"), ((100.0, "fast"), "speed")],
+)
+def test_rating_at_refuses_bad_loads(args, match):
+    first = _PAIRS["spur"]().rating(150.0, 1450.0)
+    with pytest.raises(GearError, match=match):
+        first.at(*args)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(1e-6, 1e7), st.floats(1e-3, 1e6), st.floats(1e-3, 1e8), st.floats(1.0, 5.0))
+def test_rating_at_property(torque, speed, life, k_a):
+    # any load: the fresh rating's numbers, or the same GearError; never NaN
+    pair = _PAIRS["helical"]()
+    first = pair.rating(5000.0, 360.0)
+    try:
+        fresh = pair.rating(torque, speed, life=life, application_factor=k_a)
+    except GearError as exc:
+        with pytest.raises(GearError) as again:
+            first.at(torque, speed, life=life, application_factor=k_a)
+        assert str(again.value) == str(exc)
+        return
+    again = first.at(torque, speed, life=life, application_factor=k_a)
+    _same(again.values, fresh.values)
+    assert all(math.isfinite(s) and s > 0 for s in (*again.safety_pitting,
+                                                     *again.safety_bending))  # fmt: skip
