@@ -56,6 +56,7 @@ if TYPE_CHECKING:
     from gears.rating.capacity import Rating
     from gears.rating.losses import MeshLosses
     from gears.rating.materials import Material
+    from gears.rating.scuffing import Oil
     from gears.rating.spectrum import SpectrumRating
 
 __all__ = ["GearPair"]
@@ -525,7 +526,8 @@ class GearPair:
         sigma_Flim: float | tuple[float, float] | None = None, face_width: float | None = None,
         contacts: tuple[int, int] = (1, 1), idler: tuple[bool, bool] = (False, False),
         misalignment: float | None = None, root: str = "auto",
-        root_roughness: float | None = None, **factors,
+        root_roughness: float | None = None, scuffing: Oil | None = None,
+        welding_factor: float = 1.0, **factors,
     ) -> Rating | SpectrumRating:  # fmt: skip
         """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
 
@@ -570,6 +572,15 @@ class GearPair:
         root_roughness : float, optional
             Roughness Ra of the root fillets, um, for Y_RrelT (default ``roughness``: give it
             for a ground flank with a hobbed root).
+        scuffing : Oil, optional
+            The oil (:class:`gears.rating.scuffing.Oil`: FZG load stage, temperature,
+            viscosities): the rating adds the safety against scuffing by the flash temperature
+            method (ISO/TS 6336-20) and the integral temperature method (ISO/TS 6336-21),
+            ``safety_scuffing``, ``temperatures`` and the findings ``scuffing_flash``,
+            ``scuffing_integral`` of ``check()``.
+        welding_factor : float
+            X_W of the flanks for the scuffing temperatures (1: case-carburized, as the FZG
+            test gears).
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
             replaces the computed one (:data:`gears.rating.iso6336.FACTORS`); ``K_Hbeta`` and
@@ -612,7 +623,8 @@ class GearPair:
                       roughness=roughness, oil_viscosity=oil_viscosity, tip_relief=tip_relief,
                       sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
                       contacts=contacts, idler=idler, misalignment=misalignment, root=root,
-                      root_roughness=root_roughness, **factors)  # fmt: skip
+                      root_roughness=root_roughness, scuffing=scuffing,
+                      welding_factor=welding_factor, **factors)  # fmt: skip
             rows = list(zip(*(b.tolist() for b in bins), strict=True))
             ratings = [rate_pair(self, t, n, material, life=h, **kw) for t, n, h in rows]
             return spectrum_rating(ratings, material, rows)
@@ -627,7 +639,8 @@ class GearPair:
             quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
             tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
             face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
-            root=root, root_roughness=root_roughness, **factors,
+            root=root, root_roughness=root_roughness, scuffing=scuffing,
+            welding_factor=welding_factor, **factors,
         )  # fmt: skip
 
     # --- loaded tooth contact analysis ---------------------------------------------------------

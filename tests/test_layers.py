@@ -79,6 +79,7 @@ LAYERS = {
             "bevel.crown",
             "rating.sizing",
             "rating.spectrum",
+            "rating.scuffing",
             "worm.checks",
             "noncircular.checks",
         ],

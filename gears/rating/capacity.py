@@ -16,19 +16,24 @@ from dataclasses import dataclass, field
 from gears.display import html_table
 from gears.errors import GearError
 from gears.rating._arrays import number, one_number
+from gears.rating._arrays import pair_of as _pair_of
 from gears.rating.bending import load_point
 from gears.rating.iso6336 import FACTORS, QUANTITIES, OnePair, PairRatings, rate_again, rate_one
 from gears.rating.materials import material
 from gears.rating.root import measure_root
+from gears.rating.scuffing import Oil, ScuffingRatings, pair_scuffing
 from gears.report import Finding, Report
 
-__all__ = ["ROOT_ROUTES", "Rating", "load_diameters", "rate_pair"]
+__all__ = ["MIN_SCUFFING", "ROOT_ROUTES", "Rating", "load_diameters", "rate_pair"]
 
 #: How the root form of each gear is found: ``"auto"`` (the standard's equations for rack-cut
 #: external gears, measured on the exact envelope for internal and shaper-cut gears),
 #: ``"standard"`` (ISO 6336-3's equations; the rack approximation for internal gears),
 #: ``"measured"`` (exact envelopes) or ``"simulated"`` (simulated cuts, spur gears).
 ROOT_ROUTES = ("auto", "standard", "measured", "simulated")
+
+#: Default minimum safeties against scuffing (S_Bmin, S_intSmin) of :meth:`Rating.check`.
+MIN_SCUFFING = (2.0, 1.8)
 
 
 def _field(symbol: str) -> str:
@@ -53,6 +58,8 @@ class Rating:
     kept : OnePair or None
         The rating's checked arguments but the load's and its gears' part
         (:class:`gears.rating.iso6336.OnePair`), which :meth:`at` rates at another load.
+    scuffing : ScuffingRatings or None
+        The scuffing rating (ISO/TS 6336-20 and -21) when an oil was given (``scuffing=``).
     """
 
     pair: object
@@ -60,6 +67,7 @@ class Rating:
     settings: dict = field(default_factory=dict)
     roots: tuple[str, str] = ("", "")
     kept: OnePair | None = field(default=None, repr=False, compare=False)
+    scuffing: ScuffingRatings | None = None
 
     def at(
         self, torque: float | None = None, speed: float | None = None, *,
@@ -94,7 +102,10 @@ class Rating:
         values = rate_again(self.kept, load_sharing=1.0, **load)
         settings = dict(st)
         settings.update({k: float(v) for k, v in load.items()})
-        return Rating(self.pair, values, settings, self.roots, self.kept)
+        scuff = None
+        if self.scuffing is not None:  # the oil's rating at the new load
+            scuff = pair_scuffing(self.pair, values, *st["scuffing"])
+        return Rating(self.pair, values, settings, self.roots, self.kept, scuff)
 
     def _get(self, name: str) -> float:
         return float(getattr(self.values, name))
@@ -108,6 +119,27 @@ class Rating:
     def safety_bending(self) -> tuple[float, float]:
         """``(S_F1, S_F2)``: safety against tooth-root breakage of gear 1 and gear 2."""
         return self._get("S_F1"), self._get("S_F2")
+
+    @property
+    def safety_scuffing(self) -> tuple[float, float] | None:
+        """``(S_B, S_intS)``: safety against scuffing by the flash temperature method
+        (ISO/TS 6336-20) and by the integral temperature method (ISO/TS 6336-21); None
+        without an oil (``scuffing=``)."""
+        if self.scuffing is None:
+            return None
+        return float(self.scuffing.S_B), float(self.scuffing.S_intS)
+
+    @property
+    def temperatures(self) -> dict[str, float] | None:
+        """The scuffing rating's temperatures (deg C; flash temperatures in K) and where the
+        flash temperature peaks (:class:`gears.rating.scuffing.ScuffingRatings`); None without
+        an oil."""
+        if self.scuffing is None:
+            return None
+        keys = ("theta_B", "theta_flmax", "gamma_flmax", "d_flmax", "theta_flm", "theta_M",
+                "theta_S", "mu_m", "theta_flaint", "theta_M_int", "theta_int", "theta_intS",
+                "mu_mC")  # fmt: skip
+        return {k: float(getattr(self.scuffing, k)) for k in keys}
 
     @property
     def stresses(self) -> dict[str, float | tuple[float, float]]:
@@ -146,9 +178,11 @@ class Rating:
         (:data:`gears.rating.iso6336.QUANTITIES`)."""
         return self._table(QUANTITIES)
 
-    def check(self, min_pitting: float = 1.0, min_bending: float = 1.4) -> Report:
-        """Findings ``pitting_1``, ``pitting_2``, ``bending_1``, ``bending_2``: each safety
-        against its minimum (margin ``S - S_min``). The minimums are numbers >= 0.
+    def check(self, min_pitting: float = 1.0, min_bending: float = 1.4,
+              min_scuffing: tuple[float, float] = MIN_SCUFFING) -> Report:  # fmt: skip
+        """Findings ``pitting_1``, ``pitting_2``, ``bending_1``, ``bending_2`` and, with an oil,
+        ``scuffing_flash`` and ``scuffing_integral``: each safety against its minimum (margin
+        ``S - S_min``). The minimums are numbers >= 0; ``min_scuffing`` is (S_Bmin, S_intSmin).
 
         >>> from gears import Gear, GearPair
         >>> p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
@@ -156,7 +190,9 @@ class Rating:
         True
         """
         out = []
-        for name, minimum in (("min_pitting", min_pitting), ("min_bending", min_bending)):
+        s_b, s_int = _pair_of("min_scuffing", min_scuffing)
+        for name, minimum in (("min_pitting", min_pitting), ("min_bending", min_bending),
+                              ("min_scuffing", s_b), ("min_scuffing", s_int)):  # fmt: skip
             if (
                 isinstance(minimum, bool)
                 or not isinstance(minimum, int | float)
@@ -177,6 +213,19 @@ class Rating:
                         f"{stress[s][i]:.1f} MPa, {p} = {stress[p][i]:.1f} MPa)", unit="",
                     )
                 )  # fmt: skip
+        if self.scuffing is not None:
+            t = self.temperatures
+            for name, safety, minimum, what in (
+                ("scuffing_flash", self.safety_scuffing[0], s_b,
+                 f"S_B = {self.safety_scuffing[0]:.3f} vs required {s_b:g} (contact temperature "
+                 f"theta_B = {t['theta_B']:.1f} C, scuffing temperature theta_S = "
+                 f"{t['theta_S']:.1f} C; ISO/TS 6336-20)"),
+                ("scuffing_integral", self.safety_scuffing[1], s_int,
+                 f"S_intS = {self.safety_scuffing[1]:.3f} vs required {s_int:g} (integral "
+                 f"temperature theta_int = {t['theta_int']:.1f} C, scuffing integral temperature "
+                 f"theta_intS = {t['theta_intS']:.1f} C; ISO/TS 6336-21)"),
+            ):  # fmt: skip
+                out.append(Finding(name, safety - minimum, what, unit=""))
         return Report(out)
 
     def _summary(self) -> list[str]:
@@ -203,6 +252,17 @@ class Rating:
             f"{'safety bending S_F':26s} {self.safety_bending[0]:10.4f} "
             f"{self.safety_bending[1]:10.4f}",
         ]
+        if self.scuffing is not None:
+            lines.append(
+                f"{'safety scuffing S_B':26s} {self.safety_scuffing[0]:10.4f}"
+                "  (flash temperature, ISO/TS 6336-20)"
+            )
+            lines.append(
+                f"{'safety scuffing S_intS':26s} {self.safety_scuffing[1]:10.4f}"
+                "  (integral temperature, ISO/TS 6336-21)"
+            )
+            for key, value in self.temperatures.items():
+                lines.append(f"{key:26s} {value:10.4g}")
         for name, value in self.stresses.items():
             if isinstance(value, tuple):
                 lines.append(f"{name + ' [MPa]':26s} {value[0]:10.2f} {value[1]:10.2f}")
@@ -284,7 +344,7 @@ def rate_pair(
     pair, torque, speed, material_="case-carburized", *, life=20000.0, application_factor=1.0,
     quality=6, roughness=1.0, oil_viscosity=220.0, tip_relief=None, sigma_Hlim=None,
     sigma_Flim=None, face_width=None, contacts=(1, 1), idler=(False, False), misalignment=None,
-    root="auto", root_roughness=None, **factors,
+    root="auto", root_roughness=None, scuffing=None, welding_factor=1.0, **factors,
 ) -> Rating:  # fmt: skip
     """The :class:`Rating` of ``pair`` (see :meth:`gears.GearPair.rating` for the parameters).
 
@@ -293,6 +353,11 @@ def rate_pair(
     :func:`gears.rating.iso6336.rate_pairs` (a planet, a sun meshing several planets).
     """
     _one_pair(locals(), factors)
+    if scuffing is not None and not isinstance(scuffing, Oil):
+        raise GearError(
+            f"scuffing = {scuffing!r}; give the oil: gears.rating.scuffing.Oil(fzg_stage=..., "
+            "temperature=..., viscosity_40=..., viscosity_100=...)"
+        )
     if getattr(pair, "is_rack", False):
         raise GearError("a pinion-and-rack pair has no ISO 6336 rating here; rate a gear pair")
     if root not in ROOT_ROUTES:
@@ -351,11 +416,22 @@ def rate_pair(
         "oil_viscosity": oil_viscosity, "tip_relief": tip_relief, "contacts": contacts,
         "idler": idler, "given": dict(factors),
     }  # fmt: skip
-    return Rating(pair, values, settings, (routes[0], routes[1]), kept)
+    scuff = None
+    if scuffing is not None:
+        c1, c2 = contacts
+        meshes = max(int(c1), int(c2), 2 if any(idler) else 1)  # X_mp of the busiest gear
+        scuff = pair_scuffing(pair, values, scuffing, b, roughness, (m1, m2), welding_factor,
+                              meshes)  # fmt: skip
+        settings |= {
+            "oil": scuffing,
+            "welding_factor": welding_factor,
+            "scuffing": (scuffing, b, roughness, (m1, m2), welding_factor, meshes),
+        }
+    return Rating(pair, values, settings, (routes[0], routes[1]), kept, scuff)
 
 
 _ONE = ("torque", "speed", "life", "application_factor", "quality", "roughness", "oil_viscosity",
-        "tip_relief", "face_width", "misalignment", "root_roughness")  # fmt: skip
+        "tip_relief", "face_width", "misalignment", "root_roughness", "welding_factor")  # fmt: skip
 _PER_GEAR = ("sigma_Hlim", "sigma_Flim", "contacts", "idler")
 
 
