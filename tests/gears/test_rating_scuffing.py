@@ -242,7 +242,7 @@ def test_bad_input():
 @given(
     z1=st.integers(6, 60), z2=st.integers(6, 200), x1=st.floats(-0.5, 1.0),
     helix=st.floats(0, 35), torque=st.floats(1e-6, 1e5), speed=st.floats(1e-6, 1e5),
-    stage=st.integers(1, 12), temp=st.floats(-40, 200), internal=st.booleans(),
+    stage=st.integers(1, 12), temp=st.floats(-40, 199), internal=st.booleans(),
 )  # fmt: skip
 def test_property_finite_or_masked(z1, z2, x1, helix, torque, speed, stage, temp, internal):
     oil = Oil(fzg_stage=stage, temperature=temp, viscosity_40=150, viscosity_100=15)
@@ -269,3 +269,17 @@ def test_rating_at_another_load_rates_the_oil_again():
     again = r.at(300)
     direct = pair.rating(300, 1500, scuffing=OIL, roughness=0.5)
     assert again.safety_scuffing == pytest.approx(direct.safety_scuffing, rel=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    stage=st.one_of(st.integers(-2, 15), st.floats(allow_nan=True), st.text(max_size=2)),
+    temp=st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.none()),
+    nu40=st.one_of(st.floats(-10, 1e6), st.just(float("nan"))), nu100=st.floats(-10, 1e5),
+)  # fmt: skip
+def test_property_oil_or_error(stage, temp, nu40, nu100):
+    try:
+        oil = Oil(fzg_stage=stage, temperature=temp, viscosity_40=nu40, viscosity_100=nu100)
+    except GearError:
+        return
+    assert math.isfinite(oil.dynamic_viscosity) and oil.dynamic_viscosity > 0
