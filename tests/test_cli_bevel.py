@@ -68,12 +68,55 @@ def test_bevel_scene_and_animation(capsys, tmp_path):
         (["differential", "--pinions", 0], "--pinions"),
         (["differential", "--tolerance", 0.1], "--tolerance applies"),
         (["differential", "--left", "nan"], "--left"),
+        (["bevel", 20, 40, "-m", 3, "-b", 20, "--mounting", "one-straddle"], "--mounting applies"),
+        (["bevel", 20, 40, "-m", 3, "-b", 20, "--speed", 100], "give --torque"),
+        (["bevel", 20, 40, "-m", 3, "-b", 20, "--torque", -5, "--speed", 100], "--torque"),
+        (
+            ["bevel", 20, 40, "-b", 20, "--torque", 5, "--speed", 9, "--effective-width", 2],
+            "--effective-width",
+        ),
+        (["bevel", 20, 40, "-b", 20, "--torque", 5, "--speed", 9, "--pattern", "x"], "--pattern"),
+        (["differential", "--life", 100], "--life applies with --torque"),
+        (["differential", "--torque", 100, "--left", 50, "--right", 50], "do not turn"),
     ],
 )
 def test_bad_input_exits_2_naming_the_option(capsys, argv, match):
     code, out, err = _run(capsys, *argv)
     assert code == 2 and not out
     assert match in err, err
+
+
+def test_bevel_rating_printed_and_its_exit_status(capsys):
+    # the ISO 10300 rating of the library, printed to its digits (gears.BevelPair.rating)
+    from gears import BevelPair
+
+    r = BevelPair(20, 40, module=3, face_width=20).rating(50, 1500, mounting="one-straddle")
+    code, out, err = _run(capsys, "bevel", 20, 40, "-m", 3, "-b", 20, "--torque", 50, "--speed",
+                          1500, "--mounting", "one-straddle")  # fmt: skip
+    assert code == 0 and not err
+    assert "ISO 10300 method B1 rating" in out and "Z_M-B" in out and "Y_Fa" in out
+    assert f"{r.safety_pitting[0]:10.4f} {r.safety_pitting[1]:10.4f}" in out
+    assert f"{r.safety_bending[0]:10.4f} {r.safety_bending[1]:10.4f}" in out
+    # ten times the torque: pitting and bending fail, exit 1
+    code, out, _ = _run(capsys, "bevel", 20, 40, "-m", 3, "-b", 20, "--torque", 500, "--speed",
+                        1500)  # fmt: skip
+    assert code == 1 and "[FAIL] pitting_1" in out
+    code, out, _ = _run(capsys, "bevel", 20, 40, "-m", 3, "-b", 20, "--torque", 50, "--speed",
+                        1500, "--min-pitting", 2)  # fmt: skip
+    assert code == 1 and "[FAIL] pitting_1" in out and "[ok  ] bending_1" in out
+
+
+def test_differential_rating_every_mesh(capsys):
+    from trains import Differential
+
+    d = Differential(side=16, pinion=10, module=3, gleason=True)
+    r = d.rating(150, 90, 110, life=1000.0)
+    code, out, _ = _run(capsys, "differential", "--side", 16, "--pinion", 10, "--module", 3,
+                        "--gleason", "--torque", 150, "--life", 1000)  # fmt: skip
+    (s_h1, s_h2), (s_f1, s_f2) = r["pinion-left"].safety_pitting, r["pinion-left"].safety_bending
+    assert f"pinion-left: S_H {s_h1:.3f} / {s_h2:.3f}, S_F {s_f1:.3f} / {s_f2:.3f}" in out
+    assert "pinion-right.pitting_1" in out
+    assert code == (0 if min(s_h1, s_h2) >= 1 and min(s_f1, s_f2) >= 1.4 else 1)
 
 
 def test_differential_report_and_speeds(capsys):
@@ -121,6 +164,26 @@ def test_differential_scene(capsys, tmp_path):
 def test_property_bevel_exit_status(capsys, z1, z2, module, face, shaft, shift):
     code, out, err = _run(capsys, "bevel", z1, z2, "--module", module, "--face-width", face,
                           "--shaft-angle", shaft, "--shift", shift)  # fmt: skip
+    assert code in (0, 1, 2), err
+    assert (code == 2) == bool(err) and (code == 2) == (not out)
+
+
+@settings(
+    max_examples=20,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
+@given(
+    z1=st.integers(6, 40),
+    z2=st.integers(6, 60),
+    face=st.sampled_from(["5", "12"]),
+    torque=st.sampled_from(["1e-3", "20", "400", "1e9", "-3", "0"]),
+    speed=st.sampled_from(["1e-3", "1500", "1e6", "0", "inf"]),
+    mounting=st.sampled_from(["both-straddle", "neither-straddle"]),
+)
+def test_property_bevel_rating_exit_status(capsys, z1, z2, face, torque, speed, mounting):
+    code, out, err = _run(capsys, "bevel", z1, z2, "--module", 3, "--face-width", face,
+                          "--torque", torque, "--speed", speed, "--mounting", mounting)  # fmt: skip
     assert code in (0, 1, 2), err
     assert (code == 2) == bool(err) and (code == 2) == (not out)
 

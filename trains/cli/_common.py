@@ -540,23 +540,27 @@ RATING_DEFAULTS = {
 }
 
 
-def rating_arguments(parser: argparse.ArgumentParser, required: bool = True) -> None:
-    """The operating conditions of an ISO 6336 rating (``rate``, ``planetary``): ``--torque``,
-    ``--speed``, ``--material``, ``--life``, ``--quality``, ``--roughness``,
-    ``--root-roughness``, ``--oil-viscosity``, ``--tip-relief``, ``--application-factor``,
-    ``--min-pitting`` and ``--min-bending``. Their defaults (:data:`RATING_DEFAULTS`) are
-    filled in by :func:`rating_options`, so a command can tell which were given
-    (:func:`rating_given`)."""
+def rating_arguments(parser: argparse.ArgumentParser, required: bool = True, *,
+                     torque: bool = True, speed: bool = True) -> None:  # fmt: skip
+    """The operating conditions of an ISO 6336 rating (``rate``, ``planetary``; the ISO 10300
+    rating of ``bevel`` and ``differential``): ``--torque`` and ``--speed`` (unless the
+    command has its own: ``torque=False``, ``speed=False``), ``--material``, ``--life``,
+    ``--quality``, ``--roughness``, ``--root-roughness``, ``--oil-viscosity``,
+    ``--tip-relief``, ``--application-factor``, ``--min-pitting`` and ``--min-bending``. Their
+    defaults (:data:`RATING_DEFAULTS`) are filled in by :func:`rating_options`, so a command
+    can tell which were given (:func:`rating_given`)."""
     need = "" if required else " (with --speed: rate every mesh)"
     d = RATING_DEFAULTS
-    parser.add_argument(
-        "--torque", type=positive("--torque", "N m"), required=required, default=None,
-        metavar="T", help=f"input torque in N m{need}",
-    )  # fmt: skip
-    parser.add_argument(
-        "--speed", type=positive("--speed", "rpm"), required=required, default=None,
-        metavar="N", help="input speed in rpm",
-    )  # fmt: skip
+    if torque:
+        parser.add_argument(
+            "--torque", type=positive("--torque", "N m"), required=required, default=None,
+            metavar="T", help=f"input torque in N m{need}",
+        )  # fmt: skip
+    if speed:
+        parser.add_argument(
+            "--speed", type=positive("--speed", "rpm"), required=required, default=None,
+            metavar="N", help="input speed in rpm",
+        )  # fmt: skip
     parser.add_argument(
         "--material", default=None,
         help="ISO 6336-5 material of the gears: case-carburized, nitrided, induction-hardened, "
@@ -621,6 +625,57 @@ def rating_minimums(args: argparse.Namespace) -> tuple[float, float]:
         RATING_DEFAULTS[k] if getattr(args, k) is None else getattr(args, k)
         for k in ("min_pitting", "min_bending")
     )
+
+
+#: the library's names in ISO 10300 errors -> the options of :func:`bevel_rating_arguments`
+BEVEL_RATING_NAMES = {
+    "mounting": "--mounting",
+    "pattern": "--pattern",
+    "effective_width": "--effective-width",
+}
+
+
+def bevel_rating_arguments(parser: argparse.ArgumentParser) -> None:
+    """What ISO 10300 adds to :func:`rating_arguments` (``bevel``, ``differential``):
+    ``--mounting`` and ``--pattern`` (the mounting factor K_Hbeta-be) and
+    ``--effective-width`` (b_eff / b)."""
+    parser.add_argument(
+        "--mounting", choices=("both-straddle", "one-straddle", "neither-straddle"),
+        default=None, help="how pinion and wheel are mounted (ISO 10300-1 mounting factor; "
+        "default both-straddle)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--pattern", choices=("full-load", "light-load", "estimated"), default=None,
+        help="how the contact pattern was checked: each set under full load, under a light "
+        "test load (default), or on a sample set and estimated",
+    )  # fmt: skip
+    parser.add_argument(
+        "--effective-width", type=bounded("--effective-width", 0, 1, low_open=True),
+        default=None, metavar="B_EFF",
+        help="share of the face the loaded contact pattern covers, b_eff / b (default 0.85)",
+    )  # fmt: skip
+
+
+#: the defaults of :func:`bevel_rating_arguments`
+BEVEL_RATING_DEFAULTS = {"mounting": "both-straddle", "pattern": "light-load",
+                         "effective_width": 0.85}  # fmt: skip
+
+
+def bevel_rating_given(args: argparse.Namespace) -> list[str]:
+    """The rating options of an ISO 10300 rating given on the command line (other than
+    --torque and --speed)."""
+    own = [f"--{k.replace('_', '-')}" for k in BEVEL_RATING_DEFAULTS
+           if getattr(args, k) is not None]  # fmt: skip
+    return rating_given(args) + own
+
+
+def bevel_rating_options(args: argparse.Namespace) -> dict:
+    """The keyword arguments of ``BevelPair.rating`` / ``Differential.rating`` of the options of
+    :func:`rating_arguments` and :func:`bevel_rating_arguments` (torque, speed and the minimums
+    aside), defaults filled in."""
+    own = {k: d if getattr(args, k) is None else getattr(args, k)
+           for k, d in BEVEL_RATING_DEFAULTS.items()}  # fmt: skip
+    return {**rating_options(args), **own}
 
 
 # --- sizing for a load and running on a Dask cluster (search, synthesize --stages) -------------

@@ -6,14 +6,17 @@ land, and the face width against R_e / 3, each with its margin; optionally write
 The module is the outer transverse module m_et; the face width defaults to R_e / 3.5. --shift is
 the pinion's profile shift at the mean cone (the wheel gets its negative), --gleason the Gleason
 proportions of KHK Table 4.11. With --torque (N m on the pinion) the mesh forces at the mean
-cone follow (ISO 10300-1). The exit status is 1 when a check fails. The load capacity is the
-library's BevelPair.rating (after ISO 10300 method B1); this command does not rate.
+cone follow (ISO 10300-1); with --speed too (rpm of the pinion) the pair is rated by ISO 10300
+method B1 (pitting and bending safety of both gears, every factor and where it comes from;
+--mounting and --pattern give the mounting factor). The exit status is 1 when a check fails or
+a safety is below --min-pitting / --min-bending.
 
 Examples:
     geartrain bevel 20 40 --module 3 --face-width 22
     geartrain bevel 20 40 --module 3 --face-width 22 --gleason --scene pair.glb
     geartrain bevel 17 43 --module 2.5 --face-width 12 --shaft-angle 70 --shift 0.2
     geartrain bevel 20 40 --module 3 --face-width 22 --torque 50
+    geartrain bevel 20 40 -m 3 -b 22 --torque 50 --speed 1500 --mounting one-straddle
 """
 
 from __future__ import annotations
@@ -22,21 +25,28 @@ import argparse
 
 from trains.cli._common import (
     BEVEL_NAMES,
+    BEVEL_RATING_NAMES,
     CHECK_FAILED,
     DRAWING_NAMES,
     OK,
+    RATING_NAMES,
     bevel_arguments,
+    bevel_rating_arguments,
+    bevel_rating_given,
+    bevel_rating_options,
     drawing_arguments,
     finite,
     integer,
     non_negative,
     positive,
+    rating_arguments,
+    rating_minimums,
     refuse_undrawn,
     write_animation,
     write_scene,
 )
 
-HELP = "check a straight bevel pair (Z1 Z2) and print its geometry and report; 3D scene"
+HELP = "check a straight bevel pair (Z1 Z2): geometry, report, ISO 10300 rating; 3D scene"
 
 NAMES = {
     "z1": "Z1",
@@ -48,7 +58,8 @@ NAMES = {
     "backlash": "--backlash",
     "bore": "--bore",
     **DRAWING_NAMES,
-    "torque": "--torque",
+    **RATING_NAMES,
+    **BEVEL_RATING_NAMES,
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -97,8 +108,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     parser.add_argument(
         "--torque", type=finite("--torque"), default=None,
-        help="torque on the pinion, N m: print the mesh forces at the mean cone",
+        help="torque on the pinion, N m: print the mesh forces at the mean cone (with --speed: "
+        "rate the pair by ISO 10300)",
     )  # fmt: skip
+    rating_arguments(parser, required=False, torque=False)
+    bevel_rating_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -106,6 +120,12 @@ def run(args: argparse.Namespace) -> int:
     from trains.errors import TrainError
 
     refuse_undrawn(args, drawing=("--tolerance", "--bore"), scene=("--backlash",))
+    if args.speed is None and bevel_rating_given(args):
+        raise TrainError(
+            f"{bevel_rating_given(args)[0]} applies with --speed (and --torque): a rating"
+        )
+    if args.speed is not None and args.torque is None:
+        raise TrainError("--speed rates the pair: give --torque (N m on the pinion) too")
     if args.gleason and (args.shift or args.clearance != "constant"):
         raise TrainError("--gleason sets the shift and the clearance: give neither with it")
     face = args.face_width
@@ -128,6 +148,15 @@ def run(args: argparse.Namespace) -> int:
     if args.torque is not None:
         print()
         print(pair.forces(args.torque))
+    ok = report.ok
+    if args.speed is not None:
+        rating = pair.rating(args.torque, args.speed, **bevel_rating_options(args))
+        checks = rating.check(*rating_minimums(args))
+        print()
+        print(rating)
+        print()
+        print("checks: " + str(checks))
+        ok = ok and checks.ok
     write_scene(
         args, lambda tol: pair.scene(tolerance=tol, backlash=args.backlash, bore=args.bore),
         SCENE_TOLERANCE,
@@ -135,4 +164,4 @@ def run(args: argparse.Namespace) -> int:
         f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
     )  # fmt: skip
     write_animation(args, pair.animate, FRAMES, ": the pinion turning by one pitch")
-    return OK if report.ok else CHECK_FAILED
+    return OK if ok else CHECK_FAILED

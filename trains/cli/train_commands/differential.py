@@ -5,12 +5,16 @@ left + right = 2 case); optionally write it in 3D and an animation of it turning
 corner (the wheels at --left and --right).
 
 Speeds are counted about the axle for the wheels and the case, and about its own axis for each
-pinion (its spin in the case). The exit status is 1 when a check fails.
+pinion (its spin in the case). With --torque (N m on the case; --left and --right are then in
+rpm) every mesh is rated by ISO 10300 method B1 (the case torque split between the side gears
+and among the pinions). The exit status is 1 when a check fails or a safety is below
+--min-pitting / --min-bending.
 
 Examples:
     geartrain differential --side 16 --pinion 10 --module 3 --gleason
     geartrain differential --side 16 --pinion 10 --module 3 --gleason --scene diff.glb
     geartrain differential --side 15 --pinion 10 --pinions 3 --gleason --pressure-angle 22.5
+    geartrain differential --side 16 --pinion 10 --module 3 --gleason --torque 60 --life 1000
 """
 
 from __future__ import annotations
@@ -20,13 +24,21 @@ import functools
 
 from trains.cli._common import (
     BEVEL_NAMES,
+    BEVEL_RATING_NAMES,
     CHECK_FAILED,
     DRAWING_NAMES,
     OK,
+    RATING_NAMES,
     bevel_arguments,
+    bevel_rating_arguments,
+    bevel_rating_given,
+    bevel_rating_options,
     drawing_arguments,
     finite,
     integer,
+    positive,
+    rating_arguments,
+    rating_minimums,
     refuse_undrawn,
     write_animation,
     write_scene,
@@ -42,6 +54,8 @@ NAMES = {
     **DRAWING_NAMES,
     "left": "--left",
     "right": "--right",
+    **RATING_NAMES,
+    **BEVEL_RATING_NAMES,
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -78,6 +92,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     drawing_arguments(parser, "the differential", "it turning through a corner at --left/--right",
                       FRAMES, SCENE_TOLERANCE)  # fmt: skip
+    parser.add_argument(
+        "--torque", type=positive("--torque", "N m"), default=None, metavar="T",
+        help="torque on the case, N m: rate every mesh by ISO 10300 (--left, --right in rpm)",
+    )  # fmt: skip
+    rating_arguments(parser, required=False, torque=False, speed=False)
+    bevel_rating_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -85,6 +105,8 @@ def run(args: argparse.Namespace) -> int:
     from trains.errors import TrainError
 
     refuse_undrawn(args)
+    if args.torque is None and bevel_rating_given(args):
+        raise TrainError(f"{bevel_rating_given(args)[0]} applies with --torque: a rating")
     if args.gleason and args.shift:
         raise TrainError("--gleason sets the shift: give --shift without --gleason")
     kw = {} if args.gleason else {"profile_shift": args.shift}
@@ -98,10 +120,26 @@ def run(args: argparse.Namespace) -> int:
     print(f"speeds: left {args.left:g}, right {args.right:g}, case {float(m['case']):g} "
           f"(Ozols (7.9): left + right = 2 case), pinions spin {spin:+g} in the case")  # fmt: skip
     print(report)
+    ok = report.ok
+    if args.torque is not None:
+        ratings = d.rating(args.torque, args.left, args.right, **bevel_rating_options(args))
+        checks = [r.check(*rating_minimums(args)).prefixed(name) for name, r in ratings.items()]
+        for name, r in ratings.items():
+            (s_h1, s_h2), (s_f1, s_f2) = r.safety_pitting, r.safety_bending
+            print(f"{name}: S_H {s_h1:.3f} / {s_h2:.3f}, S_F {s_f1:.3f} / {s_f2:.3f} "
+                  "(pinion / side gear)")  # fmt: skip
+        first = next(iter(ratings))
+        print()
+        print(f"every mesh carries the same load; {first}:")
+        print(ratings[first])
+        print()
+        total = sum(checks[1:], checks[0])
+        print("checks: " + str(total))
+        ok = ok and total.ok
     # a failing design is drawn too: the report above says what fails, the exit status is 1
     write_scene(args, lambda tol: d.scene(tolerance=tol, check=False), SCENE_TOLERANCE,
                 lambda _, tol: f"side gears and {d.n_pinions} pinions phased, instanced; "
                 f"tolerance {tol:g} mm")  # fmt: skip
     turning = functools.partial(d.animate, left=args.left, right=args.right, check=False)
     write_animation(args, turning, FRAMES, " turning through a corner")
-    return OK if report.ok else CHECK_FAILED
+    return OK if ok else CHECK_FAILED
