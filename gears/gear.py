@@ -544,31 +544,16 @@ class Gear:
         ``progress(done, total)`` is called as a simulation advances. The finest tolerance is
         :data:`gears.cutting.profile.MIN_TOLERANCE` (1e-6 mm); larger work is refused with the
         tolerance that fits.
-        An external gear's ``modification`` takes its tip and root relief off the flanks
-        (:func:`gears.contact.flank.modified_outline`; a length left None is the short
-        relief against the basic rack); pairs' outlines and solids draw the unmodified
-        flanks.
+        The gear's ``modification`` takes its tip and root relief off the flanks (external
+        and internal gears: :func:`gears.contact.flank.relieved_outline`; a length left None
+        is the short relief against the basic rack; in a pair, the pair's own); :meth:`mesh`
+        adds the lead modifications (crowning, end relief, helix slope) along the face.
         """
         from gears.cutting.outline import gear_outline  # the cutting family: when drawn
 
-        poly = gear_outline(
+        return gear_outline(
             self, tolerance, method, backlash, bore, rim, angle, center, cutter, progress
         )
-        m = self.modification
-        if m is None or self.internal or not (m.tip_relief or m.root_relief):
-            return poly
-        from gears.contact.flank import modified_outline, rack_short_relief
-
-        short = rack_short_relief(
-            self.base_diameter / 2, self.tip_diameter / 2, self.transverse_pressure_angle,
-            self.rack.addendum, self.profile_shift, self.module, self.base_pitch,
-        )  # fmt: skip
-        tip_length, root_length, _ = m.lengths(short, self.face_width or 1.0)
-        form = self._form / 2 if self._form > self.base_diameter else self.base_diameter / 2
-        return modified_outline(
-            poly, self.base_diameter / 2, form, self.tip_diameter / 2,
-            m.tip_relief, tip_length, m.root_relief, root_length, m.kind, center,
-        )  # fmt: skip
 
     def mesh(
         self, face_width: float | None = None, tolerance: float = 0.01, method: str = "analytic",
@@ -605,11 +590,14 @@ class Gear:
         check_callback("progress", progress)
         radius = self.solid_radius(rim)
         b = check_length("face_width", b, radius, "the gear's outer radius")
-        twist = helix_twist(b, self.helix_angle, self.reference_diameter)
+        from gears.contact.flank import solid_lead
+
+        lead, extra = solid_lead(self, b, tol)  # the modification's crowning, end relief, slope
+        twist = helix_twist(b, self.helix_angle, self.reference_diameter) + extra
         self.check_solid_budget(tol, twist, method, backlash, bore, rim, cutter, herringbone)
         shape = self.outline(tol, method, backlash, bore=bore, rim=rim, cutter=cutter,
                              progress=progress)  # fmt: skip
-        return gear_solid(shape, b, twist, tol, herringbone=herringbone)
+        return gear_solid(shape, b, twist, tol, herringbone=herringbone, lead=lead)
 
     def solid_radius(self, rim: float | None = None) -> float:
         """The outer radius of this gear's solid, mm: the tip radius, or a ring's root radius

@@ -115,9 +115,12 @@ def pair_scene(
         lambda t: sum(shapely.get_num_coordinates(o) * solid_levels(w, r, t, herringbone)
                       for o, w, r in zip(outlines, twists, radii, strict=True)), tol,
     )  # fmt: skip
+    from gears.contact.flank import solid_lead
+
     parts = []
     for i, (shape, b, twist) in enumerate(zip(outlines, widths, twists, strict=True)):
-        solid = gear_solid(shape, b, twist, tol, herringbone=herringbone)
+        lead, extra = solid_lead(drawn[i][0], b, tol)  # crowning, end relief, helix slope
+        solid = gear_solid(shape, b, twist + extra, tol, herringbone=herringbone, lead=lead)
         place = transform(angle) if i == 0 else transform(angle2, centre2)
         parts.append((f"gear{i + 1}", solid, place, COLOURS[f"gear{i + 1}"]))
     return scene(parts)

@@ -1,7 +1,9 @@
 """Layer 6, outlines: a gear's outline by any method, and both outlines of a pair in mesh.
 
 Dispatches to the analytic envelope (:func:`gears.cutting.profile.outline`) or a simulated cutter
-(:mod:`gears.cutting.generate`), and places a pair's gears at their working centre distance.
+(:mod:`gears.cutting.generate`), takes the gear's flank modification off
+(:mod:`gears.contact.flank`), and places a pair's gears at their working centre distance (a
+pair's reliefs default to its own short relief, as in the contact analysis).
 """
 
 from __future__ import annotations
@@ -9,6 +11,7 @@ from __future__ import annotations
 import shapely
 
 from gears.arguments import check_angle, check_callback, check_choice, check_point
+from gears.contact.flank import relieved_outline
 from gears.cutting.cutter import ShaperCutter
 from gears.cutting.generate import rack_outline, shaper_outline
 from gears.cutting.profile import outline
@@ -45,10 +48,13 @@ def outline_vertices(
 def gear_outline(
     gear, tolerance: float = 0.001, method: str = "analytic", backlash: float = 0.0,
     bore: float | None = None, rim: float | None = None, angle: float = 0.0, center=(0.0, 0.0),
-    cutter=None, progress=None,
+    cutter=None, progress=None, short_relief: float | None = None,
 ) -> shapely.Polygon:  # fmt: skip
     """Dispatch :meth:`Gear.outline` to the analytic outline or a simulated cutter
-    (``progress(done, total)`` reports a simulation's progress).
+    (``progress(done, total)`` reports a simulation's progress), then take the gear's
+    ``modification`` tip and root relief off its flanks
+    (:func:`gears.contact.flank.relieved_outline`; a relief length left None is
+    ``short_relief``, mm of roll, else the gear's own against its basic rack).
 
     ``cutter`` (a :class:`gears.cutting.cutter.ShaperCutter`) selects the shaper for
     ``method='analytic'`` (its exact envelope) and ``method='shaper'`` (default: the cutter of
@@ -63,9 +69,14 @@ def gear_outline(
     center = check_point("center", center)
     method = check_choice("method", method, METHODS)
     check_callback("progress", progress)
+    poly = _unmodified(gear, tolerance, method, backlash, bore, rim, angle, center, cutter,
+                       progress)  # fmt: skip
+    return relieved_outline(gear, poly, center, short_relief)
+
+
+def _unmodified(gear, tolerance, method, backlash, bore, rim, angle, center, cutter, progress):
     if method == "analytic":
         return outline(gear, tolerance, backlash, bore, rim, angle, center, cutter)
-
     if method == "rack":
         if cutter is not None or getattr(gear, "cutter", None) is not None:
             raise GearError(
@@ -113,12 +124,23 @@ def pair_outlines(pair, angle: float = 0.0, tolerance: float = 0.001, method: st
         def second(done: int, total: int) -> None:
             progress(500 + 500 * done // total, 1000)
 
-    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1, progress=first)
+    short = _pair_short_relief(pair)
+    p1 = gear_outline(g1, tolerance, method, backlash, angle=angle, cutter=c1, progress=first,
+                      short_relief=short)  # fmt: skip
     m2 = "shaper" if (g2.internal and method == "rack") else method
     a2, center2 = pair_placement(g1.teeth, g2.teeth, pair.center_distance, g2.internal, angle)
     p2 = gear_outline(g2, tolerance, m2, backlash, angle=a2, center=center2, cutter=c2,
-                      progress=second)  # fmt: skip
+                      progress=second, short_relief=short)  # fmt: skip
     return p1, p2
+
+
+def _pair_short_relief(pair) -> float | None:
+    """The pair's short relief (eps_alpha - 1) p_bt, mm of roll, the default length of a
+    relief in mesh (as the contact analysis takes it); None when neither gear is modified."""
+    if all(getattr(g, "modification", None) is None for g in (pair.g1, pair.g2)):
+        return None
+    p = pair.path_of_contact
+    return max(p.length - p.base_pitch, 0.0)
 
 
 def pair_placement(z1: int, z2: int, center_distance: float, internal: bool, angle: float = 0.0):

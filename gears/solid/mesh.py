@@ -190,7 +190,7 @@ def _cap(rings: list[np.ndarray]) -> np.ndarray:
 
 def gear_solid(
     outline, face_width: float, twist: float = 0.0, tolerance: float = 0.01,
-    tip_radius: float | None = None, herringbone: bool = False,
+    tip_radius: float | None = None, herringbone: bool = False, lead=None,
 ):  # fmt: skip
     """A gear solid from its transverse outline: a prism, a helical twist or a herringbone.
 
@@ -210,6 +210,13 @@ def gear_solid(
         largest vertex radius (conservative for rings, whose rim lies outside the teeth).
     herringbone : bool
         Two opposite-hand halves meeting at z = 0 (the lower half has the hand of ``twist``).
+    lead : tuple, optional
+        A lead modification along the face, ``(turns_of, relief_of, levels)``: ``turns_of
+        (rings)`` gives each vertex's turn (radians) per mm of relief, ``relief_of(z)`` the
+        relief (mm) at the axial positions ``z``, and ``levels`` the axial positions the
+        relief needs (its kinks, and enough between them to hold its curve within the
+        tolerance); each level's vertices turn by their share of its relief
+        (:func:`gears.contact.flank.solid_lead`).
 
     Returns
     -------
@@ -260,6 +267,12 @@ def gear_solid(
         n = int(slice_count(twist, r, tol)) if twist else 1
         z = np.linspace(-b / 2.0, b / 2.0, n + 1)
         theta = rate * z
+    unit = None
+    if lead is not None:
+        turns_of, relief_of, extra = lead
+        unit = np.asarray(turns_of(rings), float)
+        z = np.unique(np.round(np.concatenate([z, np.clip(extra, -b / 2.0, b / 2.0)]), 12))
+        theta = -rate * np.abs(z) if herringbone else rate * z
     levels = len(z)
     hole = np.repeat(np.arange(len(rings)) > 0, [len(rr) for rr in rings])
     if levels > 2 or rate:
@@ -267,10 +280,13 @@ def gear_solid(
         # r cos(dtheta / 2), towards the axis: inside an outer ring's material, but in the space
         # of a hole (a ring gear's teeth). The holes grow by 1 / cos(dtheta / 2), so every
         # chord of theirs touches its helix at mid-step and lies in the material elsewhere
-        grow = 1.0 / math.cos(abs(float(theta[1] - theta[0])) / 2.0)
+        grow = 1.0 / math.cos(float(np.max(np.abs(np.diff(theta)))) / 2.0)
         pts = np.where(hole[:, None], pts * grow, pts)
         rings = np.split(pts, np.cumsum([len(rr) for rr in rings])[:-1])
-    c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
+    theta = theta[:, None]
+    if unit is not None:
+        theta = theta + np.asarray(relief_of(z), float)[:, None] * unit[None, :]
+    c, s = np.cos(theta), np.sin(theta)
     verts = np.empty((levels, n_pts, 3))
     verts[:, :, 0] = c * pts[:, 0] - s * pts[:, 1]
     verts[:, :, 1] = s * pts[:, 0] + c * pts[:, 1]

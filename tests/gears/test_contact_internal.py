@@ -248,3 +248,82 @@ def test_best_modification_is_finite_or_refused(torque, reliefs, crownings, tilt
     assert np.all(np.isfinite(s.peak_to_peak)) and np.all(s.peak_to_peak >= -1e-9)
     assert np.all(np.isfinite(s.K_Hbeta)) and np.all(s.K_Hbeta >= 1 - 1e-9)
     assert 0 <= s.tip_relief <= 1 and 0 <= s.crowning <= 1
+
+
+# --- modifications drawn: outlines, pairs, solids -------------------------------------------------
+def _flank_deviation(plain_ring, relieved_ring, g, c_a, length):
+    """``(measured, expected)`` for the relieved outline's flank vertices just below the tip:
+    each one's distance to the unmodified outline, and the relief at its roll length."""
+    import shapely
+
+    pts = np.asarray(relieved_ring.coords)[:-1]
+    r = np.hypot(pts[:, 0], pts[:, 1])
+    rb, ra = g.base_diameter / 2, g.tip_diameter / 2
+    band = (np.abs(r - ra) > 0.02) & (np.abs(r - ra) < 0.3)
+    rho, rho_a = np.sqrt(r[band] ** 2 - rb**2), math.sqrt(ra**2 - rb**2)
+    expected = c_a * np.clip(1 - np.abs(rho_a - rho) / length, 0, 1)
+    measured = np.array([plain_ring.distance(shapely.Point(p)) for p in pts[band]])
+    return measured, expected
+
+
+@pytest.mark.parametrize("internal", [False, True])
+def test_drawn_tip_deviates_by_the_tip_relief(internal):
+    # an involute moved along its normal by delta is the same involute turned by delta / r_b:
+    # near the tip the relieved flank lies the relief C_a (1 - (rho_a - rho) / L_Ca) from the
+    # unmodified one (the normal distance between involutes of one base circle), within the
+    # outline tolerance; external and ring gears
+    tolerance, c_a = 1e-4, 0.03
+    g = Gear(77, 2, internal=True, tip_alteration=-0.05) if internal else Gear(29, 2)
+    m = Modification(tip_relief=c_a, tip_relief_length=2.0)
+    plain, relieved = g.outline(tolerance=tolerance), g.with_(modification=m).outline(tolerance)
+    assert relieved.is_valid
+    if internal:
+        plain_ring, ring_ = plain.interiors[0], relieved.interiors[0]
+        assert relieved.exterior.equals(plain.exterior)  # the rim keeps its circle
+    else:
+        plain_ring, ring_ = plain.exterior, relieved.exterior
+    measured, expected = _flank_deviation(plain_ring, ring_, g, c_a, 2.0)
+    assert measured.size >= 4 and expected.max() > 0.8 * c_a
+    np.testing.assert_allclose(measured, expected, atol=2 * tolerance)
+
+
+def test_pair_outlines_draw_the_modification_with_the_pairs_short_relief():
+    # in a pair, a relief length left None is the pair's short relief (eps_alpha - 1) p_bt,
+    # as in the contact analysis: the pair's outline of gear 1 equals the gear's own drawn with
+    # that length (to 1e-9 mm), and the relieved pair still meshes without overlap
+    plain = ring_pair()
+    m = Modification(tip_relief=0.02)
+    pair = GearPair(plain.g1.with_(modification=m), plain.g2.with_(modification=m))
+    p1, p2 = pair.outlines(tolerance=1e-3)
+    short = (plain.contact_ratio - 1) * plain.g1.base_pitch
+    own = pair.g1.with_(modification=Modification(tip_relief=0.02, tip_relief_length=short))
+    assert p1.hausdorff_distance(own.outline(tolerance=1e-3)) < 1e-9
+    assert p1.intersection(p2).area < 1e-6
+    q1, _ = plain.outlines(tolerance=1e-3)
+    assert p1.area < q1.area
+
+
+def test_crowning_is_drawn_on_the_solid_at_the_face_ends():
+    # crowning C_b: each end section's flank lies C_b from the unmodified flank (the relief of
+    # the contact analysis at y = +-b/2), the mid-plane's on it; within the tolerance; the
+    # solid stays watertight and loses volume. External gear and ring.
+    import shapely
+
+    tolerance, c_b, b = 0.002, 0.03, 20.0
+    for g in (Gear(29, 2, face_width=b), Gear(77, 2, internal=True, face_width=b,
+                                                tip_alteration=-0.05)):  # fmt: skip
+        crowned = g.with_(modification=Modification(crowning=c_b))
+        solid, flat = crowned.mesh(tolerance=tolerance), g.mesh(tolerance=tolerance)
+        assert solid.is_watertight and solid.volume < flat.volume
+        outline = g.outline(tolerance=tolerance)
+        toothed = outline.interiors[0] if g.internal else outline.exterior
+        rb, ra = g.base_diameter / 2, g.tip_diameter / 2
+        r_mid = (g.reference_diameter / 2 + ra) / 2  # on the active flank
+        v = solid.vertices
+        r = np.hypot(v[:, 0], v[:, 1])
+        near = np.abs(r - r_mid) < 0.2
+        for z, expected in ((b / 2, c_b), (-b / 2, c_b), (0.0, 0.0)):
+            at = near & (np.abs(v[:, 2] - z) < 1e-9)
+            d = [toothed.distance(shapely.Point(p[:2])) for p in v[at]]
+            assert max(d) == pytest.approx(expected, abs=2 * tolerance), (g.internal, z)
+        assert rb < r_mid < ra or g.internal

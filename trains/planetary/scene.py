@@ -29,6 +29,7 @@ from gears.arguments import (
     check_tolerance,
 )
 from gears.budget import check_budget
+from gears.contact.flank import solid_lead
 from gears.cutting.outline import outline_vertices
 from gears.errors import GearError
 from gears.figures.drawing import display_tolerance, outlines_svg
@@ -146,8 +147,9 @@ def scene(stage, angle: float = 0.0, face_width: float | None = None,
     for name, key, gear, centre, rot, z in layout:
         if key not in solids:
             try:
-                solids[key] = gear_solid(gear.outline(tol), b, twists[key], tol,
-                                         herringbone=herringbone)  # fmt: skip
+                lead, extra = solid_lead(gear, b, tol)  # the gear's lead modification
+                solids[key] = gear_solid(gear.outline(tol), b, twists[key] + extra, tol,
+                                         herringbone=herringbone, lead=lead)  # fmt: skip
             except GearError as exc:
                 raise TrainError(f"{key}: {exc}") from None
             solids[key].metadata["name"] = key
