@@ -3,7 +3,9 @@ over one mesh cycle (um along the line of action and arcseconds, peak to peak), 
 stiffness and its mean, how the tooth pairs share the load, the largest Hertzian pressure,
 and the face and transverse load factors K_Hbeta and K_Halpha taken from the load
 distribution. Tip and root relief and crowning (mm, the same on both gears) and a
-misalignment across the face enter the analysis. With --output, a figure is written: the
+misalignment across the face (one number, or its parts f_ma and f_sh) enter the analysis;
+--internal analyses a ring pair; --best searches the tip relief and crowning of the least peak
+to peak at the torque. With --output, a figure is written: the
 transmission-error curve, the contact pattern, or the Harris map (peak to peak over tip
 relief and torque). The exit status is 1 when the peak to peak exceeds --max-te.
 
@@ -11,6 +13,7 @@ Examples:
     geartrain contact 20 50 --module 3 --face-width 30 --torque 300
     geartrain contact 20 50 -m 3 --face-width 30 --torque 300 --tip-relief 0.015 -o te.png
     geartrain contact 17 103 -m 8 --helix 15.8 --face-width 100 --torque 9000 --misalignment 0.02
+    geartrain contact 29 77 -m 2 --internal --face-width 20 --torque 60 --f-ma 0.01 --best
 """
 
 from __future__ import annotations
@@ -35,6 +38,8 @@ NAMES = {
     **PAIR_NAMES,
     "torque": "--torque",
     "misalignment": "--misalignment",
+    "f_ma": "--f-ma",
+    "f_sh": "--f-sh",
     "positions": "--positions",
     "slices": "--slices",
     "tip_relief_length": "--relief-length",
@@ -67,6 +72,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="lead crowning C_b on gear 1, mm")  # fmt: skip
     parser.add_argument("--misalignment", type=bounded("--misalignment", -10, 10), default=0.0,
                         help="mesh misalignment across the face (f_ma + f_sh), mm")  # fmt: skip
+    parser.add_argument("--f-ma", type=bounded("--f-ma", -10, 10), default=0.0,
+                        help="misalignment from manufacture (ISO 6336-1 f_ma), mm across the "
+                        "face; adds to --misalignment")  # fmt: skip
+    parser.add_argument("--f-sh", type=bounded("--f-sh", -10, 10), default=0.0,
+                        help="misalignment from shaft and bearing deflection at this "
+                        "torque (ISO 6336-1 f_sh), mm across the face; adds to "
+                        "--misalignment")  # fmt: skip
+    parser.add_argument("--best", action="store_true",
+                        help="also search the tip relief (both gears) and crowning (gear 1) of "
+                        "the least peak to peak at this torque")  # fmt: skip
     parser.add_argument("--positions", type=integer("--positions", 4, 4096), default=64,
                         help="positions over one mesh cycle")  # fmt: skip
     parser.add_argument("--slices", type=integer("--slices", 1, 1000), default=30,
@@ -101,8 +116,8 @@ def run(args: argparse.Namespace) -> int:
     g1 = pair.g1.with_(modification=None if m1.is_none else m1)
     g2 = pair.g2.with_(modification=None if m2.is_none else m2)
     pair = type(pair)(g1, g2, pair.tip_shortening)
-    c = pair.contact(args.torque, misalignment=args.misalignment, positions=args.positions,
-                     slices=args.slices)  # fmt: skip
+    tilt = {"misalignment": args.misalignment, "f_ma": args.f_ma, "f_sh": args.f_sh}
+    c = pair.contact(args.torque, positions=args.positions, slices=args.slices, **tilt)
     te = c.transmission_error
     arcsec = c.transmission_error_arcsec
     lines = [
@@ -120,6 +135,12 @@ def run(args: argparse.Namespace) -> int:
         f"K_Hbeta                 {c.K_Hbeta:9.4f}",
         f"K_Halpha                {c.K_Halpha:9.4f}",
     ]
+    if args.best:
+        s = pair.best_modification(args.torque, relief_length=args.relief_length,
+                                   kind=args.relief_kind, **tilt)  # fmt: skip
+        lines.append(f"best tip relief         {s.tip_relief * 1000:9.2f} um, crowning "
+                     f"{s.crowning * 1000:.2f} um: peak to peak {s.best_peak_to_peak:.3f} um "
+                     f"(K_Hbeta {s.K_Hbeta[s.index]:.4f})")  # fmt: skip
     print("\n".join(lines))
     if args.output is not None:
         if args.figure == "harris":
