@@ -9,6 +9,12 @@ Run as ``python tests/benchmarks/bench_contact.py [rounds]``. Prints the best ti
 * the same spur curve with tip relief on both gears (the gaps and a second, ideal solve);
 * a Harris map of 20 reliefs x 20 torques (target <= 2 s), spur, with 1 slice (the default for
   spur pairs: every slice alike) and with 30 slices;
+* an internal pair's curve (the planet-ring mesh 29/77, m 2, b 20, 60 N m), and a planetary
+  stage's (19/29/77, three planets: both meshes and the net transmission error,
+  ``Planetary.contact``);
+* the design search ``GearPair.best_modification`` at 300 N m: 41 tip reliefs (aligned, 1
+  slice) and 41 tip reliefs x 9 crownings under a 20 um tilt (20 slices), beside the second
+  baseline: the same 41 x 9 grid as one ``contact`` call per cell (same positions and slices);
 * the baseline, measured in the same rounds: the same spur curve's load sharing solved position
   by position with ``scipy.optimize.nnls`` (the complementary-energy least squares of
   tests/gears/test_contact.py), the stiffness and gaps taken from the vectorised analysis, so
@@ -89,6 +95,24 @@ def main(rounds: int = 7) -> dict[str, float]:
     p_spur, p_hel = spur(), helical()
     reliefs = np.linspace(0, 0.04, 20)
     torques = np.linspace(20, 400, 20)
+    from gears.contact.result import best_modification
+    from trains import Planetary
+
+    stage = Planetary(19, 29, 77, n_planets=3, module=2)
+    ring = stage.meshes["planet-ring"]
+    ring = GearPair(ring.g1.with_(face_width=20), ring.g2.with_(face_width=20))
+    grid_r, grid_c = np.linspace(0, 0.04, 41), np.linspace(0, 0.02, 9)
+
+    def per_cell():
+        from gears.contact.modification import Modification
+
+        for ca in grid_r:
+            for cb in grid_c:
+                m1 = Modification(tip_relief=ca, crowning=cb)
+                m2 = Modification(tip_relief=ca)
+                pair = GearPair(p_spur.g1.with_(modification=m1), p_spur.g2.with_(modification=m2))
+                contact(pair, 300.0, misalignment=0.02, positions=32, slices=20)
+
     cases = {
         "TE curve 64 x 30, spur": lambda: contact(p_spur, 300.0),
         "TE curve 64 x 30, helical (TR 6336-30 Ex. 1)": lambda: contact(p_hel, 9000.0),
@@ -96,6 +120,13 @@ def main(rounds: int = 7) -> dict[str, float]:
         "Harris map 20 x 20, spur, 1 slice": lambda: harris(p_spur, torques, reliefs),
         "Harris map 20 x 20, spur, 30 slices": lambda: harris(p_spur, torques, reliefs, slices=30),
         "baseline: the spur curve's solve by nnls per position": nnls_curve(p_spur, 300.0),
+        "TE curve 64 x 30, internal 29/77": lambda: contact(ring, 60.0),
+        "Planetary.contact 19/29/77 x 3, 64 x 30": lambda: stage.contact(40.0, face_width=20),
+        "best_modification 41 reliefs, spur, 1 slice": lambda: best_modification(p_spur, 300.0),
+        "best_modification 41 x 9, tilt 20 um, 20 slices": lambda: best_modification(
+            p_spur, 300.0, misalignment=0.02, tip_reliefs=grid_r, crownings=grid_c
+        ),
+        "baseline: the 41 x 9 grid, one contact per cell": per_cell,
     }
     for fn in cases.values():
         fn()  # warm up
@@ -119,5 +150,8 @@ if __name__ == "__main__":
     print(
         f"nnls per position / whole vectorised curve: {base / times['TE curve 64 x 30, spur']:.1f}"
     )
+    grid = times["best_modification 41 x 9, tilt 20 um, 20 slices"]
+    print(f"one contact per cell / the grid at once: "
+          f"{times['baseline: the 41 x 9 grid, one contact per cell'] / grid:.1f}")  # fmt: skip
     load = os.getloadavg()
     print(f"load average at the end {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")
