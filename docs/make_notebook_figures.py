@@ -24,7 +24,7 @@ def main(out: pathlib.Path) -> list[pathlib.Path]:
         "gear": pinion,
         "pair": GearPair(pinion, Gear(24, 3, profile_shift=0.36)),
         "ring_pair": GearPair(
-            Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)
+            Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=-0.5)
         ),
         "stage": Planetary(18, 45, 108, n_planets=3, module=2),
         "bevel": BevelPair(20, 40, module=3, face_width=20),

@@ -27,10 +27,10 @@ def main():
             GearPair(Gear(12, 3, profile_shift=0.6), Gear(24, 3, profile_shift=0.36))
         ),
         "profile_internal_pair.png": pair_figure(
-            GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=0.5))
+            GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=-0.5))
         ),
         "profile_shaper_internal.png": generation_figure(
-            Gear(40, 1, internal=True, profile_shift=0.3),
+            Gear(40, 1, internal=True, profile_shift=-0.3),
             1e-2,
             method="shaper",
             cutter=ShaperCutter(20),

@@ -276,11 +276,12 @@ def _undercut_group(z, x, module, pressure_angle, helix_angle, rack):
 
 
 def has_working_angle(z1, z2, x1, x2, pressure_angle=20.0, helix_angle=0.0, internal=False):
-    """True where a working pressure angle exists: inv alpha_t + 2 tan alpha_n (x1 +- x2) /
-    (z1 +- z2) >= 0 (the condition :func:`gears.meshing.pair_geometry` raises on)."""
+    """True where a working pressure angle exists: inv alpha_t + 2 tan alpha_n (x1 + x2) /
+    (z1 +- z2) >= 0 (a ring's x2 in DIN 3960's sign; the condition
+    :func:`gears.meshing.pair_geometry` raises on)."""
     s = np.where(np.asarray(internal, bool), -1.0, 1.0)
     at = transverse_pressure_angle(pressure_angle, helix_angle)
-    xs = np.asarray(x1, float) + s * np.asarray(x2, float)
+    xs = np.asarray(x1, float) + np.asarray(x2, float)
     zs = np.asarray(z1, float) + s * np.asarray(z2, float)
     return _out(inv(at) + 2.0 * np.tan(np.radians(pressure_angle)) * xs / zs >= 0.0)
 
@@ -323,7 +324,7 @@ def equal_sliding_split(z1, z2, module, total, pressure_angle=20.0, helix_angle=
     )
 
     def imbalance(x1):
-        x2 = total[:, None] - x1 if s > 0 else total[:, None] + x1
+        x2 = total[:, None] - x1  # x1 + x2 = S, a ring's x2 too (DIN 3960)
         g = pair_geometry(z1[:, None], z2[:, None], m[:, None], x1, x2, pressure_angle,
                           helix_angle, internal, addendum, tip_shortening, threads=1)  # fmt: skip
         rb1 = base_diameter(z1, m, pressure_angle, helix_angle)[:, None] / 2
@@ -570,8 +571,8 @@ def center_distance_reach(
 
 def split_shift_sum(z1, z2, module, total, pressure_angle, helix_angle, internal, addendum,
                     tip_shortening, split, x1_kept):  # fmt: skip
-    """Gear 1's shift x1 when the shift sum ``total`` (x1 + x2; internal x2 - x1) is split by
-    ``split`` (:meth:`gears.GearPair.at_center_distance` says how each rule splits it):
+    """Gear 1's shift x1 when the shift sum ``total`` (x1 + x2, a ring's x2 in DIN 3960's sign) is
+    split by ``split`` (:meth:`gears.GearPair.at_center_distance` says how each rule splits it):
     ``"keep"`` keeps ``x1_kept``, ``"proportional"`` (external pairs) and ``"equal_sliding"``
     solve for it. Raises GearError where the rule has no answer."""
     if split == "keep":

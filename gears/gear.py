@@ -78,7 +78,10 @@ class Gear:
     helix_angle : float
         beta in degrees, -60 < beta < 60; positive = right hand.
     profile_shift : float
-        Normal profile-shift coefficient x (in modules).
+        Normal profile-shift coefficient x (in modules). An internal gear's follows DIN 3960 /
+        ISO 21771: a positive x makes a ring's teeth thicker and its tip circle smaller (the
+        tool moves towards the axis), so a ring is entered as a report of such a tool prints it
+        (KHK's Gear Technical Reference, and geartrain up to 0.2.0, count it the other way).
     face_width : float or None
         b in mm, for the overlap ratio and meshes.
     internal : bool
@@ -168,11 +171,12 @@ class Gear:
                 f"(d_f = {df:.4f} mm) of {where}; valid is tip_alteration > {-(ha + hf):g}"
             )
         if min(da, df) <= 0:
-            lowest = (ha + k - zc) if self.internal else (hf - zc)
+            # external d_f = d - 2 m_n (h_f - x) > 0; a ring's d_a = d - 2 m_n (h_a + x + k) > 0
+            bound = f"< {zc - ha - k:.4f}" if self.internal else f"> {hf - zc:.4f}"
             which = "tip" if self.internal else "root"
             raise GearError(
                 f"profile_shift = {self.profile_shift:g} gives {where} a {which} diameter of "
-                f"{min(da, df):.4f} mm; valid is profile_shift > {lowest:.4f}"
+                f"{min(da, df):.4f} mm; valid is profile_shift {bound}"
             )
 
     # --- basic quantities ------------------------------------------------------------------
@@ -443,13 +447,13 @@ class Gear:
         """Chordal tooth thickness and chordal height ``(s, h)`` at the reference circle, normal
         section (KHK / SDP-SI; helical gears through the virtual tooth number).
 
-        theta = 90 deg/z_v +- 360 deg x tan alpha_n / (pi z_v); s = z_v m_n sin theta;
-        h = h_a +- (z_v m_n / 2)(1 - cos theta), upper signs external.
+        theta = 90 deg/z_v + 360 deg x tan alpha_n / (pi z_v) (a ring's x in DIN 3960's sign);
+        s = z_v m_n sin theta; h = h_a +- (z_v m_n / 2)(1 - cos theta), upper sign external.
         """
         zv = self.virtual_teeth if self.helix_angle else float(self.teeth)
         s = -1.0 if self.internal else 1.0
         tan_a = math.tan(math.radians(self.pressure_angle))
-        theta = math.pi / (2 * zv) + s * 2 * self.profile_shift * tan_a / zv
+        theta = math.pi / (2 * zv) + 2 * self.profile_shift * tan_a / zv
         ha = s * (self.tip_diameter - self.reference_diameter) / 2
         chord = zv * self.module * math.sin(theta)
         height = ha + s * zv * self.module / 2 * (1 - math.cos(theta))

@@ -71,11 +71,12 @@ def pair_geometry(
 ) -> PairGeometry:  # fmt: skip
     """Geometry of many pairs at once (all arguments broadcast; angles in degrees).
 
-    ``z2`` and ``x2`` are gear 2's own (positive) tooth count and shift; ``internal`` marks
-    gear 2 as a ring. ``helix_angle`` is gear 1's (gear 2 has the opposite hand externally, the
-    same internally). Tip shortening (DIN 3960: k = y - (x1 + x2), applied when negative) is for
-    external pairs only; internal pairs keep their tips. Arrays of 65536 pairs or more run in
-    blocks on ``threads`` threads (default :func:`default_threads`).
+    ``z2`` is gear 2's own (positive) tooth count and ``x2`` its shift (a ring's in the sign of DIN
+    3960 / ISO 21771: positive thickens its teeth); ``internal`` marks gear 2 as a ring.
+    ``helix_angle`` is gear 1's (gear 2 has the opposite hand externally, the same internally). Tip
+    shortening (DIN 3960: k = y - (x1 + x2), applied when negative) is for external pairs only;
+    internal pairs keep their tips. Arrays of 65536 pairs or more run in blocks on ``threads``
+    threads (default :func:`default_threads`).
 
     Returns
     -------
@@ -223,20 +224,22 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
     at = np.arctan(tan_an / cos_b)
     cos_at = np.cos(at)
     z2s = z2 if external else s * z2  # signed tooth count of gear 2
-    x2s = x2 if external else s * x2
     zs = z1 + z2s
-    xs = x1 + x2s
+    xs = x1 + x2  # DIN 3960: inv alpha_wt = 2 tan alpha_n (x1 + x2) / (z1 + z2), z2 < 0 a ring
     inv_wt = xs / zs
     inv_wt *= 2.0 * tan_an
     inv_wt += inv(at)
     if not np.all(inv_wt >= 0.0):
         bad = ~(inv_wt >= 0.0)
-        lowest = -np.broadcast_to(inv(at) * np.abs(zs) / (2.0 * tan_an), bad.shape)[bad]
-        given = np.broadcast_to(s * xs, bad.shape)[bad][:3].tolist()
+        # the limit sum -(z1 + z2) inv alpha_t / (2 tan alpha_n): a floor externally, a ceiling
+        # for a ring (z1 + z2 < 0)
+        limit = np.broadcast_to(-inv(at) * zs / (2.0 * tan_an), bad.shape)[bad]
+        given = np.broadcast_to(xs, bad.shape)[bad][:3].tolist()
+        ring = bool(np.broadcast_to(zs < 0, bad.shape)[bad][0])
+        too, side = ("large for an internal pair", "below") if ring else ("negative", "above")
         raise GearError(
-            f"shift sum x1 + x2 (internal: x2 - x1) = {given} "
-            f"is too negative: a working pressure angle exists only above "
-            f"{np.ravel(lowest)[:3].tolist()} (inv alpha_wt >= 0)"
+            f"shift sum x1 + x2 = {given} is too {too}: a working pressure angle exists "
+            f"only {side} {np.ravel(limit)[:3].tolist()} (inv alpha_wt >= 0)"
         )
     awt = inv_inverse(inv_wt)
     cos_wt = np.cos(awt)
@@ -247,7 +250,7 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
     y = ratio - 1.0
     y *= half
     # k = y - (x1 + x2) when negative (DIN 3960), external pairs only
-    k = np.minimum(y - xs, 0.0) if external else np.where(s > 0, np.minimum(y - s * xs, 0.0), 0.0)
+    k = np.minimum(y - xs, 0.0) if external else np.where(s > 0, np.minimum(y - xs, 0.0), 0.0)
     if not np.all(tip_shortening):
         k = np.where(tip_shortening, k, 0.0)
     mt = m / cos_b
@@ -257,7 +260,7 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
     da1 += k
     da1 *= 2.0 * m
     da1 += d1
-    da2 = addendum + x2s
+    da2 = addendum + x2
     da2 += k
     da2 *= 2.0 * m if external else 2.0 * s * m
     da2 += d2
@@ -306,9 +309,10 @@ def contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
 def center_distance_shift_sum(
     z1, z2, module, center_distance, pressure_angle=20.0, helix_angle=0.0, internal=False
 ):
-    """Sum of shifts x1 + x2 (internal: x2 - x1) that gives ``center_distance`` (ISO 21771,
-    the inverse problem): cos alpha_wt = a_d cos alpha_t / a_w, then
-    sum x = (z2 +- z1)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n).
+    """Sum of shifts x1 + x2 that gives ``center_distance`` (ISO 21771, the inverse problem;
+    a ring's x2 in the sign of DIN 3960): cos alpha_wt = a_d cos alpha_t / a_w, then
+    x1 + x2 = (z1 +- z2)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n) (- internal: the sum
+    falls as the centre distance grows).
 
     Raises
     ------
@@ -339,7 +343,7 @@ def center_distance_shift_sum(
         )
     c = np.minimum(c, 1.0)
     awt = np.arccos(c)
-    out = zsum * (inv(awt) - inv(at)) / (2 * np.tan(an))
+    out = (z1 + s * z2) * (inv(awt) - inv(at)) / (2 * np.tan(an))
     return out[()] if np.ndim(out) == 0 else out
 
 

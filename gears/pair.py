@@ -172,7 +172,7 @@ class GearPair:
     ) -> GearPair:  # fmt: skip
         """The pair whose shifts give ``center_distance`` (mm), split between the gears.
 
-        The sum x1 + x2 (internal: x2 - x1) follows from the centre distance
+        The sum x1 + x2 (a ring's x2 in the sign of DIN 3960) follows from the centre distance
         (:func:`center_distance_shift_sum`); ``split`` distributes it:
 
         * ``"equal_sliding"``: the maximum specific sliding of the two flanks is equal (the
@@ -210,12 +210,11 @@ class GearPair:
                 g1.helix_angle, g2.internal,
             )
         )  # fmt: skip
-        s = -1.0 if g2.internal else 1.0
         x1 = split_shift_sum(
             g1.teeth, g2.teeth, g1.module, total, g1.pressure_angle, g1.helix_angle,
             g2.internal, g1.rack.addendum, tip_shortening, split, g1.profile_shift,
         )  # fmt: skip
-        x2 = total - x1 if s > 0 else total + x1  # external x1 + x2 = S; internal x2 - x1 = S
+        x2 = total - x1  # x1 + x2 = S, a ring's x2 too (DIN 3960)
         try:
             return cls(
                 g1.with_(profile_shift=x1, tip_alteration=0.0),
@@ -269,14 +268,15 @@ class GearPair:
         g1, g2 = self.g1, self.g2
         s = self._sigma
         at = math.radians(g1.transverse_pressure_angle)
-        total = g2.profile_shift + s * g1.profile_shift  # x1 + x2, internal x2 - x1
-        dz = g2.teeth + s * g1.teeth
-        if 2 * math.tan(math.radians(g1.pressure_angle)) * total / dz + float(inv(at)) < 0:
-            name = "x2 - x1" if self.internal else "x1 + x2"
-            lowest = -dz * float(inv(at)) / (2 * math.tan(math.radians(g1.pressure_angle)))
+        total = g1.profile_shift + g2.profile_shift  # a ring's x2 in DIN 3960's sign
+        zs = g1.teeth + s * g2.teeth  # DIN 3960: z2 < 0 for a ring
+        if 2 * math.tan(math.radians(g1.pressure_angle)) * total / zs + float(inv(at)) < 0:
+            limit = -zs * float(inv(at)) / (2 * math.tan(math.radians(g1.pressure_angle)))
+            too, rel = ("large", "<") if self.internal else ("negative", ">")
             raise GearError(
-                f"{name} = {total:g} is too negative for {dz} teeth: no working pressure angle "
-                f"exists (inv alpha_wt < 0); valid is {name} > {lowest:.4f}"
+                f"x1 + x2 = {total:g} is too {too} for {g1.teeth}/{g2.teeth} teeth"
+                f"{' (internal)' if self.internal else ''}: no working pressure angle exists "
+                f"(inv alpha_wt < 0); valid is x1 + x2 {rel} {limit:.4f}"
             )
         return pair_geometry(
             g1.teeth, g2.teeth, g1.module, g1.profile_shift, g2.profile_shift,

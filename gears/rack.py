@@ -191,7 +191,7 @@ class RackTool:
     """
 
     r: float  # reference radius (transverse)
-    xm: float  # profile shift x m_n
+    xm: float  # the tool line's offset from the reference circle, away from the axis: s x m_n
     s: float  # +1 external, -1 internal
     tan_a: float  # tan alpha_t
     c: float  # flank: u = c + s v tan_a (half tooth width at the tool reference line)
@@ -218,7 +218,10 @@ class RackTool:
         a, b = rho / cb, rho
         t_f = -math.atan(math.tan(at) * b / a) if rho > 0 else -at
         return cls(
-            r=gear.reference_diameter / 2, xm=gear.profile_shift * mn, s=s, tan_a=math.tan(at),
+            # xm: the tool's offset away from the axis; a ring's positive shift (DIN 3960)
+            # moves it towards the axis
+            r=gear.reference_diameter / 2, xm=s * gear.profile_shift * mn, s=s,
+            tan_a=math.tan(at),
             c=math.pi * gear.transverse_module / 4 + delta, h=h, a=a, b=b, u_c=max(u_c, 0.0),
             v_c=v_c, t_f=t_f,
         )  # fmt: skip

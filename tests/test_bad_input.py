@@ -110,7 +110,8 @@ def test_shifts_whose_tip_shortening_takes_the_tooth_are_refused():
     [
         (dict(profile_shift=-5), ["profile_shift = -5", "profile_shift > -4.75"]),  # hf - z/2
         (dict(tip_alteration=-50), ["tip_alteration = -50", "> -2.25"]),  # -(ha + hf)
-        (dict(profile_shift=-7, internal=True, teeth=12), ["profile_shift = -7", "> -5"]),
+        # a ring (DIN 3960 sign: x thickens the teeth, shrinks the tip): d_a = d - 2 m (h_a + x)
+        (dict(profile_shift=7, internal=True, teeth=12), ["profile_shift = 7", "< 5"]),
     ],
 )
 def test_gear_with_no_real_blank_is_refused(kwargs, words):
@@ -233,9 +234,10 @@ def test_pressure_angle_limit_is_the_tool_point():
 
 def test_internal_checks_near_the_limits_give_findings_not_exceptions():
     # issue 11 §8: ZeroDivisionError in the internal-pair checks
+    # the issue's ring shifts 0.5 and -1.0 were in KHK's sign: DIN 3960's -0.5 and 1.0
     for z1, z2, m, pa, beta, rack, x1, x2 in [
-        (374, 390, 20.26, 25.65, 28.14, "A", 0.5, 0.5),
-        (253, 308, 2.0, 20.0, 34.87, "C", -0.324, -1.0),
+        (374, 390, 20.26, 25.65, 28.14, "A", 0.5, -0.5),
+        (253, 308, 2.0, 20.0, 34.87, "C", -0.324, 1.0),
     ]:
         r = BasicRack.iso53(rack)
         g1 = Gear(z1, m, pa, beta, x1, rack=r)
@@ -355,11 +357,12 @@ def test_planetary_is_checked_or_refused(sun, planet, ring, n, module):
 
 
 def test_default_shaper_does_not_silently_round_a_ring():
-    # issue 11 §8: ring z = 215, m = 10, x = -1, rack C at 1e-4 m: the old default cutter
-    # (z0 = 12) failed its own tip_past_n1 check and rounded the ring's tips 15-19 tolerances
-    # thin at d = 2115 mm. The default is now the nearest cutter that passes its check, and the
-    # simulation agrees with the thickness formula (standards.md §1.4) within 2 tolerances.
-    ring = Gear(215, 10, profile_shift=-1, rack=BasicRack.iso53("C"), internal=True)
+    # issue 11 §8: ring z = 215, m = 10, x = -1 (KHK's sign; DIN 3960's +1), rack C at 1e-4 m: the
+    # old default cutter (z0 = 12) failed its own tip_past_n1 check and rounded the ring's tips
+    # 15-19 tolerances thin at d = 2115 mm. The default is now the nearest cutter that passes its
+    # check, and the simulation agrees with the thickness formula (standards.md §1.4) within 2
+    # tolerances.
+    ring = Gear(215, 10, profile_shift=1, rack=BasicRack.iso53("C"), internal=True)
     cutter = ShaperCutter.default_for(ring)
     assert cutter.check(ring).ok and not ShaperCutter(12).check(ring).ok
     tol = 1e-3

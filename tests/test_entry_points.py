@@ -147,9 +147,9 @@ RING = Gear(60, 1, internal=True)
         (lambda: PAIR.scene(face_width="x"), ["face_width"]),
         (lambda: PAIR.scene(tolerance=math.inf), ["tolerance"]),
         (lambda: PAIR.scene(method="laser"), ["method", "'laser'"]),
-        (
+        (  # a ring shift of 1.130071 in KHK's sign: DIN 3960's -1.130071
             lambda: Gear(
-                6, 50, 14.5, 0, 1.130071, internal=True, rack=BasicRack.iso53("B")
+                6, 50, 14.5, 0, -1.130071, internal=True, rack=BasicRack.iso53("B")
             ).outline(0.05),
             ["z = 6"],
         ),
@@ -348,7 +348,7 @@ def test_an_unreachable_ratio_says_what_one_stage_reaches():
         Gear(8, 1),  # undercut
         Gear(12, 3, profile_shift=0.6, helix_angle=20),
         Gear(77, 1, internal=True),  # every piece of a ring's toothed hole is concave
-        Gear(60, 2, internal=True, rack=BasicRack.iso53("C"), profile_shift=-0.3),
+        Gear(60, 2, internal=True, rack=BasicRack.iso53("C"), profile_shift=0.3),
     ],
 )
 @pytest.mark.parametrize("tol", [0.1, 0.01])

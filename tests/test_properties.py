@@ -108,7 +108,6 @@ DESIGN = (
     "base circle",
     "involute",
     "x1 + x2",
-    "x2 - x1",
     "ring",
 )
 
@@ -417,7 +416,7 @@ def test_gear_solid(o, args):
 SCENE_PAIRS = [
     GearPair(Gear(12, 2), Gear(30, 2)),
     GearPair(Gear(17, 1, helix_angle=15), Gear(29, 1, helix_angle=-15)),
-    GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=0.5)),
+    GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=-0.5)),
 ]
 
 

@@ -67,7 +67,9 @@ def coaxial_shifts(
     center_distance : float, optional
         The common working centre distance a_w in mm. Default: the largest centre distance the
         meshes have with their given shifts, so the mesh that already has it keeps its gears
-        and the others get positive shift sums (the mesh with the smaller tooth sum is shifted).
+        and the others get larger centre distances: positive shift sums on external meshes,
+        negative ones on internal meshes (a ring's shift in DIN 3960's sign, where
+        ``x_1 + x_2 = (z_1 - z_2)(inv alpha_w - inv alpha) / (2 tan alpha)``).
     split : str
         How each shift sum is shared between the two gears: ``"equal_sliding"`` (default),
         ``"proportional"`` or ``"keep"`` (gear 1 keeps its shift), as in

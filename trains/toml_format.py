@@ -11,7 +11,8 @@ The format (documented with examples in ``docs/trains.md`` and ``examples/*.toml
     internal = false              # optional; with real gears the one with more teeth is the ring
     name = "sun-planet"           # optional relation name
     module = 2                    # optional: real gears (normal module, mm); then also:
-    shift = [0.3, -0.3]           #   profile shifts x_a, x_b (or one number for both)
+    shift = [0.3, -0.3]           #   profile shifts x_a, x_b (or one number for both; a
+                                  #   ring's in the sign of DIN 3960 / ISO 21771)
     helix = 15                    #   gear a's helix angle (deg); b gets the matching hand
     face_width = [20, 18]         #   mm (or one number for both)
     pressure_angle = 20           #   deg (default: ISO 53, 20)

@@ -6,13 +6,13 @@ circle, and a profile shift ``x0``. Work and cutter turn as a gear pair at zero 
 (Ozols §21-6, the Fellows method; Joldasbekov §2.8: "an involute generating contour also
 generates an involute"), on the cutting centre distance
 
-    inv alpha_w0 = 2 tan alpha_n (x +- x0) / (z +- z0) + inv alpha_t,
-    a0 = m_t (z +- z0) / 2 * cos alpha_t / cos alpha_w0          (+ external, - internal work)
+    inv alpha_w0 = 2 tan alpha_n (x + x0) / (z +- z0) + inv alpha_t,
+    a0 = m_t |z +- z0| / 2 * cos alpha_t / cos alpha_w0          (+ external, - internal work)
 
-(ISO 21771's working pressure angle, the cutter as the mating gear). Hence the shaper-cut root
-circle
+(ISO 21771's working pressure angle, the cutter as the mating gear; a ring's x in DIN 3960's
+sign). Hence the shaper-cut root circle
 ``d_f = 2 (a0 - r_a0)`` (external) or ``2 (a0 + r_a0)`` (internal), which differs from the rack
-formula unless ``x +- x0 = 0`` (``x = -x0`` external, ``x = x0`` internal)
+formula unless ``x + x0 = 0`` (``x = -x0``, external and internal work alike)
 (:meth:`ShaperCutter.root_diameter`), and the form circle where the cutter's involute ends
 (:meth:`ShaperCutter.form_diameter`).
 
@@ -206,7 +206,7 @@ class ShaperCutter:
           simulation models generation at full depth only, so it does not show this one.
 
         >>> from gears import Gear
-        >>> ring = Gear(40, 1, internal=True, profile_shift=0.3)
+        >>> ring = Gear(40, 1, internal=True, profile_shift=-0.3)
         >>> ShaperCutter(20).check(ring).ok, ShaperCutter(37).check(ring).failed()
         (True, ['trimming', 'radial_infeed'])
         """

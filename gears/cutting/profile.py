@@ -316,7 +316,8 @@ class ToothProfile:
         if self.tool.s < 0 and self.eta_involute(self.ra) >= half:
             raise GearError(
                 f"internal gear teeth are pointed before the tip circle d_a = {2 * self.ra:.6g}"
-                " mm; use a smaller (or negative) profile shift or a larger tip diameter"
+                " mm; use a larger profile shift (DIN 3960: it thickens a ring's teeth) or a "
+                "larger tip diameter"
             )
         if self.tool.s > 0 and float(self.eta_involute(self.form_radius)) >= half:
             raise GearError(

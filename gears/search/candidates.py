@@ -257,7 +257,7 @@ def candidate_space(
                                               base[:, 1], internal)  # fmt: skip
             total = np.atleast_1d(total)
             lo, hi = x.min(), x.max()
-            s_lo, s_hi = (2 * lo, 2 * hi) if not internal else (lo - hi, hi - lo)
+            s_lo, s_hi = 2 * lo, 2 * hi  # x1 + x2, a ring's x2 in DIN 3960's sign too
             base = base[(total >= s_lo - 1e-9) & (total <= s_hi + 1e-9)]
         x2 = np.zeros(1)
         if split != "keep":

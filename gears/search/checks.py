@@ -90,7 +90,7 @@ def _check_group(space: _Space, ib, i1, i2) -> tuple[dict[str, np.ndarray], int]
             x1 = equal_sliding_split(z1, z2, m, total, space.pressure_angle, beta,
                                      space.internal, space.rack.addendum,
                                      space.tip_shortening)  # fmt: skip
-        x2 = total + x1 if space.internal else total - x1
+        x2 = total - x1  # x1 + x2 = S, a ring's x2 too (DIN 3960)
     lo, hi = space.shift_range
     keep = np.isfinite(x1) & np.isfinite(x2)  # a split may not exist (equal sliding)
     x1, x2 = np.where(keep, x1, 0.0), np.where(keep, x2, 0.0)

@@ -73,7 +73,8 @@ def pairs(
     teeth : (z_min, z_max) or sequence of int
         Tooth counts for both gears (gear 2 a ring with ``internal=True``).
     shifts : float, sequence or (low, high, step)
-        Profile-shift coefficients to try.
+        Profile-shift coefficients to try (a ring's in the sign of DIN 3960 / ISO 21771:
+        positive thickens its teeth).
     limits : Limits or dict
         Contact ratio, tip land, undercut and sliding limits
         (:class:`gears.search.candidates.Limits`).

@@ -38,7 +38,7 @@ def main() -> None:
         ("ring z = 80, m = 2", Gear(80, 2, internal=True), 30),
         ("pair 12/24, m = 3", GearPair(pinion, Gear(24, 3, profile_shift=0.36)), 20),
         ("internal pair 20/80, m = 2",
-         GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)),
+         GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=-0.5)),
          20),
         ("stage 18/45/108 x 3, m = 2", Planetary(18, 45, 108, n_planets=3, module=2), 5),
         ("bevel pair 20/40, m = 3, b = 20", BevelPair(20, 40, module=3, face_width=20), 30),

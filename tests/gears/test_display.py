@@ -91,7 +91,7 @@ def test_ring_gear_svg_keeps_its_hole():
     "pair",
     [
         GearPair(Gear(12, 3, profile_shift=0.6), Gear(24, 3, profile_shift=0.36)),
-        GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.5)),
+        GearPair(Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=-0.5)),
     ],
     ids=["external", "internal"],
 )
@@ -186,7 +186,7 @@ class _Table(HTMLParser):
 
 def test_report_html_marks_the_failing_findings():
     # the internal pair of the README: the ring's tip reaches the pinion's fillet
-    ring = Gear(80, 2, internal=True, profile_shift=0.3)
+    ring = Gear(80, 2, internal=True, profile_shift=-0.3)
     report = GearPair(Gear(20, 2, profile_shift=0.3), ring).check()
     table = _Table(report._repr_html_())
     head, *body = table.rows

@@ -79,7 +79,7 @@ def test_plots_render(tmp_path):
         tooth_figure(Gear(8, 1)),
         generation_figure(Gear(8, 1), 1e-2),
         pair_figure(
-            GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=0.5))
+            GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=-0.5))
         ),
     ):
         fig.savefig(tmp_path / "f.png")
@@ -94,7 +94,7 @@ def test_shaper_generation_figure(tmp_path):
     from gears.cutting.cutter import ShaperCutter
     from gears.figures.plot import generation_figure
 
-    ring = Gear(40, 1, internal=True, profile_shift=0.3)
+    ring = Gear(40, 1, internal=True, profile_shift=-0.3)
     for fig in (
         generation_figure(ring, 1e-2, method="shaper", cutter=ShaperCutter(20)),
         generation_figure(Gear(8, 1), 1e-2, every=2, method="shaper"),

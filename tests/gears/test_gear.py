@@ -78,8 +78,8 @@ def test_reference_thickness_joldasbekov_5_3():
         Gear(12, 3, profile_shift=0.6),
         Gear(31, 2.5, profile_shift=-0.4),
         Gear(20, 2, helix_angle=25, profile_shift=0.2),
-        Gear(60, 2, internal=True, profile_shift=0.3),
-        Gear(71, 1.5, internal=True, helix_angle=-20, profile_shift=-0.25),
+        Gear(60, 2, internal=True, profile_shift=-0.3),
+        Gear(71, 1.5, internal=True, helix_angle=-20, profile_shift=0.25),
     ],
 )
 def test_thickness_from_base_thickness(gear):
@@ -94,10 +94,11 @@ def test_thickness_from_base_thickness(gear):
     alpha_y = np.arccos(gear.base_diameter / d)
     expected = d * (gear.base_thickness / gear.base_diameter - sign * inv(alpha_y))
     assert gear.tooth_thickness(d) == pytest.approx(expected, rel=1e-12, abs=1e-12)
-    # s_b = d_b (s_t/d +- inv alpha_t) (standards.md §1.4)
+    # s_b = d_b (s_t/d +- inv alpha_t) (standards.md §1.4); s_t = m_t (pi/2 + 2 x tan alpha_n)
+    # for a ring too (DIN 3960: its positive shift thickens the teeth)
     at = math.radians(gear.transverse_pressure_angle)
     s_t = gear.transverse_module * (
-        math.pi / 2 + sign * 2 * gear.profile_shift * math.tan(math.radians(gear.pressure_angle))
+        math.pi / 2 + 2 * gear.profile_shift * math.tan(math.radians(gear.pressure_angle))
     )
     assert gear.reference_thickness == pytest.approx(s_t, rel=1e-13)
     assert gear.base_thickness == pytest.approx(
@@ -116,15 +117,16 @@ def test_thickness_inside_base_circle_raises():
 @pytest.mark.parametrize(("z", "x"), [(20, 0.0), (33, 0.25), (60, -0.4), (45, 0.8)])
 def test_internal_tooth_is_external_space(z, x):
     # independent route: a ring and the external gear cut by the same rack position are
-    # complementary; the ring's tooth is the external gear's space. With the DIN 3960 / KHK sign
-    # convention of DESIGN.md (x > 0 moves the tool outward, thinning ring teeth) the external
-    # gear has the same x (in a convention measuring x towards the material it would be -x).
-    ring = Gear(z, 2, internal=True, profile_shift=x)
+    # complementary; the ring's tooth is the external gear's space. In the sign of DIN 3960 /
+    # ISO 21771 (x > 0 moves the tool towards the axis, thickening ring teeth) the external gear
+    # cut by that rack position has the opposite shift -x.
+    ring = Gear(z, 2, internal=True, profile_shift=-x)
     ext = Gear(z, 2, profile_shift=x)
     d = np.linspace(ring.base_diameter * 1.001, ring.root_diameter, 9)
     space = math.pi * d / z - ext.tooth_thickness(d)
     assert ring.tooth_thickness(d) == pytest.approx(space, rel=1e-12)
-    # diameters (standards.md §1.3): d_a = d - 2(h_a - x) m, d_f = d + 2(h_f + x) m
+    # diameters (KHK, x_KHK = x here): d_a = d - 2(h_a - x) m, d_f = d + 2(h_f + x) m; with the
+    # ring's DIN 3960 shift x_DIN = -x: d_a = d - 2(h_a + x_DIN) m, d_f = d + 2(h_f - x_DIN) m
     assert ring.tip_diameter == pytest.approx(2 * z - 2 * 2 * (1 - x))
     assert ring.root_diameter == pytest.approx(2 * z + 2 * 2 * (1.25 + x))
     assert ring.root_diameter == pytest.approx(2 * z + 2 * 2 * 1.25 + 2 * 2 * x)
@@ -169,9 +171,9 @@ def test_tip_land_boundary_standards_6_4():
 
 
 def test_pointed_tip_internal():
-    # a ring tooth thins towards its tip (inside); with a large positive shift it points above
-    # the base circle, otherwise the base diameter is returned
-    ring = Gear(40, 1, internal=True, profile_shift=1.5)
+    # a ring tooth thins towards its tip (inside); with a large negative shift (DIN 3960 sign:
+    # thinner teeth) it points above the base circle, otherwise the base diameter is returned
+    ring = Gear(40, 1, internal=True, profile_shift=-1.5)
     assert ring.pointed_tip_diameter > ring.base_diameter
     assert ring.tooth_thickness(ring.pointed_tip_diameter) == pytest.approx(0.0, abs=1e-12)
     plain = Gear(40, 1, internal=True)
@@ -314,8 +316,8 @@ def _pin_flank_distance(gear, centre_radius):
         (Gear(20, 2, profile_shift=0.3), 3.5),
         (Gear(21, 2, profile_shift=-0.2), 3.5),
         (Gear(13, 3, profile_shift=0.5), 5.5),
-        (Gear(60, 2, internal=True, profile_shift=0.3), 3.0),
-        (Gear(61, 2, internal=True, profile_shift=-0.2), 3.0),
+        (Gear(60, 2, internal=True, profile_shift=-0.3), 3.0),
+        (Gear(61, 2, internal=True, profile_shift=0.2), 3.0),
     ],
 )
 def test_over_pins_pin_touches_both_flanks(gear, pin):
@@ -357,7 +359,7 @@ def test_chordal_thickness():
     s, h = Gear(20, 5).chordal_thickness()
     assert (s, h) == pytest.approx((7.845910, 5.154133), abs=5e-7)
     # independent derivation (KHK form = chord of the reference arc): shifted and internal
-    for g in (Gear(15, 2, profile_shift=0.4), Gear(50, 2, internal=True, profile_shift=0.2)):
+    for g in (Gear(15, 2, profile_shift=0.4), Gear(50, 2, internal=True, profile_shift=-0.2)):
         sign = -1 if g.internal else 1
         half = g.reference_thickness / g.reference_diameter
         s, h = g.chordal_thickness()
@@ -471,7 +473,7 @@ def test_internal_form_circle_stays_inside_the_root_circle():
     # the rack-limit form circle of a small shifted ring (z = 40, x = 0.3, m = 1) would lie at
     # 43.1947 mm, beyond the root circle d_f = d + 2 (h_fP + x) m = 43.1 mm (ISO 53 A; found by
     # the profile tests); a usable involute cannot end outside the root, so it is clamped there
-    ring = Gear(40, 1, internal=True, profile_shift=0.3)
+    ring = Gear(40, 1, internal=True, profile_shift=-0.3)
     assert ring.root_diameter == pytest.approx(43.1)
     assert ring.form_diameter == pytest.approx(43.1)
     # a large ring keeps its rack-limit value, independent derivation: 2 sqrt(r_b^2 + L^2),

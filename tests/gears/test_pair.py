@@ -334,9 +334,10 @@ def test_rack_validation():
 
 
 def test_internal_pair_formulas():
-    # standards.md §1.2 internal: inv a_wt = 2 tan a (x2 - x1)/(z2 - z1) + inv a;
+    # KHK internal pair: inv a_wt = 2 tan a (x2 - x1)/(z2 - z1) + inv a with KHK's ring shift
+    # x2 = 0.5 (DIN 3960 sign -0.5: DIN's inv a_wt = 2 tan a (x1 + x2)/(z1 + z2), z2 = -70);
     # a = ((z2 - z1)/2 + y) m; internal pairs keep their tips (no shortening)
-    g1, g2 = Gear(20, 2, profile_shift=0.2), Gear(70, 2, internal=True, profile_shift=0.5)
+    g1, g2 = Gear(20, 2, profile_shift=0.2), Gear(70, 2, internal=True, profile_shift=-0.5)
     p = GearPair(g1, g2)
     from gears.involute import inv, inv_inverse
 
@@ -357,7 +358,8 @@ def test_zero_backlash_both_kinds(z1, z2, x1, x2):
     # internal: pinion tooth = ring space. Independent of the alpha_w formula.
     for internal in (False, True):
         g1 = Gear(z1, 2, profile_shift=x1)
-        g2 = Gear(z2, 2, profile_shift=x2, internal=internal)
+        # the ring takes x2 in KHK's sign, as these cases were written: DIN 3960's -x2
+        g2 = Gear(z2, 2, profile_shift=-x2 if internal else x2, internal=internal)
         p = GearPair(g1, g2)
         dw1, dw2 = p.working_diameters
         pitch = math.pi * dw1 / z1
@@ -371,7 +373,7 @@ def test_zero_backlash_both_kinds(z1, z2, x1, x2):
 def test_internal_limit_of_external_formulas():
     # independent route: the internal contact ratio equals the external formula written with
     # signed radii (a ring is a gear with negative z); checked through the line positions
-    g1, g2 = Gear(24, 1, profile_shift=0.2), Gear(90, 1, internal=True, profile_shift=0.3)
+    g1, g2 = Gear(24, 1, profile_shift=0.2), Gear(90, 1, internal=True, profile_shift=-0.3)
     p = GearPair(g1, g2)
     ra1, ra2 = p.tip_diameters[0] / 2, p.tip_diameters[1] / 2
     rb1, rb2 = g1.base_diameter / 2, g2.base_diameter / 2
@@ -437,7 +439,7 @@ def test_khk_trochoid_and_radial_fail_when_tip_circles_nest():
 def test_involute_interference_is_path_start_at_n1():
     # independent route: KHK's involute condition z1/z2 >= 1 - tan a_a2 / tan a_w says the
     # ring's tip stays outside N1, i.e. the path of contact starts at u >= 0
-    for z1, z2, x1, x2 in [(20, 50, 0, 0), (20, 70, 0, 0), (24, 38, 0.0, 0.3), (16, 90, 0.5, 0)]:
+    for z1, z2, x1, x2 in [(20, 50, 0, 0), (20, 70, 0, 0), (24, 38, 0.0, -0.3), (16, 90, 0.5, 0)]:
         p = GearPair(Gear(z1, 1, profile_shift=x1), Gear(z2, 1, internal=True, profile_shift=x2))
         m = p.check()["involute_interference"].margin
         assert (m >= 0) == (p.path_of_contact.start >= 0)
@@ -471,8 +473,8 @@ def test_center_distance_round_trip(g1, g2, a, split):
             g2.internal,
         )
     )  # fmt: skip
-    sign = -1 if g2.internal else 1
-    assert total == pytest.approx(p.g2.profile_shift + sign * p.g1.profile_shift, abs=1e-9)
+    # x1 + x2, a ring's x2 in the sign of DIN 3960 too
+    assert total == pytest.approx(p.g2.profile_shift + p.g1.profile_shift, abs=1e-9)
     if split == "keep":
         assert p.g1.profile_shift == g1.profile_shift
     if split == "equal_sliding":
@@ -503,8 +505,9 @@ def test_shift_sum_too_negative_names_the_shifts():
     # shift sum (issue 17: a pair it accepted had check() raise on this)
     with pytest.raises(GearError, match=r"x1 \+ x2 = -2 .* valid is x1 \+ x2 > -0.3"):
         _pair(8, 9, -1.0, -1.0)
-    with pytest.raises(GearError, match=r"x2 - x1 = -0.6"):
-        GearPair(Gear(20, 1, profile_shift=0.5), Gear(30, 1, internal=True, profile_shift=-0.1))
+    # a ring (DIN 3960 sign): x1 + x2 = 0.6 exceeds 10 inv(20 deg) / (2 tan 20 deg) = 0.2047
+    with pytest.raises(GearError, match=r"x1 \+ x2 = 0.6 .* valid is x1 \+ x2 < 0.2047"):
+        GearPair(Gear(20, 1, profile_shift=0.5), Gear(30, 1, internal=True, profile_shift=0.1))
 
 
 # --- helical pairs, validation ------------------------------------------------------------------

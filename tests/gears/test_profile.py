@@ -16,7 +16,7 @@ GEARS = {
     "z17_x-0.3": Gear(17, 2, profile_shift=-0.3),  # undercut
     "helical_z20_b30": Gear(20, 1, helix_angle=30, profile_shift=0.2),
     "ring_z80": Gear(80, 2, internal=True),
-    "ring_z40_x0.3": Gear(40, 1, internal=True, profile_shift=0.3),
+    "ring_z40_x0.3": Gear(40, 1, internal=True, profile_shift=-0.3),
 }
 
 
@@ -145,7 +145,7 @@ def test_external_pair_meshes_without_overlap(method):
 def test_internal_pair_meshes_without_overlap():
     # source: an internal pair clear of interference (standards.md §1.8 table: z1 = 20 needs
     # z2 >= 64 at x = 0; shifts 0.5/0.5 keep the ring tip above the pinion's form circle)
-    pair = GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=0.5))
+    pair = GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=-0.5))
     _mesh_check(pair, "analytic")
 
 
@@ -182,11 +182,11 @@ def test_backlash_thins_teeth():
         Gear(12, 0.1),
         Gear(12, 50, profile_shift=0.3),
         Gear(30, 1, internal=True),  # tip inside base circle: clear error
-        Gear(40, 1, internal=True, profile_shift=0.8),
+        Gear(40, 1, internal=True, profile_shift=-0.8),
         Gear(3, 1, profile_shift=-0.2),  # root just above the centre (x > -0.25)
         Gear(200, 1, internal=True),
         # a 38-tooth shaper on a 40-tooth ring trims its tips (ShaperCutter.check)
-        Gear(40, 1, internal=True, profile_shift=0.3, cutter=ShaperCutter(38)),
+        Gear(40, 1, internal=True, profile_shift=-0.3, cutter=ShaperCutter(38)),
     ],
     ids=lambda g: (
         f"z{g.teeth}_m{g.module}_x{g.profile_shift}_{'int' if g.internal else 'ext'}"

@@ -175,7 +175,9 @@ def test_internal_gear_rated_from_its_shaper_cut_root(z, x):
     its Y_F lies below an external gear's of the same z and x (ISO 6336-3: internal teeth are
     thicker at the root)."""
     pinion = Gear(19, 2, face_width=20)
-    ring = Gear(z, 2, internal=True, profile_shift=x, face_width=20)
+    # x in KHK's sign for the ring, as these cases were written (the external gear cut by the
+    # same rack position): DIN 3960's -x
+    ring = Gear(z, 2, internal=True, profile_shift=-x, face_width=20)
     internal = GearPair(pinion, ring).rating(100, 1000)
     assert internal.roots[1] == "measured on the exact envelope (shaper-cut)"
     external = GearPair(pinion, Gear(z, 2, profile_shift=x, face_width=20)).rating(100, 1000)

@@ -1,14 +1,16 @@
-"""A published internal mesh against geartrain (issue 26): the ring's profile-shift sign and the
-root fillet a shaper cutter leaves on it.
+"""A published internal mesh against geartrain (issue 26): the ring's profile-shift sign (DIN 3960
+/ ISO 21771's, as the report prints it), the single stiffness that takes it, and the root
+fillet a shaper cutter leaves on the ring.
 
 Source: a commercial tool's ISO 6336:2006 method B report of the NREL 5 MW reference gearbox's
 planetary stage (KISSsoft 03/2017, published in the open repository gfsReboucas/Drivetrain as
-``@NREL_5MW/stage_02.rtf``): planet z 36, x 0.5039 (ISO 53 A), ring z 93 (printed -93), x 0.1171
-in the sign of DIN 3960 / ISO 21771 (ISO 53 B), m_n 21, alpha_n 20 deg, spur, the planet's
-tip altered by -1.750 mm; printed a_w 584.000, ring d_a 1906.081, d_f 2000.581, s_n* 1.6560,
-eps_alpha 1.618; the ring cut by a pinion-type cutter z0 30, x0 0, rho_a0* 0.300, its 60 deg
-tangent point at d 1998.168 mm with rho_F 8.78 mm and s_Fn 56.76 mm, the load at d 1928.177 mm,
-h_F 30.32 mm, alpha_Fen 18.63 deg, Y_F 1.20, Y_S 2.34.
+``@NREL_5MW/stage_02.rtf``): planet z 36, x 0.5039 (ISO 53 A), ring z 93 (printed -93), x 0.1171 in
+the sign of DIN 3960 / ISO 21771 (ISO 53 B), m_n 21, alpha_n 20 deg, spur, the planet's tip altered
+by -1.750 mm; printed a_w 584.000, ring d_a 1906.081, d_f 2000.581, s_n* 1.6560, eps_alpha 1.618, at
+F_t 285900.438 N c' 14.053 and c_gamma_alpha 20.563 N/(mm um) with the gear-body factor C_R 0.862;
+the ring cut by a pinion-type cutter z0 30, x0 0, rho_a0* 0.300, its 60 deg tangent point at d
+1998.168 mm with rho_F 8.78 mm and s_Fn 56.76 mm, the load at d 1928.177 mm, h_F 30.32 mm, alpha_Fen
+18.63 deg, Y_F 1.20, Y_S 2.34.
 
 The independent route for the fillet is this file's own kinematics (no library code): the
 cutter's pitch circle rolls inside the ring's at the working centre distance of zero backlash
@@ -44,10 +46,10 @@ def _mesh(ring_shift: float, cutter=None) -> GearPair:
     return GearPair(planet, ring)
 
 
-def test_the_ring_shift_is_din_3960_s_negated():
-    # geartrain's sign (KHK's): a positive shift makes a ring's teeth thinner; DIN 3960 /
-    # ISO 21771 (and the report) the other way. The report's ring is geartrain's x = -0.1171.
-    pair = _mesh(-X_RING_DIN)
+def test_the_ring_shift_follows_din_3960():
+    # geartrain's sign is DIN 3960 / ISO 21771's (the report's): a positive shift thickens a
+    # ring's teeth and shrinks its tip circle, so the report's ring is entered as printed
+    pair = _mesh(X_RING_DIN)
     ring = pair.g2
     # x is printed to 4 decimals: +-5e-5 x 2 m_n = +-2.1e-3 mm on the diameters
     assert pair.center_distance == pytest.approx(584.000, abs=2.5e-3)
@@ -55,10 +57,23 @@ def test_the_ring_shift_is_din_3960_s_negated():
     assert ring.root_diameter == pytest.approx(2000.581, abs=2.5e-3)
     assert ring.tooth_thickness(ring.reference_diameter) / M == pytest.approx(1.6560, abs=5e-5)
     assert pair.contact_ratio == pytest.approx(1.618, abs=5e-4)
-    # entered with the report's sign, the ring is another gear: thinner teeth, a larger tip
-    other = _mesh(+X_RING_DIN)
-    assert other.g2.tip_diameter == pytest.approx(1915.918, abs=5e-4)  # d - 2 m (1 - 0.1171)
+    # entered in KHK's sign (geartrain's up to 0.2.0), the ring is another gear: thinner teeth,
+    # a larger tip (KHK: d_a = d - 2 m (1 - x) with x = 0.1171)
+    other = _mesh(-X_RING_DIN)
+    assert other.g2.tip_diameter == pytest.approx(1915.918, abs=5e-4)
     assert other.center_distance == pytest.approx(589.883, abs=5e-4)
+
+
+def test_the_single_stiffness_takes_the_ring_shift_in_din_3960_s_sign():
+    # ISO 6336-1 §9.3 method B: q' has the term C6 x2 (C6 = -0.00193), x2 in the standard's
+    # (DIN 3960 / ISO 21771) sign. The report prints c' = 14.053 N/(mm um) for this mesh with its
+    # gear-body factor C_R = 0.862 (b_s/b = 0.25); geartrain takes solid gears (C_R = 1), so
+    # c' C_R must agree to C_R's print rounding (+-0.06 %). At the report's F_t = 285900.438 N
+    # (w = 519.82 N/mm > 100: no light-load reduction). The other sign gives 13.917 (-1.0 %).
+    torque = 285900.438 * Z_PLANET * M / 2000
+    v = _mesh(X_RING_DIN).rating(torque, 123.4).values
+    assert v.c_prime * 0.862 == pytest.approx(14.053, rel=1e-3)
+    assert v.c_gamma_alpha * 0.862 == pytest.approx(20.563, rel=1e-3)  # c' (0.75 eps + 0.25)
 
 
 def _independent_fillet(z0=30, x0=0.0, ha0=1.25, rho0=0.3, x2=X_RING_DIN, alpha=20.0):
@@ -110,7 +125,7 @@ def _independent_fillet(z0=30, x0=0.0, ha0=1.25, rho0=0.3, x2=X_RING_DIN, alpha=
 
 
 def test_the_shaper_cut_ring_fillet_is_the_cutter_s_envelope():
-    pair = _mesh(-X_RING_DIN, ShaperCutter(30, 0.0))
+    pair = _mesh(X_RING_DIN, ShaperCutter(30, 0.0))
     ring = pair.mounted[1]
     form = measure_root(ring, load_diameters(pair)[1])
     diameter, chord, radius = _independent_fillet()

@@ -104,7 +104,9 @@ def test_equal_sliding_split_matches_at_center_distance(internal):
     # independent route: GearPair.at_center_distance(..., split="equal_sliding") (Brent per
     # pair on the scalar path of contact); the search's rows and margins agree with it
     a, teeth = (43.0, (12, 40)) if not internal else (31.0, (14, 70))
-    r = pairs(center_distance=a, module=2, teeth=teeth, shifts=(-1.0, 1.5, 0.5),
+    # a ring's x2 (DIN 3960 sign) lies near -1.3 here: the range reaches it
+    shifts = (-1.0, 1.5, 0.5) if not internal else (-1.5, 1.5, 0.5)
+    r = pairs(center_distance=a, module=2, teeth=teeth, shifts=shifts,
               split="equal_sliding", internal=internal, top=None, progress=False,
               limits={"allow_undercut": True, "min_contact_ratio": 1.0})  # fmt: skip
     assert len(r) > 3

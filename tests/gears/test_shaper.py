@@ -37,10 +37,10 @@ def _hausdorff(p, q, z):
 
 def _cutting_center_distance(z, z0, x, x0, m, alpha=20.0, internal=False):
     """Independent: standards.md §1.2 with the cutter as the mating gear (own inverse
-    involute by Brent's method)."""
+    involute by Brent's method); a ring as DIN 3960 writes it, with z < 0 and its own x."""
     a = math.radians(alpha)
     if internal:
-        y = 2 * math.tan(a) * (x - x0) / (z - z0) + _inv(a)
+        y = 2 * math.tan(a) * (x + x0) / (z0 - z) + _inv(a)
         zz = z - z0
     else:
         y = 2 * math.tan(a) * (x + x0) / (z + z0) + _inv(a)
@@ -52,7 +52,7 @@ def _cutting_center_distance(z, z0, x, x0, m, alpha=20.0, internal=False):
 @pytest.mark.parametrize(
     "z, x, z0, x0, internal",
     [(20, 0.0, 25, 0.0, False), (20, 0.5, 20, 0.0, False), (12, 0.6, 30, 0.2, False),
-     (80, 0.0, 38, 0.0, True), (60, 0.5, 25, 0.1, True), (40, -0.2, 19, 0.0, True)],
+     (80, 0.0, 38, 0.0, True), (60, -0.5, 25, 0.1, True), (40, 0.2, 19, 0.0, True)],
 )  # fmt: skip
 def test_cutting_center_distance_and_root(z, x, z0, x0, internal):
     # source: standards.md §1.2 (working centre distance of the cutter-work mesh at zero
@@ -75,7 +75,7 @@ def test_form_diameter_on_the_line_of_action():
     # sqrt((r_a0 - rho)^2 - r_b0^2); the conjugate work point lies on the line of action
     # rho_w = a0 sin(alpha_w0) -+ r_b0 t_f, r_Ff = sqrt(r_b^2 + rho_w^2)
     m = 1.0
-    for g, z0 in [(Gear(20, m), 30), (Gear(80, m, internal=True, profile_shift=0.4), 40)]:
+    for g, z0 in [(Gear(20, m), 30), (Gear(80, m, internal=True, profile_shift=-0.4), 40)]:
         a0, aw = _cutting_center_distance(g.teeth, z0, g.profile_shift, 0.0, m, internal=g.internal)
         rb0, ra0, rho = z0 * m / 2 * math.cos(math.radians(20)), z0 * m / 2 + 1.25 * m, 0.38 * m
         end = rho + math.sqrt((ra0 - rho) ** 2 - rb0**2)
@@ -107,8 +107,8 @@ CASES = {
     "z25_x-0.4_m2": Gear(25, 2, profile_shift=-0.4),
     "helical_z20_b20": Gear(20, 1, helix_angle=20, profile_shift=0.2),
     "ring_z80_m2": Gear(80, 2, internal=True),
-    "ring_z60_x0.5": Gear(60, 1, internal=True, profile_shift=0.5),
-    "ring_z40_x0.3_c20": Gear(40, 1, internal=True, profile_shift=0.3, cutter=ShaperCutter(20)),
+    "ring_z60_x0.5": Gear(60, 1, internal=True, profile_shift=-0.5),
+    "ring_z40_x0.3_c20": Gear(40, 1, internal=True, profile_shift=-0.3, cutter=ShaperCutter(20)),
 }
 
 
@@ -171,7 +171,7 @@ def test_ring_tip_past_the_cutters_n1_is_reported():
     # keeps its tip before it
     c = ShaperCutter(20)
     assert c.check(Gear(40, 1, internal=True)).failed() == ["tip_past_n1"]
-    assert c.check(Gear(40, 1, internal=True, profile_shift=0.3)).ok
+    assert c.check(Gear(40, 1, internal=True, profile_shift=-0.3)).ok
 
 
 def test_trimming_of_ring_tips():
@@ -179,7 +179,7 @@ def test_trimming_of_ring_tips():
     # pinion: a 37-tooth cutter on a 40-tooth ring fails it, a 20-tooth cutter passes; the
     # simulation, which follows the cutter tooth until it leaves the blank, cuts the ring's tips
     # off in the first case only
-    ring = Gear(40, 1, internal=True, profile_shift=0.3)
+    ring = Gear(40, 1, internal=True, profile_shift=-0.3)
     d = ring.tip_diameter + 0.05
     for z0, trimmed in [(20, False), (37, True)]:
         c = ShaperCutter(z0)
@@ -197,11 +197,11 @@ def test_gear_with_cutter_drives_checks():
     # clears the rack-cut pinion reaches the shaper-cut one's fillet - and the outlines overlap
     c = ShaperCutter(38)
     rack_pair = GearPair(
-        Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=0.6)
+        Gear(20, 2, profile_shift=0.3), Gear(80, 2, internal=True, profile_shift=-0.6)
     )
     assert rack_pair.check().ok
     g1 = Gear(20, 2, profile_shift=0.3, cutter=c)
-    g2 = Gear(80, 2, internal=True, profile_shift=0.6, cutter=c)
+    g2 = Gear(80, 2, internal=True, profile_shift=-0.6, cutter=c)
     assert g1.form_diameter == pytest.approx(c.form_diameter(g1))
     assert g1.form_diameter > rack_pair.mounted[0].form_diameter + 0.1
     assert g1.root_diameter == pytest.approx(c.root_diameter(g1))
@@ -247,7 +247,7 @@ def test_default_cutter_rule():
     assert ShaperCutter.default_for(Gear(20, 20)).teeth == 12
     assert ShaperCutter.default_for(Gear(50, 1, internal=True)).teeth == 25
     with pytest.raises(GearError, match="no default shaper"):
-        ShaperCutter.default_for(Gear(9, 1, internal=True, profile_shift=-3.0))
+        ShaperCutter.default_for(Gear(9, 1, internal=True, profile_shift=3.0))
 
 
 def test_small_cutter_gets_a_fitting_tip_round():

@@ -190,7 +190,8 @@ def test_neighbour_margin_equals_direct_tip_circle_distance():
     # independent route: place the planets and measure the distance between tip circles
     sun = Gear(19, 3, profile_shift=0.3)
     planet = Gear(31, 3, profile_shift=0.1)
-    ring = Gear(81, 3, profile_shift=0.3 + 0.1 + 0.1, internal=True)  # any ring; only a_w matters
+    # any ring; only a_w matters (KHK's x = 0.5, DIN 3960's -0.5)
+    ring = Gear(81, 3, profile_shift=-(0.3 + 0.1 + 0.1), internal=True)
     p = Planetary(sun, planet, ring, n_planets=4, module=3)
     pair = GearPair(sun, planet)
     a = pair.center_distance

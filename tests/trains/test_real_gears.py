@@ -201,14 +201,15 @@ def test_reverted_train_unshifted_fails_coaxiality_by_one_millimetre():
 
 def test_coaxial_shifts_given_distance_internal_and_errors():
     # an internal mesh in the group: 20/60 ring (a = 20 mm) and 15/25 (a = 20 mm) at m = 1,
-    # both moved to 20.5 mm; the internal pair's x2 - x1 follows (z2 - z1) (ISO 21771 §5)
+    # both moved to 20.5 mm; the internal pair's x1 + x2 (the ring's in the sign of DIN 3960)
+    # follows (z1 - z2) (ISO 21771 §5)
     pairs = coaxial_shifts([(Gear(20, 1), Gear(60, 1, internal=True)), (Gear(15, 1), Gear(25, 1))],
                            center_distance=20.5, split="keep")  # fmt: skip
     alpha = math.radians(20)
     alpha_w = math.acos(20.0 * math.cos(alpha) / 20.5)
-    want = 40 * (_inv(alpha_w) - _inv(alpha)) / (2 * math.tan(alpha))  # derivation
+    want = -40 * (_inv(alpha_w) - _inv(alpha)) / (2 * math.tan(alpha))  # derivation
     ring = pairs[0]
-    assert ring.internal and ring.g2.profile_shift - ring.g1.profile_shift == pytest.approx(want)
+    assert ring.internal and ring.g2.profile_shift + ring.g1.profile_shift == pytest.approx(want)
     assert all(abs(p.center_distance - 20.5) < 1e-9 for p in pairs)
     # a ring given first in a tuple becomes the pair's g2
     assert coaxial_shifts([(Gear(60, 1, internal=True), Gear(20, 1)), (Gear(15, 1), Gear(25, 1))],

@@ -273,8 +273,10 @@ def gear_arguments(parser: argparse.ArgumentParser) -> None:
         "--module", "-m", type=positive("--module", "mm"), default=1.0, help="normal module, mm"
     )
     parser.add_argument(
-        "--shift", "-x", type=finite("--shift"), default=0.0, help="profile-shift coefficient"
-    )
+        "--shift", "-x", type=finite("--shift"), default=0.0,
+        help="profile-shift coefficient (a ring's in the sign of DIN 3960 / ISO 21771: positive "
+        "thickens its teeth)",
+    )  # fmt: skip
     parser.add_argument(
         "--helix", type=finite("--helix"), default=0.0, help="helix angle, deg (+ right hand)"
     )
@@ -289,7 +291,6 @@ def gear_arguments(parser: argparse.ArgumentParser) -> None:
 PAIR_NAMES = {
     r"split\s*=\s*'(\w+)'": r"--split \1",
     r"x1 \+ x2": "--shift X1 + X2",  # a sum of shifts names the option that gives both
-    r"x2 - x1": "--shift X2 - X1",
     "x1": "X1",
     "x2": "X2",
     "z1": "Z1",
@@ -322,7 +323,8 @@ def pair_arguments(parser: argparse.ArgumentParser, face_width_help: str) -> Non
     )
     parser.add_argument(
         "--shift", "-x", type=finite("--shift"), nargs=2, default=(0.0, 0.0), metavar=("X1", "X2"),
-        help="profile-shift coefficients of gear 1 and gear 2",
+        help="profile-shift coefficients of gear 1 and gear 2 (a ring's X2 in the sign of DIN 3960"
+        " / ISO 21771: positive thickens its teeth)",
     )  # fmt: skip
     parser.add_argument("--internal", action="store_true", help="gear 2 is an internal ring")
     parser.add_argument(

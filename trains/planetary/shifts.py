@@ -1,7 +1,7 @@
 """Layer 3, a planetary stage made coaxial by profile shifts (:meth:`Planetary.coaxial
-<trains.Planetary.coaxial>`): the sun-planet pair takes the shift sum and the planet-ring pair
-the shift difference for one working centre distance (ISO 21771: cos alpha_w = a_d cos alpha /
-a_w), found on a grid around the mean of the two reference centre distances when not given.
+<trains.Planetary.coaxial>`): the sun-planet and the planet-ring pair each take the shift sum x1 +
+x2 (the ring's in DIN 3960's sign) of one working centre distance (ISO 21771: cos alpha_w = a_d cos
+alpha / a_w), found on a grid around the mean of the two reference centre distances when not given.
 """
 
 from __future__ import annotations

@@ -240,9 +240,9 @@ class Planetary:
         if ring.tip_diameter >= limit:
             return pair
         target = math.ceil(limit * 1000.0) / 1000.0
-        # internal: d_a2 = d2 - 2 m_n (h_a - x + k)  ->  k for d_a2 = target
+        # internal: d_a2 = d2 - 2 m_n (h_a + x + k) (DIN 3960)  ->  k for d_a2 = target
         k = (ring.reference_diameter - target) / (2 * ring.module) - ring.rack.addendum
-        k += ring.profile_shift
+        k -= ring.profile_shift
         relieved = ring.with_(tip_alteration=k)
         gears[key] = relieved
         self._relief[key] = (ring.tip_diameter, target)
@@ -264,9 +264,9 @@ class Planetary:
     ) -> Planetary:
         """A stage made coaxial by profile shifts at one working centre distance.
 
-        The sun-planet pair gets the shift sum and the planet-ring pair the shift difference
-        (ISO 21771: cos alpha_w = a_d cos alpha / a_w; x_s + x_p and x_r - x_p from the
-        involute function) for the common centre distance ``center_distance``; ``split``
+        Each pair gets the shift sum its centre distance needs (ISO 21771: cos alpha_w = a_d
+        cos alpha / a_w; x_s + x_p and x_p + x_r from the involute function, the ring's x_r in
+        the sign of DIN 3960) for the common centre distance ``center_distance``; ``split``
         (:meth:`gears.GearPair.at_center_distance`) shares the sun-planet sum, and the ring takes
         the rest of its pair with the planet's shift kept. Without ``center_distance`` the
         distance nearest the mean of the two reference centre distances whose stage passes every

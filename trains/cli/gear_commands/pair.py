@@ -8,7 +8,7 @@ axial and normal, on each gear, in the pair's frame (ISO 6336-1; Ozols (11.8)).
 
 Examples:
     geartrain pair 12 24 --module 3 --shift 0.6 0.36
-    geartrain pair 20 80 --module 2 --internal --shift 0 0.5 --helix 15 --face-width 20
+    geartrain pair 20 80 --module 2 --internal --shift 0 -0.5 --helix 15 --face-width 20
     geartrain pair 12 24 --module 3 --center-distance 56.5
     geartrain pair 20 40 --module 5 --torque 100
 """

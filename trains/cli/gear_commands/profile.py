@@ -15,7 +15,7 @@ rack, --bore on a ring or with --mate, --mate-shift and --backlash without --mat
 Examples:
     geartrain profile 12 --module 3 --shift 0.6 --method rack --tolerance 0.001 -o gear.svg
     geartrain profile 80 --module 2 --internal --method shaper --cutter-teeth 30 -o ring.svg
-    geartrain profile 80 -m 2 --internal --shift 0.5 --mate 20 --tolerance 0.01 -o internal.svg
+    geartrain profile 80 -m 2 --internal --shift -0.5 --mate 20 --tolerance 0.01 -o internal.svg
 """
 
 from __future__ import annotations
