@@ -18,7 +18,9 @@ capacity"):
   Y_Fa, Y_Sa (:func:`tip_form_factors`, the root of ISO 6336-3's method B,
   :func:`gears.rating.bending.root_form`, loaded at the tip of the virtual gear), the contact
   ratio factor Y_epsilon (:func:`contact_ratio_factor_root`), the bevel spiral angle factor Y_BS
-  (:func:`bevel_spiral_angle_factor`) and the load sharing factor Y_LS = Z_LS^2.
+  (:func:`bevel_spiral_angle_factor`) and the load sharing factor Y_LS = Z_LS^2;
+* the whole of method B1 for straight bevel pairs over arrays (:func:`method_b1`), given the
+  factors it shares with ISO 6336.
 
 The formulas are written for bevel gears without hypoid offset (a = 0); the spiral angle enters
 where it is one argument, so that the published worked example (ISO/TR 10300-30, sample 1, a
@@ -43,6 +45,7 @@ __all__ = [
     "contact_ratio_factor_root",
     "face_load_factors",
     "load_sharing_factor",
+    "method_b1",
     "mid_zone_factor",
     "mounting_factor",
     "relative_curvature",
@@ -281,3 +284,74 @@ def bevel_spiral_angle_factor(beta_v, beta_vb, l_bm, b_v, h_m1, h_m2):
     b = -0.0032 * x * x + 0.0526 * x + 0.712
     c = -0.0050 * x * x + 0.0850 * x + 0.54
     return np.where(bv > 0.0, a / c * (l_bb / b_a - 1.05 * b) ** 2 + 1.0, 1.0)
+
+
+# --- the whole method B1 for straight teeth -------------------------------------------------------
+def method_b1(torque, d_m1, face_width, m_mn, pressure_angle, d_v, d_va, d_vb, eps_va, x_hm,
+              x_sm, h_a0, rho_a0, s_pr, loads, z_e, sigma_hp, sigma_fp, effective_width=0.85,
+              exponent=1.5):  # fmt: skip
+    """Pitting and bending of straight bevel pairs by ISO 10300-2/-3 method B1, over arrays.
+
+    ``torque`` N m on the pinion, ``d_m1`` its mean pitch diameter, ``face_width`` b, ``m_mn``
+    the mean module (mm), ``pressure_angle`` (degrees); per gear, as pairs ``(pinion, wheel)``:
+    the virtual gears' reference, tip and base diameters ``d_v``, ``d_va``, ``d_vb``, the
+    generating tool's ``x_hm``, ``x_sm``, ``h_a0``, ``rho_a0``, ``s_pr`` (as
+    :func:`tip_form_factors` takes them), and the permissible stresses of ISO 6336 that ISO 10300
+    shares, ``sigma_hp`` = sigma_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X and ``sigma_fp`` = sigma_Flim Y_ST
+    Y_NT Y_deltarelT Y_RrelT Y_X (Y_M); ``eps_va`` the virtual transverse contact ratio,
+    ``loads`` = ``(K_A, K_v, K_Hbeta, K_Fbeta, K_Halpha, K_Falpha)``, ``z_e`` the elasticity
+    factor. Everything broadcasts.
+
+    ``sigma_H0 = sqrt(F_n / (l_bm rho_rel)) Z_M-B Z_LS Z_E``, ``sigma_H = sigma_H0 sqrt(K_A K_v
+    K_Hbeta K_Halpha)``, ``sigma_HP = sigma_hp Z_K``; ``sigma_F0 = F_mt / (b m_mn) Y_Fa Y_Sa
+    Y_eps Y_BS Y_LS``, ``sigma_F = sigma_F0 K_A K_v K_Fbeta K_Falpha``; ``S = sigma_P / sigma``.
+    Returns a dict of arrays by ISO symbol (per gear ``S_H1``, ``S_H2``, ...).
+    """
+    an = np.radians(np.asarray(pressure_angle, float))
+    m = np.asarray(m_mn, float)
+    b = np.asarray(face_width, float)
+    eps = np.asarray(eps_va, float)
+    p_et = np.pi * m * np.cos(an)
+    b_eff = np.asarray(effective_width, float) * b
+    f_max, l_b0 = zone_of_action(eps * p_et, b_eff)
+    f = contact_line_positions(p_et, eps, 0.0)
+    l_b = tuple(contact_line_length(fi, f_max, l_b0, b_eff, b) for fi in f)
+    z_ls = load_sharing_factor(f, f_max, l_b, exponent)
+    rho = relative_curvature(d_v[0], d_v[1], pressure_angle)
+    z_v = (np.asarray(d_v[0], float) / m, np.asarray(d_v[1], float) / m)
+    z_mb = mid_zone_factor(pressure_angle, d_va[0], d_vb[0], z_v[0], d_va[1], d_vb[1], z_v[1],
+                           eps, 0.0)  # fmt: skip
+    k_a, k_v, k_hb, k_fb, k_ha, k_fa = (np.asarray(k, float) for k in loads)
+    f_mt = 2000.0 * np.asarray(torque, float) / np.asarray(d_m1, float)
+    f_n = f_mt / np.cos(an)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s_h0 = np.sqrt(f_n / (l_b[1] * rho)) * z_mb * z_ls * np.asarray(z_e, float)
+    s_h = s_h0 * np.sqrt(k_a * k_v * k_hb * k_ha)
+    y_eps = contact_ratio_factor_root(eps, 0.0)
+    y_bs = bevel_spiral_angle_factor(0.0, 0.0, l_b[1], b, 1.0, 1.0)
+    y_ls = z_ls * z_ls
+    out = {
+        "sigma_H0": s_h0, "sigma_H": s_h, "Z_M-B": z_mb, "Z_LS": z_ls, "Z_K": BEVEL_FACTOR,
+        "Y_eps": y_eps, "Y_BS": y_bs, "Y_LS": y_ls, "F_mt": f_mt, "F_n": f_n, "b_veff": b_eff,
+        "f_max": f_max, "f_m": f[1], "l_bm": l_b[1], "rho_rel": rho, "eps_valpha": eps,
+        "eps_vbeta": np.zeros_like(eps),
+    }  # fmt: skip
+    for i in (0, 1):
+        y_fa, y_sa, s_fn, rho_f, h_fa, a_fan, q_s = tip_form_factors(
+            z_v[i], m, x_hm[i], x_sm[i], pressure_angle, d_va[i], d_vb[i], h_a0, rho_a0[i],
+            s_pr[i],
+        )  # fmt: skip
+        s_f0 = f_mt / (b * m) * y_fa * y_sa * y_eps * y_bs * y_ls
+        s_f = s_f0 * k_a * k_v * k_fb * k_fa
+        s_hp = np.asarray(sigma_hp[i], float) * BEVEL_FACTOR
+        s_fp = np.asarray(sigma_fp[i], float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s_hs, s_fs = s_hp / s_h, s_fp / s_f
+        n = i + 1
+        out.update({
+            f"sigma_HP{n}": s_hp, f"S_H{n}": s_hs, f"sigma_F0{n}": s_f0, f"sigma_F{n}": s_f,
+            f"sigma_FP{n}": s_fp, f"S_F{n}": s_fs, f"Y_Fa{n}": y_fa, f"Y_Sa{n}": y_sa,
+            f"s_Fn{n}": s_fn, f"rho_F{n}": rho_f, f"h_Fa{n}": h_fa,
+            f"alpha_Fan{n}": np.degrees(a_fan), f"q_s{n}": q_s, f"z_v{n}": z_v[i],
+        })  # fmt: skip
+    return out

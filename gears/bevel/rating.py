@@ -32,20 +32,7 @@ from typing import Any
 import numpy as np
 
 from gears.arguments import check_real
-from gears.bevel.iso10300 import (
-    BEVEL_FACTOR,
-    bevel_spiral_angle_factor,
-    contact_line_length,
-    contact_line_positions,
-    contact_ratio_factor_root,
-    face_load_factors,
-    load_sharing_factor,
-    mid_zone_factor,
-    mounting_factor,
-    relative_curvature,
-    tip_form_factors,
-    zone_of_action,
-)
+from gears.bevel.iso10300 import face_load_factors, method_b1, mounting_factor
 from gears.display import html_table
 from gears.errors import GearError
 from gears.rating.life import bending_life_factor, pitting_life_factor
@@ -348,64 +335,26 @@ def bevel_rating(pair: Any, torque: float, speed: float, material: Any = "case-c
 
 
 def _iso10300(pair, vp, torque: float, w: float, r6) -> dict:
-    """The numbers of ISO 10300-2/-3 method B1 for a straight pair, with the factors it shares
-    with ISO 6336 taken from ``r6``, the rating of the virtual pair ``vp``."""
+    """The numbers of ISO 10300-2/-3 method B1 for a straight pair (:func:`method_b1`), with the
+    factors it shares with ISO 6336 taken from ``r6``, the rating of the virtual pair ``vp``."""
     f6, s6 = r6.factors, r6.stresses
-    g1, g2 = vp.g1, vp.g2
-    alpha, m = pair.pressure_angle, float(pair.mean_module)
-    d_m1 = float(pair.geometry.mean_diameter[0])
-    eps_a, eps_b = float(vp.contact_ratio), 0.0  # straight teeth: no face contact ratio
-    p_et = math.pi * m * math.cos(math.radians(alpha))
-    b = float(pair.face_width)
-    b_eff = w * b
-    # ISO 10300-1 Annex A: the zone of action and the middle, tip and root contact lines
-    f_max, l_b0 = (float(x) for x in zone_of_action(eps_a * p_et, b_eff))
-    f = tuple(float(x) for x in contact_line_positions(p_et, eps_a, eps_b))
-    l_b = tuple(float(contact_line_length(fi, f_max, l_b0, b_eff, b)) for fi in f)
-    z_ls = float(load_sharing_factor(f, f_max, l_b))
-    rho = float(relative_curvature(g1.reference_diameter, g2.reference_diameter, alpha))
-    z_mb = float(mid_zone_factor(
-        alpha, g1.tip_diameter, g1.base_diameter, g1.teeth, g2.tip_diameter, g2.base_diameter,
-        g2.teeth, eps_a, eps_b,
-    ))  # fmt: skip
-    f_mt = 2000.0 * torque / d_m1
-    f_n = f_mt / math.cos(math.radians(alpha))
-    k_a, k_v = f6["K_A"], f6["K_v"]
-    kh, kf, kha, kfa = f6["K_Hbeta"], f6["K_Fbeta"], f6["K_Halpha"], f6["K_Falpha"]
-    s_h0 = math.sqrt(f_n / (l_b[1] * rho)) * z_mb * z_ls * f6["Z_E"]
-    s_h = s_h0 * math.sqrt(k_a * k_v * kh * kha)
-    v = {"sigma_H0": s_h0, "sigma_H": s_h, "Z_M-B": z_mb, "Z_LS": z_ls, "Z_K": BEVEL_FACTOR}
-    # ISO 10300-3: the load at the tip of each virtual gear (x_sm of ISO 10300-3 is half the
-    # s_m / m_m change that BevelPair's thickness_modification writes)
-    y_eps = float(contact_ratio_factor_root(eps_a, eps_b))
-    y_bs = float(bevel_spiral_angle_factor(0.0, 0.0, l_b[1], b, 1.0, 1.0))
-    y_ls = z_ls * z_ls
-    for i, (g, sign) in enumerate(((g1, 1.0), (g2, -1.0)), start=1):
-        y_fa, y_sa, s_fn, rho_f, h_fa, a_fan, q_s = (float(x) for x in tip_form_factors(
-            g.teeth, m, sign * pair.profile_shift, sign * pair.thickness_modification / 2.0, alpha,
-            g.tip_diameter, g.base_diameter, pair.dedendum, g.rack.root_radius,
-            g.rack.protuberance,
-        ))  # fmt: skip
-        s_f0 = f_mt / (b * m) * y_fa * y_sa * y_eps * y_bs * y_ls
-        s_f = s_f0 * k_a * k_v * kf * kfa
-        s_hp = s6["sigma_HP"][i - 1] * BEVEL_FACTOR
-        s_fp = s6["sigma_FP"][i - 1]
-        v.update({
-            f"sigma_HP{i}": s_hp, f"S_H{i}": s_hp / s_h, f"sigma_F0{i}": s_f0,
-            f"sigma_F{i}": s_f, f"sigma_FP{i}": s_fp, f"S_F{i}": s_fp / s_f,
-            f"Y_Fa{i}": y_fa, f"Y_Sa{i}": y_sa, f"s_Fn{i}": s_fn, f"rho_F{i}": rho_f,
-            f"h_Fa{i}": h_fa, f"alpha_Fan{i}": math.degrees(a_fan), f"q_s{i}": q_s,
-            f"z_v{i}": float(g.teeth),
-        })  # fmt: skip
+    gears = (vp.g1, vp.g2)
+    x, xs = pair.profile_shift, pair.thickness_modification / 2.0  # ISO 10300-3 writes x_sm per
+    v = method_b1(  # flank: half the s_m / m_m change BevelPair's thickness_modification writes
+        torque, pair.geometry.mean_diameter[0], pair.face_width, pair.mean_module,
+        pair.pressure_angle, [g.reference_diameter for g in gears],
+        [g.tip_diameter for g in gears], [g.base_diameter for g in gears], vp.contact_ratio,
+        (x, -x), (xs, -xs), pair.dedendum, [g.rack.root_radius for g in gears],
+        [g.rack.protuberance for g in gears],
+        [f6[k] for k in ("K_A", "K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha")],
+        f6["Z_E"], s6["sigma_HP"], s6["sigma_FP"], w,
+    )  # fmt: skip
+    v = {k: float(a) for k, a in v.items()}
     for s, per, *_ in BEVEL_FACTORS:
         if s in f6 and s not in v:
             if per:
                 v[f"{s}1"], v[f"{s}2"] = f6[s]
             else:
                 v[s] = f6[s]
-    v.update({
-        "Y_eps": y_eps, "Y_BS": y_bs, "Y_LS": y_ls, "F_mt": f_mt, "F_n": f_n,
-        "v_mt": r6.quantities["v"], "eps_valpha": eps_a, "eps_vbeta": eps_b, "b_veff": b_eff,
-        "f_max": f_max, "f_m": f[1], "l_bm": l_b[1], "rho_rel": rho,
-    })  # fmt: skip
+    v["v_mt"] = r6.quantities["v"]
     return v

@@ -222,3 +222,34 @@ def test_differential_rating_property(torque, left, right):
         return
     for v in r.values():
         assert all(math.isfinite(s) and s > 0 for s in (*v.safety_pitting, *v.safety_bending))
+
+
+def test_method_b1_over_arrays_is_each_pair():
+    """gears.bevel.iso10300.method_b1 over arrays of torques and face widths: the element of
+    the rated pair is its BevelRating; with the load factors held, sigma_H goes with sqrt(T / b)
+    (Hertz: l_bm scales with b) and sigma_F with T / b (the root stress)."""
+    import numpy as np
+
+    from gears.bevel.iso10300 import method_b1
+
+    bevel = BevelPair(20, 40, module=3, face_width=20)
+    r = bevel.rating(50.0, 1500.0)
+    vp, f6, s6 = bevel.virtual_pair, r.virtual.factors, r.virtual.stresses
+    gears = (vp.g1, vp.g2)
+    t = np.array([[10.0], [50.0], [200.0]])
+    b = np.array([10.0, 20.0])
+    out = method_b1(
+        t, bevel.geometry.mean_diameter[0], b, bevel.mean_module, 20.0,
+        [g.reference_diameter for g in gears], [g.tip_diameter for g in gears],
+        [g.base_diameter for g in gears], vp.contact_ratio, (0.0, 0.0), (0.0, 0.0), 1.25,
+        [g.rack.root_radius for g in gears], (0.0, 0.0),
+        [f6[k] for k in ("K_A", "K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha")],
+        f6["Z_E"], s6["sigma_HP"], s6["sigma_FP"],
+    )  # fmt: skip
+    assert out["S_H1"].shape == (3, 2)
+    assert out["S_H1"][1, 1] == pytest.approx(r.safety_pitting[0], rel=1e-12)
+    assert out["S_F2"][1, 1] == pytest.approx(r.safety_bending[1], rel=1e-12)
+    sh = out["sigma_H"]
+    assert sh / sh[1, 1] == pytest.approx(np.sqrt(t / 50.0 * 20.0 / b), rel=1e-12)
+    sf = out["sigma_F1"]
+    assert sf / sf[1, 1] == pytest.approx(t / 50.0 * 20.0 / b, rel=1e-12)
