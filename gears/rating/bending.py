@@ -108,8 +108,10 @@ def root_form(zn, module, profile_shift, pressure_angle, d_en, alpha_en, dedendu
     s_fn = m * (zn * np.sin(np.pi / 3 - theta) + np.sqrt(3.0) * (g / ct - rho))
     rho_f = m * (rho + 2.0 * g * g / (ct * (zn * ct * ct - 2.0 * g)))
     aen = np.asarray(alpha_en, float)
-    gamma = (np.pi / 2 + 2.0 * x * np.tan(an)) / zn + inv(an) - inv(aen)
-    afen = aen - gamma
+    # no load point (NaN from load_point): NaN lengths, for the rating's reason to name
+    known = np.isfinite(aen)
+    gamma = (np.pi / 2 + 2.0 * x * np.tan(an)) / zn + inv(an) - inv(_where(known, aen, an))
+    afen = _where(known, aen - gamma, np.nan)
     den = np.asarray(d_en, float)
     h_fe = m / 2 * ((np.cos(gamma) - np.sin(gamma) * np.tan(afen)) * den / m
                     - zn * np.cos(np.pi / 3 - theta) - g / ct + rho)  # fmt: skip

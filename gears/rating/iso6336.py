@@ -56,11 +56,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from gears.errors import GearError
-from gears.meshing import _CHUNK, _pool, default_threads, pair_geometry
+from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import number as _number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import load_part, rate_block
+from gears.rating.bending import load_point
 from gears.rating.materials import Material, material
 
 __all__ = [
@@ -450,19 +451,63 @@ def _rate(args):
     result, gears = _blocks(a, mats, fields, default_threads() if threads is None else threads,
                             key)  # fmt: skip
     if errors == "raise":
-        _raise_invalid(result)
+        _raise_invalid(result, a, args["tip_shortening"])
     if gears is None:
         return result, None
     return result, OnePair({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats, gears)
 
 
-def _raise_invalid(result):
-    """A GearError naming the first pair without a rating (row and reason), if any."""
+def _raise_invalid(result, a=None, tip_shortening=True):
+    """A GearError naming the first pair without a rating (row and reason), if any; a pair
+    without method B's load point (reason 4) also names its pressure angle and the range where
+    that point exists (from the checked arguments ``a``)."""
     if not np.all(result.valid):
         bad = np.ravel(~np.asarray(result.valid))
         i = int(np.argmax(bad))
         where = f" (row {i})" if np.ndim(result.valid) else ""
-        raise GearError(f"no ISO 6336 rating{where}: {REASONS[int(np.ravel(result.reason)[i])]}")
+        reason = int(np.ravel(result.reason)[i])
+        hint = _load_point_range(a, i, np.shape(result.valid), tip_shortening) if (
+            reason == 4 and a is not None) else ""  # fmt: skip
+        raise GearError(f"no ISO 6336 rating{where}: {REASONS[reason]}{hint}")
+
+
+def _load_point_range(a, i, shape, tip_shortening) -> str:
+    """`` (pressure_angle = ... deg: ...)``: the pressure angle of row ``i`` and the smallest
+    (to 0.1 deg, below 45) at which the outer points of single contact of both gears lie on
+    their flanks (ISO 6336-3 §6.2), the rest of the pair kept; a small pressure angle gives a
+    long path of contact (eps_alpha_n - 1 pitches past the tip reach the base circle)."""
+
+    def row(key):
+        return float(np.ravel(np.broadcast_to(a[key], shape))[i])
+
+    z1, z2, m, x1, x2, pa, beta, ha = (row(k) for k in ("z1", "z2", "m", "x1", "x2", "pa",
+                                                          "helix", "ha"))  # fmt: skip
+    k1, k2 = row("k1"), row("k2")
+    internal = bool(np.ravel(np.broadcast_to(a["internal"], shape))[i])
+    short = bool(np.ravel(np.broadcast_to(np.asarray(tip_shortening, bool), shape))[i])
+    grid = pa + 0.1 * np.arange(0, int((45.0 - pa) / 0.1))
+    try:
+        g = pair_geometry(z1, z2, m, x1, x2, grid, beta, internal, ha, short, threads=1)
+    except GearError:
+        return f" (pressure_angle = {pa:g} deg)"
+    s = -1.0 if internal else 1.0
+    cos_b = math.cos(math.radians(beta))
+    at = np.arctan(np.tan(np.radians(grid)) / cos_b)
+    d1, d2 = z1 * m / cos_b, z2 * m / cos_b
+    da1 = g.tip_diameter_1 + 2 * m * k1
+    da2 = g.tip_diameter_2 + 2 * s * m * k2
+    tan_wt = np.tan(np.radians(g.working_pressure_angle))
+    eps = contact_ratio(da1 / 2, da2 / 2, d1 * np.cos(at) / 2, d2 * np.cos(at) / 2, tan_wt, s,
+                        np.pi * m / cos_b * np.cos(at))  # fmt: skip
+    den1 = load_point(z1, m, da1, d1, grid, beta, eps, False)[0]
+    den2 = load_point(z2, m, da2, d2, grid, beta, eps, internal)[0]
+    ok = np.isfinite(den1) & np.isfinite(den2) & (eps >= 1.0)
+    if not ok.any():
+        return f" (pressure_angle = {pa:g} deg; no pressure angle below 45 deg puts it there)"
+    return (
+        f" (pressure_angle = {pa:g} deg gives eps_alpha = {eps[0]:.3f}; with the rest of this "
+        f"pair kept, valid is pressure_angle >= {grid[int(np.argmax(ok))]:.1f} deg)"
+    )
 
 
 def _arguments(args):

@@ -11,6 +11,7 @@ equals the scalar call); the brute force of rating every row alone.
 from __future__ import annotations
 
 import math
+import re
 import warnings
 
 import numpy as np
@@ -126,6 +127,34 @@ def test_contact_ratio_above_four_has_no_z_eps_and_no_nan(capsys):
                  "--torque", "100", "--speed", "1500"])  # fmt: skip
     err = capsys.readouterr().err
     assert code == 2 and "Z_eps" in err and "Traceback" not in err
+
+
+# --- no load point of method B at a small pressure angle ------------------------------------------
+def test_a_small_pressure_angle_names_itself_and_where_method_b_applies(capsys):
+    # 20/40, m = 2, alpha = 5 deg: eps_alpha = 2.78, so the outer point of single contact of
+    # ISO 6336-3 §6.2 lies eps_alpha_n - 1 = 1.78 base pitches inside the pinion's tip, past its
+    # base circle; the rating said "alpha = nan rad" (issue 26). The range it names is checked
+    # by rating at its ends (independent: the rating itself, not the range's search)
+    def pair(alpha):
+        return GearPair(Gear(20, 2, alpha, face_width=20), Gear(40, 2, alpha, face_width=20))
+
+    with pytest.raises(GearError, match=r"pressure_angle = 5 deg .* valid is pressure_angle >= "
+                                        r"7\.2 deg") as exc:  # fmt: skip
+        pair(5.0).rating(100, 1500)
+    assert "single contact" in str(exc.value) and "nan" not in str(exc.value)
+    with pytest.raises(GearError, match="single contact"):
+        pair(7.15).rating(100, 1500)
+    s = pair(7.2).rating(100, 1500).safety_bending
+    assert all(math.isfinite(v) and v > 0 for v in s)
+    # the arrays: the row is masked with the reason, the other rated
+    r = rate_pairs(20, 40, 2, 20, 100, 1500, pressure_angle=[5.0, 20.0], errors="mask")
+    assert r.valid.tolist() == [False, True] and "single contact" in REASONS[int(r.reason[0])]
+    # the command line: one line naming the option, exit 2
+    code = main(["rate", "20", "40", "-m", "2", "--pressure-angle", "5", "--face-width", "20",
+                 "--torque", "100", "--speed", "1500"])  # fmt: skip
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "nan" not in err
+    assert "--pressure-angle = 5 deg" in err and "--pressure-angle >= 7.2 deg" in err
 
 
 # --- values no rating can take --------------------------------------------------------------------
@@ -288,7 +317,7 @@ def test_every_option_at_the_edges_of_floats_gives_a_rating_or_our_error(name):
     x1=st.floats(-0.5, 1.0),
     x2=st.floats(-0.5, 1.0),
     internal=st.booleans(),
-    pressure_angle=st.sampled_from([14.5, 20.0, 25.0, 30.0]),
+    pressure_angle=st.sampled_from([5.0, 8.0, 14.5, 20.0, 25.0, 30.0]),
     log_t=st.floats(-9.0, 5.0),
     speed=st.floats(0.1, 30000.0),
 )
@@ -305,7 +334,8 @@ def test_every_accepted_pair_rates_finite_or_refuses(z1, dz, x1, x2, internal, p
         warnings.simplefilter("error")
         try:
             r = pair.rating(10.0**log_t, speed)
-        except GearError:
+        except GearError as exc:
+            assert not re.search(r"\bnan\b", str(exc)), exc  # the reason, never a NaN
             return
     s = [*r.safety_pitting, *r.safety_bending]
     assert all(math.isfinite(v) and v > 0 for v in s), s
