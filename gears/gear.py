@@ -618,11 +618,14 @@ class Gear:
                        rim: float | None = None, cutter: ShaperCutter | None = None,
                        herringbone: bool = False) -> float:  # fmt: skip
         """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
-        the slices; :func:`gears.cutting.outline.outline_vertices`), before any outline is drawn."""
+        the slices and the levels of a lead modification; :func:`gears.cutting.outline.
+        outline_vertices`, :func:`gears.contact.flank.lead_levels`), before any outline is drawn."""
+        from gears.contact.flank import lead_levels
         from gears.cutting.outline import outline_vertices
 
         n = outline_vertices(self, tolerance, method, backlash, bore, rim, cutter)
-        return n * float(solid_levels(twist, self.solid_radius(rim), tolerance, herringbone))
+        levels = solid_levels(twist, self.solid_radius(rim), tolerance, herringbone)
+        return n * (float(levels) + lead_levels(self.modification, tolerance))
 
     def check_solid_budget(
         self, tolerance: float, twist: float = 0.0, method: str = "analytic",

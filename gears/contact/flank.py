@@ -85,6 +85,24 @@ def relieved_outline(gear, polygon, center=(0.0, 0.0), short: float | None = Non
                             gear.internal)  # fmt: skip
 
 
+def _lead_counts(m, tolerance) -> tuple[int, int]:
+    """Axial steps a half face takes for the crowning, and an end-relief zone for its relief."""
+    n_crown = math.ceil(math.sqrt(m.crowning / (2.0 * tolerance))) if m.crowning else 1
+    n_end = math.ceil(math.sqrt(m.end_relief / (4.0 * tolerance))) if m.end_relief else 0
+    n_end = min(n_end, 1) if m.kind == "linear" else n_end
+    return min(n_crown, MAX_LEAD_LEVELS // 4), min(n_end, MAX_LEAD_LEVELS // 4)
+
+
+def lead_levels(modification, tolerance: float) -> float:
+    """The most axial levels :func:`solid_lead` adds to a solid at ``tolerance`` (0 without
+    crowning or end relief): what a solid's size estimate adds before it is drawn."""
+    m = modification
+    if m is None or not (m.crowning or m.end_relief):
+        return 0.0
+    n_crown, n_end = _lead_counts(m, tolerance)
+    return float(2 * n_crown + 1 + 2 * (n_end + 1))
+
+
 def solid_lead(gear, face_width: float, tolerance: float):
     """``(lead, extra_twist)`` of ``gear``'s solid of ``face_width`` (mm) at ``tolerance``:
     the ``lead`` argument of :func:`gears.solid.mesh.gear_solid` for its crowning and end
@@ -104,11 +122,9 @@ def solid_lead(gear, face_width: float, tolerance: float):
     b = face_width
     _, _, end_length = m.lengths(0.0, b)
     half = b / 2.0
-    n_crown = math.ceil(math.sqrt(m.crowning / (2.0 * tolerance))) if m.crowning else 1
-    z = [np.linspace(-half, half, 2 * min(n_crown, MAX_LEAD_LEVELS // 4) + 1)]
+    n_crown, n_end = _lead_counts(m, tolerance)
+    z = [np.linspace(-half, half, 2 * n_crown + 1)]
     if m.end_relief and end_length > 0:
-        n_end = math.ceil(math.sqrt(m.end_relief / (4.0 * tolerance)))
-        n_end = 1 if m.kind == "linear" else min(n_end, MAX_LEAD_LEVELS // 4)
         zone = np.linspace(half - end_length, half, n_end + 1)
         z += [zone, -zone]
     form = gear._form / 2 if gear._form > gear.base_diameter else rb

@@ -327,3 +327,60 @@ def test_crowning_is_drawn_on_the_solid_at_the_face_ends():
             d = [toothed.distance(shapely.Point(p[:2])) for p in v[at]]
             assert max(d) == pytest.approx(expected, abs=2 * tolerance), (g.internal, z)
         assert rb < r_mid < ra or g.internal
+
+
+@given(
+    st.integers(30, 120),
+    st.floats(0.0, 0.3),
+    st.none() | st.floats(0, 10),
+    st.floats(0.0, 0.1),
+    st.sampled_from(["linear", "parabolic"]),
+)
+@settings(max_examples=10, deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))  # fmt: skip
+def test_relieved_ring_outline_is_valid_or_refused(z, c_a, length, c_f, kind):
+    # a ring's relieved outline: a valid polygon with less material than the unmodified one,
+    # its rim untouched, or our own error
+    try:
+        m = Modification(tip_relief=c_a, tip_relief_length=length, root_relief=c_f, kind=kind)
+        g = Gear(z, 2, internal=True, modification=m)
+        poly = g.outline(tolerance=0.01)
+    except GearError:
+        return
+    plain = g.with_(modification=None).outline(tolerance=0.01)
+    assert poly.is_valid and 0 < poly.area <= plain.area + 1e-9
+    assert poly.exterior.equals(plain.exterior)
+
+
+@given(
+    st.booleans(),
+    st.floats(0.0, 0.2),
+    st.floats(0.0, 0.1),
+    st.none() | st.floats(0.5, 12.0),
+    st.floats(-0.05, 0.05),
+    st.sampled_from(["linear", "parabolic"]),
+    st.sampled_from([0.05, 0.1, 1e-7]),
+)
+@settings(max_examples=10, deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))  # fmt: skip
+def test_modified_solid_is_watertight_or_refused(internal, c_b, c_i, l_i, slope, kind, tol):
+    # every lead modification drawn on a solid: watertight, or our own error (a bad length,
+    # a solid over the mesh budget) before any work
+    try:
+        m = Modification(crowning=c_b, end_relief=c_i, end_relief_length=l_i, helix_slope=slope,
+                         kind=kind)  # fmt: skip
+        g = Gear(40 if internal else 12, 1.0, internal=internal, face_width=8, modification=m)
+        solid = g.mesh(tolerance=tol)
+    except GearError as e:
+        assert any(w in str(e) for w in ("end_relief_length", "tolerance")), str(e)
+        return
+    assert solid.is_watertight and solid.volume > 0
+
+
+def test_rating_of_a_ring_pair_takes_k_hbeta_from_the_contact_analysis():
+    # K_Hbeta="contact" now reaches ring pairs: the rating's factor is the analysis' at the
+    # torque times K_A with F_betax (um) as the tilt (mm), to 1e-12
+    pair = ring_pair()
+    r = pair.rating(60, 1500, K_Hbeta="contact", misalignment=10.0, application_factor=1.25)
+    c = pair.contact(60 * 1.25, misalignment=0.010)
+    assert r.factors["K_Hbeta"] == pytest.approx(c.K_Hbeta, rel=1e-12) and c.K_Hbeta > 1.1
