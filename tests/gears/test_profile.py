@@ -16,7 +16,7 @@ GEARS = {
     "z17_x-0.3": Gear(17, 2, profile_shift=-0.3),  # undercut
     "helical_z20_b30": Gear(20, 1, helix_angle=30, profile_shift=0.2),
     "ring_z80": Gear(80, 2, internal=True),
-    "ring_z40_x0.3": Gear(40, 1, internal=True, profile_shift=-0.3),
+    "ring_z40_x-0.3": Gear(40, 1, internal=True, profile_shift=-0.3),
 }
 
 
@@ -144,7 +144,8 @@ def test_external_pair_meshes_without_overlap(method):
 
 def test_internal_pair_meshes_without_overlap():
     # source: an internal pair clear of interference (standards.md §1.8 table: z1 = 20 needs
-    # z2 >= 64 at x = 0; shifts 0.5/0.5 keep the ring tip above the pinion's form circle)
+    # z2 >= 64 at x = 0; shifts 0.5/-0.5, the ring's -0.5 in DIN 3960's sign (KHK's 0.5), keep
+    # the ring tip above the pinion's form circle)
     pair = GearPair(Gear(20, 2, profile_shift=0.5), Gear(80, 2, internal=True, profile_shift=-0.5))
     _mesh_check(pair, "analytic")
 

@@ -107,8 +107,8 @@ CASES = {
     "z25_x-0.4_m2": Gear(25, 2, profile_shift=-0.4),
     "helical_z20_b20": Gear(20, 1, helix_angle=20, profile_shift=0.2),
     "ring_z80_m2": Gear(80, 2, internal=True),
-    "ring_z60_x0.5": Gear(60, 1, internal=True, profile_shift=-0.5),
-    "ring_z40_x0.3_c20": Gear(40, 1, internal=True, profile_shift=-0.3, cutter=ShaperCutter(20)),
+    "ring_z60_x-0.5": Gear(60, 1, internal=True, profile_shift=-0.5),
+    "ring_z40_x-0.3_c20": Gear(40, 1, internal=True, profile_shift=-0.3, cutter=ShaperCutter(20)),
 }
 
 

@@ -311,8 +311,9 @@ def synthesize(
     allow_shift : bool
         Also accept sets one or two teeth off the zero-shift coaxiality condition (simple and
         stepped schemes), made coaxial by profile shifts (:meth:`Planetary.coaxial` at the
-        larger reference centre distance, so every shift sum is positive); each such stage must
-        pass its checks.
+        larger reference centre distance, so no mesh is pushed together: the sun-planet shift
+        sum is positive, the planet-ring one negative in DIN 3960's sign, or zero); each such
+        stage must pass its checks.
     fixed, input, output : str
         Roles of ``"sun"``, ``"ring"``, ``"carrier"`` (defaults as :meth:`Planetary.ratio`).
     clearance : float
