@@ -92,3 +92,28 @@ def test_planetary_rates_every_mesh(capsys):
     assert "rating checks:" in out and code == 0
     code, out, _ = _run(capsys, *argv, "--min-bending", "3")
     assert code == 1 and "[FAIL] planet-ring.bending_1" in out
+
+
+def test_rate_against_scuffing(capsys):
+    # the oil's FZG stage, temperature and viscosities: S_B and S_intS as the API rates them,
+    # exit 1 below --min-scuffing, 2 for an oil option without --fzg-stage or out of range
+    from gears.rating.scuffing import Oil
+
+    argv = ["rate", "17", "40", "-m", "4", "--face-width", "40", "--torque", "400", "--speed",
+            "3000", "--roughness", "0.6", "--oil-viscosity", "100", "--oil-viscosity-100", "11",
+            "--fzg-stage", "9", "--oil-temperature", "80"]  # fmt: skip
+    api = GearPair(Gear(17, 4, face_width=40), Gear(40, 4, face_width=40)).rating(
+        400, 3000, roughness=0.6, oil_viscosity=100,
+        scuffing=Oil(9, 80, 100, 11),
+    )  # fmt: skip
+    code, out, _ = _run(capsys, *argv)
+    assert code == 1 and re.search(r"\[FAIL\] scuffing_flash", out)
+    assert _row(out, "scuffing S_B (flash)")[0] == pytest.approx(api.safety_scuffing[0], abs=1e-4)
+    code, out, _ = _run(capsys, *argv, "--min-scuffing", "1", "1", "--min-pitting", "0.5")
+    assert code == 0, out
+    for bad, named in ((["--fzg-stage", "13"], "--fzg-stage"),
+                       (["--oil-temperature", "300"], "--oil-temperature")):  # fmt: skip
+        code, out, err = _run(capsys, *argv, *bad)
+        assert code == 2 and out == "" and named in err, err
+    code, out, err = _run(capsys, *argv[:-4])
+    assert code == 2 and "--fzg-stage" in err, err

@@ -253,14 +253,8 @@ class Rating:
             f"{self.safety_bending[1]:10.4f}",
         ]
         if self.scuffing is not None:
-            lines.append(
-                f"{'safety scuffing S_B':26s} {self.safety_scuffing[0]:10.4f}"
-                "  (flash temperature, ISO/TS 6336-20)"
-            )
-            lines.append(
-                f"{'safety scuffing S_intS':26s} {self.safety_scuffing[1]:10.4f}"
-                "  (integral temperature, ISO/TS 6336-21)"
-            )
+            lines.append(f"{'scuffing S_B (flash)':26s} {self.safety_scuffing[0]:10.4f}")
+            lines.append(f"{'scuffing S_intS (integral)':26s} {self.safety_scuffing[1]:10.4f}")
             for key, value in self.temperatures.items():
                 lines.append(f"{key:26s} {value:10.4g}")
         for name, value in self.stresses.items():

@@ -283,3 +283,17 @@ def test_property_oil_or_error(stage, temp, nu40, nu100):
     except GearError:
         return
     assert math.isfinite(oil.dynamic_viscosity) and oil.dynamic_viscosity > 0
+
+
+def test_planetary_meshes_rated_against_scuffing():
+    from trains import Planetary
+
+    stage = Planetary(sun=21, planet=36, ring=93, n_planets=3, module=2)
+    ratings = stage.rating(torque=120, speed=1500, face_width=20, scuffing=OIL)
+    sun = ratings["sun-planet"]
+    # the sun meets three planets: X_mp = (1 + 3)/2 = 2 in the bulk temperature
+    theta_flm = sun.temperatures["theta_flm"]
+    assert sun.temperatures["theta_M"] == pytest.approx(80 + 0.47 * 2 * theta_flm, rel=1e-12)
+    # the internal mesh slides less: a lower flash temperature than the sun's mesh
+    ring = ratings["planet-ring"]
+    assert ring.temperatures["theta_flmax"] < sun.temperatures["theta_flmax"]
