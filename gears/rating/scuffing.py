@@ -569,12 +569,14 @@ def rate_scuffing(
     x_m = thermoelastic_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus, m2.poisson,
                                b1, b2)  # fmt: skip
     load = values.K_A * values.K_gamma * values.K_v * values.K_Hbeta * values.K_Halpha
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        out = scuffing_block(z1, z2, module, g["pressure_angle"], g["helix_angle"], internal,
-                             geo.working_pressure_angle, geo.center_distance, da1, da2,
-                             face_width, values.F_t, values.v, load, g["roughness"], oil, x_m,
-                             x_w, n_p)  # fmt: skip
-    shape = np.broadcast_shapes(*(np.shape(v) for v in out.values()), np.shape(values.valid))
+    inputs = [z1, z2, module, g["pressure_angle"], g["helix_angle"], internal,
+              geo.working_pressure_angle, geo.center_distance, da1, da2, face_width, values.F_t,
+              values.v, load, g["roughness"]]  # fmt: skip
+    inputs = [np.asarray(v, bool if i == 5 else float) for i, v in enumerate(inputs)]
+    x_m, x_w, n_p = np.asarray(x_m, float), np.asarray(x_w, float), np.asarray(n_p, float)
+    shape = np.broadcast_shapes(*(v.shape for v in (*inputs, x_m, x_w, n_p)),
+                                np.shape(values.valid))  # fmt: skip
+    out = _in_blocks(inputs, oil, x_m, x_w, n_p, shape)
     result = _results(out, values.valid, values.reason, shape)
     if errors == "raise" and not np.all(result.valid):
         from gears.rating.iso6336 import REASONS
@@ -582,6 +584,28 @@ def rate_scuffing(
         i = int(np.argmax(~np.ravel(result.valid)))
         raise GearError(f"no scuffing rating (row {i}): {REASONS[int(np.ravel(result.reason)[i])]}")
     return result
+
+
+#: Pairs per block of :func:`rate_scuffing` (each pair evaluates its path at 53 points).
+_BLOCK = 16384
+
+
+def _in_blocks(inputs, oil, x_m, x_w, n_p, shape):
+    """:func:`scuffing_block` over the broadcast ``shape`` in blocks of :data:`_BLOCK` pairs
+    (the points along the path stay within a few tens of MB)."""
+    n = math.prod(shape)
+    extra = (x_m, x_w, n_p)
+    if n <= _BLOCK:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            return scuffing_block(*inputs[:15], oil, *extra)
+    flat = [np.broadcast_to(v, shape).ravel() for v in (*inputs, *extra)]
+    parts = []
+    for i0 in range(0, n, _BLOCK):
+        part = [v[i0 : i0 + _BLOCK] for v in flat]
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            parts.append(scuffing_block(*part[:15], oil, *part[15:]))
+    return {k: np.concatenate([np.broadcast_to(p[k], np.shape(p["S_B"])) for p in parts])
+            .reshape(shape) for k in parts[0]}  # fmt: skip
 
 
 def pair_scuffing(pair: Any, values: Any, oil: Oil, face_width: float, roughness: float,

@@ -297,3 +297,15 @@ def test_planetary_meshes_rated_against_scuffing():
     # the internal mesh slides less: a lower flash temperature than the sun's mesh
     ring = ratings["planet-ring"]
     assert ring.temperatures["theta_flmax"] < sun.temperatures["theta_flmax"]
+
+
+def test_blocks_equal_one_block(monkeypatch):
+    # the array path in blocks (bounded memory) gives what one block gives
+    import gears.rating.scuffing as scuffing
+
+    z2 = np.arange(30, 95)
+    whole = rate_scuffing(17, z2, 4, 40, 600, 3000, oil=OIL, roughness=0.6, errors="mask")
+    monkeypatch.setattr(scuffing, "_BLOCK", 16)
+    parts = rate_scuffing(17, z2, 4, 40, 600, 3000, oil=OIL, roughness=0.6, errors="mask")
+    for a, b in zip(whole, parts, strict=True):
+        assert np.allclose(a, b, rtol=1e-12, equal_nan=True)
