@@ -99,8 +99,9 @@ class Gear:
     modification : Modification or None
         Flank modifications (tip and root relief, crowning, end relief, helix slope:
         :class:`gears.contact.modification.Modification`), which the contact analysis
-        (:meth:`GearPair.contact`) takes into account, and :meth:`outline` draws (tip and
-        root relief). None: the unmodified involute.
+        (:meth:`GearPair.contact`) takes into account, :meth:`outline` draws (tip and root
+        relief) and :meth:`mesh` and every scene draw along the face (crowning, end relief,
+        helix slope). None: the unmodified involute.
 
     Examples
     --------
