@@ -486,6 +486,7 @@ class ModificationSearch:
     relief_length: float
     kind: str = "linear"
     max_K_Hbeta: float | None = None
+    base: tuple = (None, None)
 
     @property
     def index(self) -> tuple[int, int]:
@@ -515,14 +516,16 @@ class ModificationSearch:
     @property
     def modifications(self) -> tuple[Modification, Modification]:
         """The best cell as ``(gear 1's, gear 2's)`` :class:`Modification`: the tip relief on
-        both, the crowning on gear 1."""
-        kw = {"tip_relief_length": self.relief_length, "kind": self.kind}
-        return (Modification(tip_relief=self.tip_relief, crowning=self.crowning, **kw),
-                Modification(tip_relief=self.tip_relief, **kw))  # fmt: skip
+        both, the crowning on gear 1, each gear's other modifications (root relief, end
+        relief, helix slope) kept as the search took them (their ``kind`` becomes the
+        search's)."""
+        kw = {"tip_relief": self.tip_relief, "tip_relief_length": self.relief_length,
+              "kind": self.kind}  # fmt: skip
+        b1, b2 = (Modification() if m is None else m for m in self.base)
+        return replace(b1, crowning=self.crowning, **kw), replace(b2, crowning=0.0, **kw)
 
     def apply(self, pair):
-        """``pair`` with the best modifications on its gears (each gear's other modifications,
-        such as a root relief or a helix slope, are replaced)."""
+        """``pair`` with the best :attr:`modifications` on its gears."""
         m1, m2 = self.modifications
         return type(pair)(pair.g1.with_(modification=m1), pair.g2.with_(modification=m2),
                           pair.tip_shortening)  # fmt: skip
@@ -544,7 +547,8 @@ def best_modification(
     pair, else 9 values from 0 to the larger of the tilt and that deflection. The tilt is
     ``misalignment + f_ma + f_sh`` (mm over the face, as in :func:`contact`); ``max_K_Hbeta``
     keeps the best cell among those whose face load factor is within it. The gears' own tip
-    relief and crowning are replaced; their other modifications stay. ``slices`` defaults to 1
+    relief and crowning are replaced; their other modifications stay (in the search and in
+    :meth:`ModificationSearch.apply`). ``slices`` defaults to 1
     for an aligned spur pair without lead modification, else 20.
 
     >>> from gears import Gear, GearPair
@@ -601,7 +605,7 @@ def best_modification(
     short = max(geometry["path"] - geometry["base_pitch"], 0.0)
     length = short if relief_length is None else relief_length
     return ModificationSearch(tip_reliefs, crownings, p2p * 1000.0, k_hbeta, torque,
-                              float(length), kind, max_K_Hbeta)  # fmt: skip
+                              float(length), kind, max_K_Hbeta, tuple(own))  # fmt: skip
 
 
 def _array(name, values, low, high) -> np.ndarray:

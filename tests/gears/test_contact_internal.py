@@ -203,6 +203,18 @@ def test_crowning_search_respects_the_face_load_limit():
     assert m1.crowning == s.crowning and m2.crowning == 0 and m2.tip_relief == s.tip_relief
 
 
+def test_search_keeps_the_gears_other_modifications():
+    # a root relief on gear 1 stays in the search's gaps and in the pair it applies: the
+    # applied pair's peak to peak is the search's best cell's (same model, to 1e-9)
+    root = Modification(root_relief=0.01, root_relief_length=2.0, crowning=0.005)
+    pair = GearPair(Gear(20, 3, face_width=30, modification=root), Gear(50, 3, face_width=30))
+    s = best_modification(pair, 300.0, tip_reliefs=np.linspace(0, 0.04, 21), positions=16)
+    m1, _ = s.modifications
+    assert m1.root_relief == 0.01 and m1.root_relief_length == 2.0 and m1.crowning == 0.0
+    applied = s.apply(pair).contact(300.0, positions=16, slices=1)
+    assert applied.peak_to_peak == pytest.approx(s.best_peak_to_peak, rel=1e-9)
+
+
 # --- property sweeps ----------------------------------------------------------------------------
 @given(
     st.integers(12, 40),
