@@ -619,8 +619,9 @@ class Gear:
                        rim: float | None = None, cutter: ShaperCutter | None = None,
                        herringbone: bool = False) -> float:  # fmt: skip
         """Estimated vertices of :meth:`mesh` at ``tolerance`` (one tooth sampled, times z and
-        the slices and the levels of a lead modification; :func:`gears.cutting.outline.
-        outline_vertices`, :func:`gears.contact.flank.lead_levels`), before any outline is drawn."""
+        the slices and a lead modification's levels:
+        :func:`gears.cutting.outline.outline_vertices`, :func:`gears.contact.flank.lead_levels`),
+        before any outline is drawn."""
         from gears.contact.flank import lead_levels
         from gears.cutting.outline import outline_vertices
 

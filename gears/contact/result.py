@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -524,8 +524,9 @@ class ModificationSearch:
         b1, b2 = (Modification() if m is None else m for m in self.base)
         return replace(b1, crowning=self.crowning, **kw), replace(b2, crowning=0.0, **kw)
 
-    def apply(self, pair):
-        """``pair`` with the best :attr:`modifications` on its gears."""
+    def apply(self, pair: Any) -> Any:
+        """``pair`` (a :class:`gears.GearPair`) with the best :attr:`modifications` on its
+        gears, as a new pair."""
         m1, m2 = self.modifications
         return type(pair)(pair.g1.with_(modification=m1), pair.g2.with_(modification=m2),
                           pair.tip_shortening)  # fmt: skip

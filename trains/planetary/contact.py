@@ -22,6 +22,7 @@ fraction of a mesh cycle is exact on the sampled cycle (a phase factor on its Fo
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -114,7 +115,7 @@ class StageContact:
         te = self.meshes[mesh].transmission_error if mesh in self.meshes else None
         return phased_sum(te, self._phases(mesh))
 
-    def harmonics(self, mesh: str, orders=(1, 2, 3)) -> dict[str, np.ndarray]:
+    def harmonics(self, mesh: str, orders: Sequence[int] = (1, 2, 3)) -> dict[str, np.ndarray]:
         """Amplitudes (um) of the mesh-order harmonics ``orders`` of one mesh's transmission
         error (``"single"``) and of the stage's net (``"net"``)."""
         net = self.net_transmission_error(mesh)
