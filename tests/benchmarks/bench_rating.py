@@ -16,14 +16,24 @@ Run as ``python tests/benchmarks/bench_rating.py [n] [rounds]``. Prints
   in docs/performance.md), interleaved round by round so that a shared machine's load falls on
   each alike.
 
+``python tests/benchmarks/bench_rating.py --tree PATH [--rounds R]`` times the one-pair routes
+only, of this source tree and of the tree at PATH (e.g. ``git archive`` of an older commit:
+before/after), each round a fresh process of each in turn, so that both see the same machine
+load; best per route, the ratios after/before and ``uptime``'s load at the start and the end.
+The routes: a first rating, the same pair at other torques through ``GearPair.rating`` and,
+where the tree has it, through ``Rating.at``.
+
 Not a test: pytest does not collect ``bench_*.py``. Results: docs/performance.md.
 """
 
 from __future__ import annotations
 
+import json
 import math
 import os
+import pathlib
 import platform
+import subprocess
 import sys
 import time
 
@@ -54,6 +64,16 @@ def our_pair_loads():
     pair = GearPair(Gear(19, 3, face_width=30), Gear(61, 3, face_width=30))
     torques = iter(np.tile(np.linspace(50.0, 300.0, 97), 10**5))
     return lambda: pair.rating(float(next(torques)), N1)
+
+
+def our_rating_at():
+    """The same pair at other torques through ``Rating.at`` (None where the tree lacks it)."""
+    pair = GearPair(Gear(19, 3, face_width=30), Gear(61, 3, face_width=30))
+    first = pair.rating(T1, N1)
+    if not hasattr(first, "at"):
+        return None
+    torques = iter(np.tile(np.linspace(50.0, 300.0, 97), 10**5))
+    return lambda: first.at(float(next(torques)))
 
 
 def our_vectorised():
@@ -114,6 +134,9 @@ def single(rounds: int = 7, calls: int = 200) -> dict[str, float]:
         "GearPair.rating, other T": our_pair_loads(),
         "rate_pairs (1 pair)": our_vectorised(),
     }
+    at = our_rating_at()
+    if at is not None:
+        routes["Rating.at, other T"] = at
     peer = gearbox_pair()
     if peer is not None:
         routes["python-gearbox ISO"] = peer
@@ -160,7 +183,42 @@ def many(n: int = 1_000_000, rounds: int = 3) -> dict[tuple[str, int], float]:
     return best
 
 
+def before_after(tree: str, rounds: int) -> None:
+    """The one-pair routes of this tree and of ``tree``, a fresh process each in turn."""
+    here = str(pathlib.Path(__file__).resolve().parents[2])
+    trees = {"after": here, "before": str(pathlib.Path(tree).resolve())}
+    best: dict[str, dict[str, float]] = {k: {} for k in trees}
+    load0 = os.getloadavg()
+    for _ in range(rounds):
+        for name, path in trees.items():
+            env = dict(os.environ, PYTHONPATH=path)
+            out = subprocess.run([sys.executable, __file__, "--worker"], env=env, check=True,
+                                 capture_output=True, text=True).stdout  # fmt: skip
+            for route, sec in json.loads(out.splitlines()[-1]).items():
+                best[name][route] = min(best[name].get(route, math.inf), sec)
+    load1 = os.getloadavg()
+    print(f"load average {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f} at the start, "
+          f"{load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f} at the end (uptime)")  # fmt: skip
+    peer = best["after"].get("python-gearbox ISO")
+    for route in best["after"]:
+        after, before = best["after"][route], best["before"].get(route)
+        line = f"{route:26s} after {after * 1e3:7.3f} ms"
+        if before is not None:
+            line += f"  before {before * 1e3:7.3f} ms  after/before {after / before:5.2f}"
+        if peer:
+            line += f"  / python-gearbox {after / peer:5.2f}"
+        print(line)
+
+
 if __name__ == "__main__":
+    if "--worker" in sys.argv:  # one round of the one-pair routes, as JSON (before_after)
+        print(json.dumps(single(rounds=3, calls=200)))
+        sys.exit()
+    if "--tree" in sys.argv:
+        i = sys.argv.index("--tree")
+        r = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 5
+        before_after(sys.argv[i + 1], r)
+        sys.exit()
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 1_000_000
     rounds = int(sys.argv[2]) if len(sys.argv) > 2 else 3
     load = os.getloadavg()

@@ -8,12 +8,21 @@ m 1 ... 8, x 0 ... 0.5 / -0.2 ... 0.3, beta 15 deg, b 10 m) under a 10-bin spect
 once at one load by ``rate_pairs`` (the four safeties), interleaved round by round; and the
 mesh losses of the same pairs by ``gears.rating.pair_losses``.
 
+``python tests/benchmarks/bench_spectrum.py n rounds --tree PATH`` runs the same cases in this
+source tree and in the tree at PATH (e.g. ``git archive`` of an older commit: before/after),
+each round a fresh process of each in turn, so that both see the same machine load, and prints
+the best of each with the ratios and ``uptime``'s load at the start and the end.
+
 Not a test: pytest does not collect ``bench_*.py``. Results: docs/performance.md.
 """
 
 from __future__ import annotations
 
+import json
+import math
 import os
+import pathlib
+import subprocess
 import sys
 import time
 
@@ -37,7 +46,8 @@ def pairs(n: int, seed: int = 1):
     return z1, z2, m, x1, x2, b
 
 
-def main(n: int = 200_000, rounds: int = 3) -> None:
+def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
+    """Seconds of each case, round by round."""
     z1, z2, m, x1, x2, b = pairs(n)
     scale = float(np.median(m)) ** 2
     spectrum = [(scale * 100 * f, 1500.0, h) for f, h in
@@ -58,11 +68,50 @@ def main(n: int = 200_000, rounds: int = 3) -> None:
         t4 = time.perf_counter()
         for key, dt in zip(times, (t1 - t0, t2 - t1, t3 - t2, t4 - t3), strict=True):
             times[key].append(dt)
+    return times
+
+
+def main(n: int = 200_000, rounds: int = 3) -> None:
+    times = timed(n, rounds)
     print(f"{n} pairs, 10-bin spectrum, {rounds} rounds (best), load {os.getloadavg()}")
     for key, ts in times.items():
         best = min(ts)
         print(f"{key:24s} {best:8.3f} s  {n / best:12.4g} pairs/s")
 
 
+def before_after(n: int, rounds: int, tree: str) -> None:
+    """The cases in this tree and in ``tree``, a fresh process each in turn."""
+    here = str(pathlib.Path(__file__).resolve().parents[2])
+    trees = {"after": here, "before": str(pathlib.Path(tree).resolve())}
+    best: dict[str, dict[str, float]] = {k: {} for k in trees}
+    load0 = os.getloadavg()
+    for _ in range(rounds):
+        for name, path in trees.items():
+            env = dict(os.environ, PYTHONPATH=path)
+            out = subprocess.run([sys.executable, __file__, str(n), "1", "--worker"], env=env,
+                                 check=True, capture_output=True, text=True).stdout  # fmt: skip
+            for key, ts in json.loads(out.splitlines()[-1]).items():
+                best[name][key] = min(best[name].get(key, math.inf), *ts)
+    load1 = os.getloadavg()
+    print(f"{n} pairs, 10-bin spectrum, best of {rounds} rounds; load average {load0[0]:.2f} "
+          f"{load0[1]:.2f} {load0[2]:.2f} at the start, {load1[0]:.2f} {load1[1]:.2f} "
+          f"{load1[2]:.2f} at the end (uptime)")  # fmt: skip
+    for key in best["after"]:
+        a, b = best["after"][key], best["before"][key]
+        print(f"{key:22s} after {a:7.3f} s {n / a:10.4g} pairs/s   before {b:7.3f} s "
+              f"{n / b:10.4g} pairs/s   before/after {b / a:6.2f}")  # fmt: skip
+    one = best["after"]["one load, 2 threads"]
+    spec = best["after"]["spectrum 2 threads"]
+    print(f"10-bin spectrum / one load (2 threads): {spec / one:.1f} after, "
+          f"{best['before']['spectrum 2 threads'] / best['before']['one load, 2 threads']:.1f} "
+          "before")  # fmt: skip
+
+
 if __name__ == "__main__":
-    main(*(int(a) for a in sys.argv[1:3]))
+    numbers = [int(a) for a in sys.argv[1:3] if a.isdigit()]
+    if "--worker" in sys.argv:  # the cases of one round, as JSON (before_after)
+        print(json.dumps(timed(*numbers)))
+    elif "--tree" in sys.argv:
+        before_after(*numbers, sys.argv[sys.argv.index("--tree") + 1])
+    else:
+        main(*numbers)
