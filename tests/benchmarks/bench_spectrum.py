@@ -6,7 +6,8 @@ m 1 ... 8, x 0 ... 0.5 / -0.2 ... 0.3, beta 15 deg, b 10 m) under a 10-bin spect
 10 ... 500 m^2 N m scaled by 0.2 ... 1.4, 1500 rpm, 10 ... 10^4 h a bin) through
 ``gears.rating.rate_spectrum`` on 1 and 2 threads, beside the baseline of the same pairs rated
 once at one load by ``rate_pairs`` (the four safeties), interleaved round by round; and the
-mesh losses of the same pairs by ``gears.rating.pair_losses``.
+mesh losses of the same pairs by ``gears.rating.pair_losses``, at one load and over the 10
+bins (pairs of shape (n, 1), bins of shape (10,): each pair's geometry and H_V once).
 
 ``python tests/benchmarks/bench_spectrum.py n rounds --tree PATH`` runs the same cases in this
 source tree and in the tree at PATH (e.g. ``git archive`` of an older commit: before/after),
@@ -54,7 +55,10 @@ def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
                 zip(np.linspace(0.2, 1.4, 10), np.geomspace(1e4, 10, 10), strict=True)]  # fmt: skip
     torque = 10.0 * m * m
     times: dict[str, list[float]] = {"spectrum 1 thread": [], "spectrum 2 threads": [],
-                                     "one load, 2 threads": [], "losses": []}  # fmt: skip
+                                     "one load, 2 threads": [], "losses": [],
+                                     "losses, 10 bins": []}  # fmt: skip
+    bins_torque = np.array([t for t, _, _ in spectrum])
+    bins_speed = np.array([v for _, v, _ in spectrum])
     for _ in range(rounds):
         t0 = time.perf_counter()
         rate_spectrum(z1, z2, m, b, spectrum, x1=x1, x2=x2, helix_angle=15.0, threads=1)
@@ -66,7 +70,11 @@ def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
         t3 = time.perf_counter()
         pair_losses(torque, 1500.0, z1, z2, m, b, x1, x2, 20.0, 15.0)
         t4 = time.perf_counter()
-        for key, dt in zip(times, (t1 - t0, t2 - t1, t3 - t2, t4 - t3), strict=True):
+        col = [v[:, None] for v in (z1, z2, m, b, x1, x2)]  # each pair's geometry and H_V once
+        pair_losses(bins_torque, bins_speed, *col[:4], col[4], col[5], 20.0, 15.0)
+        t5 = time.perf_counter()
+        deltas = (t1 - t0, t2 - t1, t3 - t2, t4 - t3, t5 - t4)
+        for key, dt in zip(times, deltas, strict=True):
             times[key].append(dt)
     return times
 
@@ -97,7 +105,7 @@ def before_after(n: int, rounds: int, tree: str) -> None:
           f"{load0[1]:.2f} {load0[2]:.2f} at the start, {load1[0]:.2f} {load1[1]:.2f} "
           f"{load1[2]:.2f} at the end (uptime)")  # fmt: skip
     for key in best["after"]:
-        a, b = best["after"][key], best["before"][key]
+        a, b = best["after"][key], best["before"].get(key, math.nan)
         print(f"{key:22s} after {a:7.3f} s {n / a:10.4g} pairs/s   before {b:7.3f} s "
               f"{n / b:10.4g} pairs/s   before/after {b / a:6.2f}")  # fmt: skip
     one = best["after"]["one load, 2 threads"]
