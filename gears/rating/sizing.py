@@ -1,5 +1,6 @@
 """Layer 5, sizing: what carries a load, over arrays: the smallest face width of a set that
-meets the minimum safeties, the gears' volume and mass, the ISO 54 module series (issue 20).
+meets the minimum safeties, the gears' volume and mass, the ISO 54 module series (issue 20),
+and the rating of many pairs under a load spectrum (:func:`rate_spectrum`, ISO 6336-6).
 
 A :class:`Load` is one load case and its demands, checked once: the torque on gear 1 (N m),
 its speed (rpm), the materials, the life (h), the minimum safeties against pitting and
@@ -26,12 +27,15 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.geometry import reference_diameter, root_diameter
+from gears.meshing import default_threads
 from gears.rating._arrays import shown
 from gears.rating.iso6336 import FACTORS, PairRatings, rate_pairs
 from gears.rating.materials import Material, material
+from gears.rating.miner import SpectrumRatings, _combine, check_spectrum
 
 __all__ = [
     "ISO54",
@@ -44,6 +48,7 @@ __all__ = [
     "load_case",
     "pair_volume",
     "rate",
+    "rate_spectrum",
     "smallest_width",
 ]
 
@@ -87,6 +92,10 @@ class Load:
     options : dict
         Further keyword arguments of :func:`gears.rating.iso6336.rate_pairs` (``quality``,
         ``factors``).
+    spectrum : tuple of (torque, speed, hours), optional
+        A load spectrum (ISO 6336-6) instead of one load: the safeties are its equivalent
+        safeties (:func:`gears.rating.spectrum.rate_spectrum`); ``torque`` and ``speed`` are
+        then its bin of the largest torque and ``life`` its hours.
     """
 
     torque: float
@@ -96,6 +105,7 @@ class Load:
     min_pitting: float = MIN_SAFETY["pitting"]
     min_bending: float = MIN_SAFETY["bending"]
     options: dict = field(default_factory=dict)
+    spectrum: tuple | None = None
 
     @property
     def density(self) -> tuple[float, float]:
@@ -107,7 +117,10 @@ class Load:
         ``root="standard"``, the route the searches rate by)."""
         out = {k: v for k, v in self.options.items() if k != "factors"}
         out.update(self.options.get("factors", {}))
-        out["life"] = self.life
+        if self.spectrum is not None:
+            out["spectrum"] = [list(b) for b in self.spectrum]
+        else:
+            out["life"] = self.life
         out["root"] = "standard"
         return out
 
@@ -162,10 +175,12 @@ def min_safeties(min_safety, error=GearError) -> tuple[float, float]:
 
 def load_case(
     torque, speed, material_="case-carburized", life=20000.0, min_safety=None, error=GearError,
-    **options,
+    *, spectrum=None, **options,
 ) -> Load:  # fmt: skip
     """A checked :class:`Load`: every value is tried on one reference pair before any work, so
     a bad one is ``error`` (GearError, or the caller's class) naming it and its valid range.
+    With ``spectrum`` (bins ``(torque, speed, hours)``; ``torque`` and ``speed`` None) the load
+    is that spectrum (ISO 6336-6).
 
     ``options`` are ``GearPair.rating``'s (:data:`RATING_OPTIONS`; ``root`` only
     ``"standard"``, the route a search can vectorise) and factors by their ISO symbols.
@@ -174,6 +189,17 @@ def load_case(
     >>> load.min_pitting, load.min_bending, load.options
     (1.1, 1.5, {'quality': 6})
     """
+    bins = None
+    if spectrum is not None:
+        if torque is not None or speed is not None:
+            raise error("give either torque and speed or spectrum=, not both")
+        try:
+            torques, speeds, hours = check_spectrum(spectrum)
+        except GearError as exc:
+            raise error(str(exc)) from None
+        bins = tuple(zip(torques.tolist(), speeds.tolist(), hours.tolist(), strict=True))
+        i = int(np.argmax(torques))
+        torque, speed, life = torques[i], speeds[i], float(hours.sum())
     t = _positive("torque", torque, error)
     n = _positive("speed", speed, error)
     h = _positive("life", life, error)
@@ -207,7 +233,7 @@ def load_case(
             )
     if factors:
         kw["factors"] = factors
-    load = Load(t, n, pair, h, pitting, bending, kw)
+    load = Load(t, n, pair, h, pitting, bending, kw, bins)
     try:  # every value once, on a reference pair (20/40, m = 2, b = 20)
         rate(load, 20, 40, 2.0, 20.0)
     except GearError as exc:
@@ -222,6 +248,8 @@ def rate(load: Load, z1, z2, module, face_width, x1=0.0, x2=0.0, pressure_angle=
     broadcast; ``torque``/``speed`` replace the load's, per row; ``overrides`` replace options
     such as ``contacts``, ``idler``, ``load_sharing`` or ``tip_alteration``). A pair with no
     rating (:data:`gears.rating.iso6336.REASONS`) gets ``valid = False`` and zero safeties.
+    Under a spectrum the safeties are the equivalent safeties of ISO 6336-6 (no ``torque`` or
+    ``speed`` per row then) and the other fields None.
     """
     rack_kw = {}
     if rack is not None:
@@ -229,6 +257,18 @@ def rate(load: Load, z1, z2, module, face_width, x1=0.0, x2=0.0, pressure_angle=
                        root_radius=rack.root_radius, protuberance=rack.protuberance)  # fmt: skip
     kw = dict(load.options)
     kw.update(overrides)
+    if load.spectrum is not None:
+        if torque is not None or speed is not None:
+            raise GearError("a load spectrum gives the torques and speeds: no torque= or speed=")
+        r = rate_spectrum(
+            z1, z2, module, face_width, load.spectrum, x1=x1, x2=x2,
+            pressure_angle=pressure_angle, helix_angle=helix_angle, internal=internal,
+            material=load.materials, tip_shortening=tip_shortening, errors="mask",
+            threads=threads, **rack_kw, **kw,
+        )  # fmt: skip
+        values = {f: getattr(r, f) for f in _SAFETIES}
+        values.update(valid=r.valid, reason=np.where(r.valid, 0, -1))
+        return PairRatings(**{f: values.get(f) for f in PairRatings._fields})
     return rate_pairs(
         z1, z2, module, face_width, load.torque if torque is None else torque,
         load.speed if speed is None else speed, x1=x1, x2=x2, pressure_angle=pressure_angle,
@@ -278,6 +318,78 @@ def smallest_width(load: Load, widths, z1, z2, module, x1=0.0, x2=0.0, pressure_
         **{f: out[f].reshape(shape) for f in _SAFETIES}, valid=valid.reshape(shape)
     )
     return index.reshape(shape), ratings
+
+
+_PER_PAIR = ("x1", "x2", "pressure_angle", "helix_angle", "internal", "application_factor",
+             "quality", "roughness", "oil_viscosity", "load_sharing", "misalignment",
+             "tip_relief", "addendum", "root_roughness")  # fmt: skip
+_NEEDED = ("sigma_H1", "sigma_H2", "sigma_HP1", "sigma_HP2", "Z_NT1", "Z_NT2", "sigma_F1",
+           "sigma_F2", "sigma_FP1", "sigma_FP2", "Y_NT1", "Y_NT2", "N_L1", "N_L2")  # fmt: skip
+
+
+def _trailing(v):
+    """``v`` with a trailing axis for the bins when it is an array."""
+    return v if np.ndim(v) == 0 else np.asarray(v)[..., None]
+
+
+def rate_spectrum(
+    z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: ArrayLike, spectrum: Any, *,
+    errors: str = "raise", **options: Any,
+) -> SpectrumRatings:  # fmt: skip
+    """ISO 6336-6 ratings of many pairs under one load spectrum (arrays broadcast).
+
+    Parameters
+    ----------
+    z1, z2, module, face_width
+        The pairs, as for :func:`gears.rating.iso6336.rate_pairs`.
+    spectrum : list of (torque, speed, hours)
+        The bins: torque on gear 1 (N m), its speed relative to the carrier (rpm), hours.
+    errors : {"raise", "mask"}
+        A pair with no rating at some bin raises a GearError naming it ("raise") or gets
+        ``valid = False`` ("mask"), as in :func:`gears.rating.iso6336.rate_pairs`.
+    **options
+        Passed to :func:`gears.rating.iso6336.rate_pairs` (``material``, ``x1``, ``quality``,
+        ``factors``, ``threads``, ...; not ``torque``, ``speed``, ``life``, ``fields``). The
+        per-pair arrays among them broadcast against the pairs; materials and per-gear pairs
+        are one for all.
+
+    Returns
+    -------
+    SpectrumRatings
+
+    Examples
+    --------
+    >>> r = rate_spectrum([19, 21], 61, 3, 30, [(150, 1450, 2000), (250, 1450, 200)])
+    >>> [round(float(s), 3) for s in r.S_H1], [round(float(d), 4) for d in r.D_H1]
+    ([1.122, 1.241], [0.0944, 0.0034])
+    """
+    for key in ("torque", "speed", "life", "fields"):
+        if key in options:
+            raise GearError(f"{key}= is not an option of rate_spectrum (the spectrum gives it)")
+    if errors not in ("raise", "mask"):
+        raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
+    torques, speeds, hours = check_spectrum(spectrum)
+    extra = {k: _trailing(v) if k in _PER_PAIR else v for k, v in options.items()}
+    r = rate_pairs(_trailing(z1), _trailing(z2), _trailing(module), _trailing(face_width),
+                   torques, speeds, life=hours, fields=_NEEDED, errors=errors,
+                   **extra)  # fmt: skip
+    m1, m2 = _materials(options.get("material", "case-carburized"))
+    threads = options.get("threads")
+    threads = default_threads() if threads is None else threads
+    out = _combine(r, m1.code, m2.code, float(hours.sum()), threads)
+    valid = np.all(r.valid, axis=-1)
+    if np.all(valid):
+        return out
+    masked = {k: np.where(valid, v, np.nan if k.startswith("D_") else 0.0)
+              for k, v in out._asdict().items() if k != "valid"}  # fmt: skip
+    return SpectrumRatings(**{k: v[()] for k, v in masked.items()}, valid=valid[()])
+
+
+def _materials(value):
+    mats = value if isinstance(value, tuple | list) else (value, value)
+    if len(mats) != 2:
+        raise GearError(f"material = {value!r}; give one material or a pair")
+    return material(mats[0]), material(mats[1])
 
 
 def _row_shapes(overrides: dict) -> list[tuple[int, ...]]:

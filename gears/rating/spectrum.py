@@ -1,4 +1,4 @@
-"""Layer 5, load spectra (ISO 6336-6): Miner's damage per gear and failure mode, the equivalent
+"""Layer 6, load spectra (ISO 6336-6): Miner's damage per gear and failure mode, the equivalent
 safety and the life of a mesh under a duty of several loads (the formulas as math:
 docs/rating.md, "Load spectra").
 
@@ -17,6 +17,12 @@ The **equivalent safety** S is the factor by which every bin's stress may grow b
 1 (for one bin it is the single-load safety sigma_HP / sigma_H, sigma_FP / sigma_F); the
 **life** is the spectrum's hours over D, the hours the duty can be repeated until D = 1 (an
 endless life is reported as :data:`LIFE_CAP` hours).
+
+This module is the view of one mesh (:class:`SpectrumRating`, what
+``GearPair.rating(spectrum=...)`` returns) and the spectrum file (:func:`read_spectrum`); the
+array entry :func:`rate_spectrum` lives with the load cases in :mod:`gears.rating.sizing` (the
+searches size for a spectrum with it), Miner's rule over arrays in :mod:`gears.rating.miner`;
+both are named here too.
 """
 
 from __future__ import annotations
@@ -27,18 +33,26 @@ from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from gears.display import html_table
 from gears.errors import GearError
-from gears.meshing import _pool, default_threads
-from gears.rating.iso6336 import rate_pairs
-from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
-from gears.rating.materials import material
+from gears.rating.miner import (
+    LIFE_CAP,
+    MAX_BINS,
+    MODES,
+    SpectrumRatings,
+    _combine,
+    check_spectrum,
+    cycles_to_failure,
+    equivalent_safety,
+    miner_damage,
+)
+from gears.rating.sizing import _materials, rate_spectrum
 from gears.report import Finding, Report
 
 __all__ = [
     "LIFE_CAP",
+    "MAX_BINS",
     "MODES",
     "SpectrumRating",
     "SpectrumRatings",
@@ -50,221 +64,6 @@ __all__ = [
     "read_spectrum",
     "spectrum_rating",
 ]
-
-#: The life reported where the spectrum does no damage (every stress below the endurance limit).
-LIFE_CAP = 1e12
-#: Failure modes and the life curve each reads: pitting (Z_NT), tooth-root bending (Y_NT).
-MODES = ("pitting", "bending")
-#: Most bins a spectrum may have.
-MAX_BINS = 10_000
-_BLOCK = 1 << 15  # bins x pairs solved at once: the arrays stay in the cache
-_THREADED = 1 << 14  # ratings (pairs x bins) from which the gears and modes run on threads
-_TABLES = {"pitting": _PITTING_TABLE, "bending": _BENDING_TABLE}
-
-
-def _mode_table(mode: str):
-    if mode not in _TABLES:
-        raise GearError(f"mode = {mode!r}; valid are {', '.join(MODES)}")
-    return _TABLES[mode]
-
-
-def _knots(code, table):
-    """The curve's knots (k0, k1, k2, y0, y1, y2) for material ``code`` (arrays with a trailing
-    axis for the bins, or numbers)."""
-    logn, logy = table
-    code = np.asarray(code)
-    if code.ndim == 0:
-        c = int(code)
-        return tuple(float(v) for v in (*logn[c], *logy[c]))
-    return tuple(v[..., None] for v in (*logn[code].T, *logy[code].T))
-
-
-def _slopes(knots):
-    """The S-N curve's slopes d ln N_f / d ln sigma above and below its knee (both < 0)."""
-    k0, k1, k2, y0, y1, y2 = knots
-    return (k1 - k0) / (y1 - y0), (k2 - k1) / (y2 - y1)
-
-
-def _sloped_log_cycles(u, knots):
-    """ln N_f on the sloped part of the S-N curve, ``u`` = ln(sigma / sigma_inf) - y1 from its
-    knee (the log-log lines through the knots)."""
-    a1, a2 = _slopes(knots)
-    return knots[1] + a2 * np.minimum(u, 0.0) + a1 * np.maximum(u, 0.0)
-
-
-def _log_cycles(z, knots):
-    """ln N_f at ``z = ln(sigma / sigma_inf)``: +inf below the endurance knot, 0 (one cycle)
-    above the static knot, the log-log lines between."""
-    y0, y1, y2 = knots[3:]
-    ln_nf = np.where(z > y0, 0.0, _sloped_log_cycles(z - y1, knots))
-    return np.where(z <= y2, np.inf, ln_nf)
-
-
-def cycles_to_failure(ratio, code, mode="pitting"):
-    """Cycles to failure N_f at the stress ratio ``sigma / sigma_inf`` on the S-N curve of the
-    material group ``code`` (:func:`gears.rating.materials.kind_code`) for ``mode`` (arrays
-    broadcast). Below the endurance knot the curve is flat and the life endless: returned as
-    ``LIFE_CAP * 3.6e6`` cycles (finite); above the static knot, 1 cycle.
-
-    >>> from gears.rating.materials import kind_code
-    >>> round(float(cycles_to_failure(1.0, kind_code("Eh"))))   # Z_NT = 1 at 5 x 10^7
-    50000000
-    """
-    code = np.asarray(code)
-    z = np.log(np.asarray(ratio, float))
-    knots = _knots(code, _mode_table(mode))
-    if code.ndim:
-        knots = tuple(v[..., 0] for v in knots)
-    return np.exp(np.minimum(_log_cycles(z, knots), math.log(LIFE_CAP * 3.6e6)))
-
-
-def _log_ratio_cycles(stress, strength, cycles, axis):
-    """ln(sigma / sigma_inf) and ln N_L with the bins moved to the last axis."""
-    z = np.log(np.asarray(stress, float)) - np.log(np.asarray(strength, float))
-    with np.errstate(divide="ignore"):
-        lc = np.log(np.asarray(cycles, float))
-    z, lc = np.broadcast_arrays(z, lc)
-    return np.moveaxis(z, axis, -1), np.moveaxis(lc, axis, -1)
-
-
-def miner_damage(stress, strength, cycles, code, mode="pitting", axis=-1):
-    """Miner's sum D = sum N_L,i / N_f,i over the bins on ``axis``: ``stress`` sigma_i,
-    ``strength`` sigma_inf,i (the allowable stress over its life factor) in MPa, ``cycles``
-    N_L,i, ``code`` the material group (arrays broadcast; an array ``code`` has the shape of the
-    result).
-
-    >>> round(float(miner_damage([1000.0], [1000.0], [2.5e7], 4)), 6)   # Eh: half of 5 x 10^7
-    0.5
-    """
-    z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
-    return np.sum(np.exp(lc - _log_cycles(z, _knots(code, _mode_table(mode)))), axis=-1)
-
-
-def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
-    """The factor S by which every bin's stress may grow until Miner's sum reaches 1: the bound
-    between D(S sigma) < 1 and D(S sigma) >= 1 in [1e-4, 1e4] (arrays broadcast, the bins on
-    ``axis``; an array ``code`` has the shape of the result).
-
-    With x = ln S, each bin's damage is 0 up to its endurance knot, exp(g - a x) on a sloped
-    segment of the S-N curve (a the segment's slope d ln N_f / d ln sigma) and N_L above the
-    static knot: D(x) is non-decreasing, smooth between the knots of the bins and jumps at
-    some. A bisection over the bins' knots, sorted (3 per bin), finds the stretch where D
-    reaches 1; there D = C + A_1 exp(-a_1 x) + A_2 exp(-a_2 x): the answer is the stretch's
-    start where D jumps over 1, in closed form where one segment is loaded, and by Newton's
-    method on the convex ln D from the stretch's end otherwise.
-
-    >>> round(float(equivalent_safety([1000.0], [1000.0], [5e7], 4)), 9)   # one bin at its knot
-    1.0
-    """
-    return _damage_and_safety(stress, strength, cycles, code, mode, axis)[1]
-
-
-def _damage_and_safety(stress, strength, cycles, code, mode, axis=-1):
-    """Miner's sum and the equivalent safety (:func:`equivalent_safety`) of the same bins."""
-    z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
-    shape, bins = z.shape[:-1], z.shape[-1]
-    z, lc = z.reshape(-1, bins), lc.reshape(-1, bins)
-    n = len(z)
-    knots = tuple(np.broadcast_to(k, (*shape, 1)).reshape(n) if np.ndim(k) else k
-                  for k in _knots(code, _mode_table(mode)))  # fmt: skip
-    d, s = np.empty(n), np.empty(n)
-    step = max(1, _BLOCK // bins)  # blocks that stay in the cache
-    for i in range(0, n, step):
-        rows = slice(i, i + step)
-        # the bins on the first axis, the rows contiguous on the last (fast broadcasts, sums)
-        d[rows], s[rows] = _solve(z[rows].T.copy(), lc[rows].T.copy(),
-                                  tuple(k[rows] if np.ndim(k) else k for k in knots))  # fmt: skip
-    return (d.reshape(shape), s.reshape(shape)) if shape else (d[0], s[0])
-
-
-def _solve(z, lc, knots):
-    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows)."""
-    n = z.shape[1]
-    y0, y1, y2 = knots[3:]
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        # each bin's knots in x = ln S: endless up to e2, the knee at e1, static above e0
-        e2, e1, e0 = y2 - z, y1 - z, y0 - z
-        n_l = np.exp(lc)
-
-        def log_terms(x):
-            """ln of each bin's damage at x on its sloped segment (the slope's ends held)."""
-            u = np.minimum(np.maximum(x - e1, y2 - y1), y0 - y1)
-            return lc - _sloped_log_cycles(u, knots)
-
-        def damage(x):
-            """D at x (left-continuous: a bin at one of its knots is on the side below)."""
-            terms = np.exp(log_terms(x)) * (x > e2)
-            static = x > e0
-            if static.any():
-                terms = np.where(static, n_l, terms)
-            return terms.sum(axis=0)
-
-        d0 = damage(np.zeros(n))
-        # the first stretch (knots[k-1], knots[k]] at whose end D >= 1 (k = 3 bins: beyond the
-        # last knot, every bin static)
-        sorted_knots = np.sort(np.concatenate([e2, e1, e0]).T, axis=1)
-        last = sorted_knots.shape[1]
-        rows = np.arange(n)
-        lo, hi = np.zeros(n, int), np.full(n, last)
-        while np.any(lo < hi):
-            mid = (lo + hi) // 2
-            reached = (damage(sorted_knots[rows, np.minimum(mid, last - 1)]) >= 1.0) | (mid == last)
-            searching = lo < hi
-            hi = np.where(searching & reached, mid, hi)
-            lo = np.where(searching & ~reached, mid + 1, lo)
-        end = np.where(hi < last, sorted_knots[rows, np.minimum(hi, last - 1)], np.inf)
-        start = np.where(hi > 0, sorted_knots[rows, np.maximum(hi - 1, 0)], -np.inf)
-        # on the stretch D = C + A1 exp(-a1 w) + A2 exp(-a2 w), w = x - its end: each bin on
-        # its segment there
-        ref = np.where(np.isfinite(end), end, 0.0)
-        sloped = (end > e2) & (end <= e0)
-        t = np.exp(np.maximum(log_terms(ref), -700.0))
-        c = np.where(end > e0, n_l, 0.0).sum(axis=0)
-        A1 = (t * (sloped & (end > e1))).sum(axis=0)
-        A2 = (t * (sloped & (end <= e1))).sum(axis=0)
-        a1, a2 = (np.broadcast_to(a, (n,)) for a in _slopes(knots))
-        w0 = start - ref
-        jumped = c + A1 * np.exp(-a1 * w0) + A2 * np.exp(-a2 * w0) >= 1.0  # at its start
-        left = np.log1p(-np.minimum(c, 1.0))  # ln(1 - C)
-        w = np.where(A1 > 0, (np.log(A1) - left) / a1, (np.log(A2) - left) / a2)
-        both = np.flatnonzero(~jumped & (A1 > 0) & (A2 > 0) & np.isfinite(end))
-        wb = np.zeros(both.size)
-        for _ in range(60):  # ln D is convex: Newton from the end comes down monotonically
-            if both.size == 0:
-                break
-            t1 = A1[both] * np.exp(-a1[both] * wb)
-            t2 = A2[both] * np.exp(-a2[both] * wb)
-            d = c[both] + t1 + t2
-            step = np.log(d) * d / (-a1[both] * t1 - a2[both] * t2)
-            wb = wb - step
-            w[both] = wb
-            more = np.abs(step) > 1e-15 * (1.0 + np.abs(wb + ref[both]))
-            both, wb = both[more], wb[more]
-        x = np.where(jumped, start, np.where(np.isfinite(end) | (c >= 1.0), ref + w, np.inf))
-        x = np.where(np.isnan(x), np.inf, x)
-    return d0, np.exp(np.clip(x, math.log(1e-4), math.log(1e4)))
-
-
-def check_spectrum(spectrum: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(torques, speeds, hours)`` as float arrays from a list of bins ``(torque N m, speed rpm,
-    hours)`` or three sequences, every value finite and > 0, or a GearError naming the bin."""
-    try:
-        arr = np.asarray(spectrum, dtype=float)
-    except (TypeError, ValueError):
-        raise GearError(
-            f"spectrum = {spectrum!r:.80}; valid is a list of bins (torque, speed, hours)"
-        ) from None
-    if arr.ndim != 2 or arr.shape[1] != 3 or not 1 <= arr.shape[0] <= MAX_BINS:
-        raise GearError(
-            f"spectrum of shape {arr.shape}; valid is a list of 1 ... {MAX_BINS} bins "
-            "(torque N m, speed rpm, hours)"
-        )
-    bad = ~(np.isfinite(arr) & (arr > 0.0))
-    if bad.any():
-        i, j = (int(k) for k in np.argwhere(bad)[0])
-        what = ("torque", "speed", "hours")[j]
-        raise GearError(f"spectrum bin {i}: {what} = {arr[i, j]!r}; valid is a finite number > 0")
-    return arr[:, 0].copy(), arr[:, 1].copy(), arr[:, 2].copy()
 
 
 def read_spectrum(path) -> list[tuple[float, float, float]]:
@@ -304,113 +103,6 @@ def read_spectrum(path) -> list[tuple[float, float, float]]:
     if not bins:
         raise GearError(f"spectrum = {str(path)!r} has no bins (torque, speed, hours per line)")
     return bins
-
-
-class SpectrumRatings(NamedTuple):
-    """Arrays returned by :func:`rate_spectrum`, one value per pair: Miner's sums ``D_H1, D_H2,
-    D_F1, D_F2``, the equivalent safeties ``S_H1 ... S_F2`` and the lives ``L_H1 ... L_F2``
-    (hours, :data:`LIFE_CAP` where endless)."""
-
-    D_H1: np.ndarray
-    D_H2: np.ndarray
-    D_F1: np.ndarray
-    D_F2: np.ndarray
-    S_H1: np.ndarray
-    S_H2: np.ndarray
-    S_F1: np.ndarray
-    S_F2: np.ndarray
-    L_H1: np.ndarray
-    L_H2: np.ndarray
-    L_F1: np.ndarray
-    L_F2: np.ndarray
-
-
-_PER_PAIR = ("x1", "x2", "pressure_angle", "helix_angle", "internal", "application_factor",
-             "quality", "roughness", "oil_viscosity", "load_sharing", "misalignment",
-             "tip_relief", "addendum", "root_roughness")  # fmt: skip
-_NEEDED = ("sigma_H1", "sigma_H2", "sigma_HP1", "sigma_HP2", "Z_NT1", "Z_NT2", "sigma_F1",
-           "sigma_F2", "sigma_FP1", "sigma_FP2", "Y_NT1", "Y_NT2", "N_L1", "N_L2")  # fmt: skip
-
-
-def _trailing(v):
-    """``v`` with a trailing axis for the bins when it is an array."""
-    return v if np.ndim(v) == 0 else np.asarray(v)[..., None]
-
-
-def rate_spectrum(z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: ArrayLike,
-                  spectrum: Any, **options: Any) -> SpectrumRatings:  # fmt: skip
-    """ISO 6336-6 ratings of many pairs under one load spectrum (arrays broadcast).
-
-    Parameters
-    ----------
-    z1, z2, module, face_width
-        The pairs, as for :func:`gears.rating.iso6336.rate_pairs`.
-    spectrum : list of (torque, speed, hours)
-        The bins: torque on gear 1 (N m), its speed relative to the carrier (rpm), hours.
-    **options
-        Passed to :func:`gears.rating.iso6336.rate_pairs` (``material``, ``x1``, ``quality``,
-        ``factors``, ``threads``, ...; not ``torque``, ``speed``, ``life``, ``fields``). The
-        per-pair arrays among them broadcast against the pairs; materials and per-gear pairs
-        are one for all.
-
-    Returns
-    -------
-    SpectrumRatings
-
-    Examples
-    --------
-    >>> r = rate_spectrum([19, 21], 61, 3, 30, [(150, 1450, 2000), (250, 1450, 200)])
-    >>> [round(float(s), 3) for s in r.S_H1], [round(float(d), 4) for d in r.D_H1]
-    ([1.122, 1.241], [0.0944, 0.0034])
-    """
-    for key in ("torque", "speed", "life", "fields", "errors"):
-        if key in options:
-            raise GearError(f"{key}= is not an option of rate_spectrum (the spectrum gives it)")
-    torques, speeds, hours = check_spectrum(spectrum)
-    extra = {k: _trailing(v) if k in _PER_PAIR else v for k, v in options.items()}
-    r = rate_pairs(_trailing(z1), _trailing(z2), _trailing(module), _trailing(face_width),
-                   torques, speeds, life=hours, fields=_NEEDED, errors="raise",
-                   **extra)  # fmt: skip
-    m1, m2 = _materials(options.get("material", "case-carburized"))
-    threads = options.get("threads")
-    threads = default_threads() if threads is None else threads
-    return _combine(r, m1.code, m2.code, float(hours.sum()), threads)
-
-
-def _materials(value):
-    mats = value if isinstance(value, tuple | list) else (value, value)
-    if len(mats) != 2:
-        raise GearError(f"material = {value!r}; give one material or a pair")
-    return material(mats[0]), material(mats[1])
-
-
-def _combine(r, code1: int, code2: int, total_hours: float, threads: int = 1) -> SpectrumRatings:
-    """Miner's sums, equivalent safeties and lives from the bins' stresses (bins on the last
-    axis of every field of ``r``); the four gears and modes on ``threads`` threads."""
-
-    def one(job):
-        mode, s, p, f, sym, i, code = job
-        stress = np.asarray(getattr(r, f"{s}{i}"), float)
-        strength = np.asarray(getattr(r, f"{p}{i}"), float) / np.asarray(
-            getattr(r, f"{f}{i}"), float
-        )
-        cycles = np.asarray(getattr(r, f"N_L{i}"), float)
-        d, safety = _damage_and_safety(stress, strength, cycles, code, mode)
-        with np.errstate(divide="ignore"):
-            life = np.where(d > 0, np.minimum(total_hours / d, LIFE_CAP), LIFE_CAP)
-        return {f"D_{sym}{i}": d, f"S_{sym}{i}": safety, f"L_{sym}{i}": life}
-
-    jobs = [(*mode, i, code) for mode in (("pitting", "sigma_H", "sigma_HP", "Z_NT", "H"),
-                                          ("bending", "sigma_F", "sigma_FP", "Y_NT", "F"))
-            for i, code in ((1, code1), (2, code2))]  # fmt: skip
-    out = {}
-    if threads > 1 and np.size(r.sigma_H1) >= _THREADED:
-        for part in _pool(threads).map(one, jobs):
-            out |= part
-    else:
-        for job in jobs:
-            out |= one(job)
-    return SpectrumRatings(**{k: v[()] if np.ndim(v) == 0 else v for k, v in out.items()})
 
 
 class _Bins(NamedTuple):

@@ -290,21 +290,26 @@ def _load(torque, speed, material_, face_width, life, min_safety, options):
         if widths[0] <= 0 or widths[-1] > 1e5:
             bad = widths[0] if widths[0] <= 0 else widths[-1]
             raise GearError(f"face_width = {bad:g}; valid is 0 < face_width <= 1e5 mm")
-    if torque is None:
+    spectrum = options.pop("spectrum", None)
+    if torque is None and spectrum is None:
         extra = [k for k, v in (("speed", speed), ("min_safety", min_safety)) if v is not None]
         extra += list(options)
         if extra:
             raise GearError(f"{', '.join(extra)} rate the candidates under a load: "
                             "give torque= (N m on gear 1) and speed= (rpm) too")  # fmt: skip
         return widths, None, density
-    if speed is None:
+    if speed is None and spectrum is None:
         raise GearError("torque= needs speed= (rpm of gear 1) to rate the candidates")
     if widths is None:
         raise GearError(
-            "torque= needs face_width=: a width in mm, a list of widths, or (low, high, step); "
-            "each candidate is rated at each width (the smallest that carries the load is kept)"
+            f"{'torque' if spectrum is None else 'spectrum'}= needs face_width=: a width in "
+            "mm, a list of widths, or (low, high, step); each candidate is rated at each width "
+            "(the smallest that carries the load is kept)"
         )
-    load = load_case(torque, speed, material_, life, min_safety, **options)
+    if spectrum is not None and life != 20000.0:
+        raise GearError("life= and spectrum= exclude each other: the spectrum gives the hours")
+    load = load_case(torque, speed, material_, None if spectrum is not None else life,
+                     min_safety, spectrum=spectrum, **options)  # fmt: skip
     return widths, load, density
 
 

@@ -134,7 +134,10 @@ def pairs(
     **rating_options
         Any other option of ``GearPair.rating`` (``quality``, ``application_factor``,
         ``oil_viscosity``, ``sigma_Hlim``, ... and factors by their ISO symbols, ``K_v=1.0``),
-        with a torque (:func:`gears.rating.sizing.load_case`).
+        with a torque (:func:`gears.rating.sizing.load_case`); ``spectrum=[(torque, speed,
+        hours), ...]`` instead of ``torque``, ``speed`` and ``life`` rates every candidate
+        under that load spectrum (ISO 6336-6: its equivalent safeties, as
+        ``GearPair.rating(spectrum=...)`` gives them; :func:`gears.rating.sizing.rate_spectrum`).
 
     Returns
     -------

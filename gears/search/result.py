@@ -86,11 +86,14 @@ class SearchResult:
     def rating(self, i: int = 0):
         """Row ``i`` rated on its own: ``pair(i).rating(...)`` under the search's load case
         (torque, speed, materials, life, options, the row's face width, ``root="standard"``,
-        the route the search rates by): the same safeties as the row's ``S_H1 ... S_F2``."""
+        the route the search rates by; a :class:`gears.rating.spectrum.SpectrumRating` for a
+        search under a spectrum): the same safeties as the row's ``S_H1 ... S_F2``."""
         load = self._space.load
         if load is None:
             raise GearError("this search had no torque=: rate a row with "
                             "result.pair(i).rating(torque, speed, ...)")  # fmt: skip
+        if load.spectrum is not None:  # the equivalent safeties of ISO 6336-6
+            return self.pair(i).rating(material=load.materials, **load.rating_options())
         return self.pair(i).rating(load.torque, load.speed, load.materials,
                                    **load.rating_options())  # fmt: skip
 

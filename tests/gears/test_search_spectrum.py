@@ -1,0 +1,84 @@
+"""search.pairs(spectrum=...): a design found for a load spectrum (ISO 6336-6, issue 30).
+
+Sources: each row re-rated alone by ``GearPair.rating(spectrum=...)`` (the one-mesh route,
+which shares no code with the search's array path but the formulas); a one-bin spectrum is the
+single load for its hours, so its search equals the search at that torque, speed and life.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from gears import search
+from gears.errors import GearError
+from gears.rating.sizing import load_case, rate
+
+BINS = [(40.0, 1500.0, 2000.0), (80.0, 1500.0, 200.0), (120.0, 1000.0, 20.0)]
+GRID = dict(ratio=3, module=2, teeth=(14, 80), shifts=(0.0, 0.6, 0.2), face_width=(10, 40, 5))
+MIN = {"pitting": 1.1, "bending": 1.5}
+
+
+def test_rows_rated_alone_meet_the_spectrum():
+    r = search.pairs(spectrum=BINS, min_safety=MIN, top=4, **GRID)
+    assert len(r) == 4
+    for i in range(len(r)):
+        row = r.table[i]
+        spec = r.rating(i)  # GearPair.rating(spectrum=...) of the row's pair and face width
+        assert min(spec.safety_pitting) >= 1.1 and min(spec.safety_bending) >= 1.5
+        assert float(row["S_H"]) == pytest.approx(min(spec.safety_pitting), rel=1e-9)
+        assert float(row["S_F"]) == pytest.approx(min(spec.safety_bending), rel=1e-9)
+
+
+def test_one_bin_is_the_search_at_that_load():
+    # a one-bin spectrum is its load for its hours (ISO 6336-6): the same rows and safeties
+    one = search.pairs(spectrum=[(80.0, 1500.0, 3000.0)], min_safety=MIN, top=5, **GRID)
+    load = search.pairs(torque=80.0, speed=1500.0, life=3000.0, min_safety=MIN, top=5, **GRID)
+    assert len(one) == len(load) == 5
+    for column in ("z1", "z2", "x1", "x2", "face_width"):
+        assert np.array_equal(one[column], load[column])
+    np.testing.assert_allclose(one["S_H"], load["S_H"], rtol=1e-9)
+    np.testing.assert_allclose(one["S_F"], load["S_F"], rtol=1e-9)
+
+
+def test_rate_under_a_spectrum_masks_pairs_without_rating():
+    load = load_case(None, None, spectrum=BINS)
+    assert load.torque == pytest.approx(120.0, rel=1e-15) and load.life == pytest.approx(2220.0)
+    r = rate(load, np.array([20, 8]), 50, 2.0, 20.0, x1=np.array([0.0, -0.5]))
+    assert r.valid.tolist() == [True, False]
+    assert r.S_H1[1] == 0.0 and r.S_H1[0] > 0.0
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        (dict(spectrum=BINS, torque=10.0, speed=100.0), "not both"),
+        (dict(spectrum=BINS, life=100.0), "life"),
+        (dict(spectrum=[(1.0, -2.0, 1.0)]), "speed"),
+    ],
+)
+def test_bad_spectrum_search(kwargs, match):
+    with pytest.raises(GearError, match=match):
+        search.pairs(**{**GRID, **kwargs})
+
+
+@settings(max_examples=8, deadline=None)
+@given(
+    st.lists(
+        st.tuples(st.floats(1e-2, 1e4), st.floats(1.0, 1e5), st.floats(1e-2, 1e6)),
+        min_size=1,
+        max_size=4,
+    )
+)
+def test_search_spectrum_property(bins):
+    # any spectrum: rows with finite positive safeties, or our own error
+    try:
+        r = search.pairs(ratio=2, module=2, teeth=(16, 40), shifts=(0.0, 0.4, 0.2),
+                         face_width=(10, 20, 10), spectrum=bins, top=3)  # fmt: skip
+    except GearError:
+        return
+    for name in ("S_H", "S_F"):
+        values = np.asarray(r[name], float)
+        assert all(math.isfinite(v) and v > 0 for v in values)
