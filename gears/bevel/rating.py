@@ -310,8 +310,11 @@ def bevel_rating(pair: Any, torque: float, speed: float, material: Any = "case-c
     options.setdefault("K_Hbeta", kh)
     options.setdefault("K_Fbeta", options["K_Hbeta"] * kf / kh)
     b = float(pair.face_width)
-    r6 = vp.rating(t / c1, n * c1, (m1, m2), life=life, face_width=b, contacts=tuple(contacts),
-                   **life_factors, **options)  # fmt: skip
+    try:  # the factors ISO 10300 shares with ISO 6336, on the virtual pair
+        r6 = vp.rating(t / c1, n * c1, (m1, m2), life=life, face_width=b,
+                       contacts=tuple(contacts), **life_factors, **options)  # fmt: skip
+    except GearError as exc:
+        raise GearError(f"the virtual cylindrical pair of this bevel pair: {exc}") from None
     eps = float(vp.contact_ratio)
     if not 1.0 < eps < 2.0:
         raise GearError(
