@@ -287,6 +287,17 @@ class Rating:
         ]
         marks = [any(n.startswith("pitting") for n in failed),
                  any(n.startswith("bending") for n in failed)]  # fmt: skip
+        if self.scuffing is not None:  # one value per mesh: shown in the gear 1 column
+            shown = (("scuffing S_B (flash)", "scuffing_flash", 0),
+                     ("scuffing S_intS (integral)", "scuffing_integral", 1))  # fmt: skip
+            for label, key, safety in shown:
+                rows.append((label, f"{self.safety_scuffing[safety]:.4f}", ""))
+                marks.append(key in failed)
+            t = self.temperatures
+            rows.append(("theta_B / theta_S [C]", f"{t['theta_B']:.1f}", f"{t['theta_S']:.1f}"))
+            rows.append(("theta_int / theta_intS [C]", f"{t['theta_int']:.1f}",
+                         f"{t['theta_intS']:.1f}"))  # fmt: skip
+            marks += [False, False]
         for name, value in self.stresses.items():
             both = value if isinstance(value, tuple) else (value, value)
             rows.append((f"{name} [MPa]", *(f"{v:.2f}" for v in both)))

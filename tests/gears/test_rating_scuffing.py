@@ -309,3 +309,28 @@ def test_blocks_equal_one_block(monkeypatch):
     parts = rate_scuffing(17, z2, 4, 40, 600, 3000, oil=OIL, roughness=0.6, errors="mask")
     for a, b in zip(whole, parts, strict=True):
         assert np.allclose(a, b, rtol=1e-12, equal_nan=True)
+
+
+def test_notebook_display_shows_the_scuffing_safeties():
+    r = _pair().rating(150, 1500, scuffing=OIL, roughness=0.5)
+    html = r._repr_html_()
+    assert "scuffing S_B (flash)" in html and f"{r.safety_scuffing[1]:.4f}" in html
+    assert "scuffing" not in _pair().rating(150, 1500)._repr_html_()
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    z1=st.integers(8, 40), z2=st.integers(8, 120), helix=st.sampled_from([0.0, 12.0, 25.0]),
+    torque=st.floats(1.0, 3000.0), speed=st.floats(1.0, 2e4), internal=st.booleans(),
+)  # fmt: skip
+def test_property_pair_rating_with_an_oil(z1, z2, helix, torque, speed, internal):
+    # GearPair.rating(scuffing=...): finite safeties and temperatures, or the library's error
+    try:
+        g1 = Gear(z1, 2, helix_angle=helix, face_width=20)
+        g2 = Gear(z2, 2, helix_angle=helix if internal else -helix, internal=internal,
+                  face_width=20)  # fmt: skip
+        r = GearPair(g1, g2).rating(torque, speed, scuffing=OIL)
+    except GearError:
+        return
+    assert all(math.isfinite(s) and s > 0 for s in r.safety_scuffing)
+    assert all(math.isfinite(v) for v in r.temperatures.values())
