@@ -170,8 +170,20 @@ class SpectrumRating:
     def pair(self):
         return self.bins[0].pair
 
-    def check(self, min_pitting: float = 1.0, min_bending: float = 1.4) -> Report:
-        """Findings ``pitting_1 ... bending_2``: each equivalent safety against its minimum."""
+    @property
+    def safety_scuffing(self) -> tuple[float, float] | None:
+        """The lowest ``(S_B, S_intS)`` over the bins when an oil was given (``scuffing=``):
+        scuffing is no fatigue, the worst bin decides; None without an oil."""
+        found = [b.safety_scuffing for b in self.bins if b.safety_scuffing is not None]
+        if not found:
+            return None
+        return min(s[0] for s in found), min(s[1] for s in found)
+
+    def check(self, min_pitting: float = 1.0, min_bending: float = 1.4,
+              min_scuffing: tuple[float, float] | None = None) -> Report:  # fmt: skip
+        """Findings ``pitting_1 ... bending_2``: each equivalent safety against its minimum;
+        with an oil, ``scuffing_flash`` and ``scuffing_integral`` of the worst bin against
+        ``min_scuffing`` (default: :meth:`gears.rating.capacity.Rating.check`'s)."""
         for name, minimum in (("min_pitting", min_pitting), ("min_bending", min_bending)):
             if (isinstance(minimum, bool) or not isinstance(minimum, int | float)
                     or not (math.isfinite(minimum) and minimum >= 0)):  # fmt: skip
@@ -188,6 +200,14 @@ class SpectrumRating:
                     f"{sym}{i + 1} = {safeties[i]:.3f} (spectrum, ISO 6336-6) vs required "
                     f"{minimum:g}; Miner's sum D = {d:.4g}", unit="",
                 ))  # fmt: skip
+        if self.safety_scuffing is not None:
+            oiled = [(i, b) for i, b in enumerate(self.bins) if b.scuffing is not None]
+            for name, k in (("scuffing_flash", 0), ("scuffing_integral", 1)):
+                i, worst = min(oiled, key=lambda ib: ib[1].safety_scuffing[k])
+                given = {} if min_scuffing is None else {"min_scuffing": min_scuffing}
+                f = worst.check(**given)[name]
+                out.append(Finding(name, f.margin, f"{f.message}; bin {i + 1} of the spectrum",
+                                   unit=""))  # fmt: skip
         return Report(out)
 
     def _rows(self) -> list[tuple[str, str, str]]:

@@ -334,3 +334,15 @@ def test_property_pair_rating_with_an_oil(z1, z2, helix, torque, speed, internal
         return
     assert all(math.isfinite(s) and s > 0 for s in r.safety_scuffing)
     assert all(math.isfinite(v) for v in r.temperatures.values())
+
+
+def test_spectrum_worst_bin_decides():
+    pair = _pair()
+    duty = [(100, 1500, 3000), (400, 1500, 100)]
+    r = pair.rating(spectrum=duty, scuffing=OIL, roughness=0.5)
+    peak = pair.rating(400, 1500, scuffing=OIL, roughness=0.5, life=100)
+    assert r.safety_scuffing == pytest.approx(peak.safety_scuffing, rel=1e-12)
+    rep = r.check(min_scuffing=(1.0, 1.0))
+    assert rep["scuffing_flash"].margin == pytest.approx(peak.safety_scuffing[0] - 1.0)
+    assert "bin 2" in rep["scuffing_flash"].message
+    assert pair.rating(spectrum=duty).safety_scuffing is None

@@ -136,7 +136,7 @@ def run(args: argparse.Namespace) -> int:
         if (x1 or x2) and "--shift" not in str(exc) and "x1" not in str(exc):
             raise GearError(f"{exc} (with --shift {x1:g} {x2:g})") from None
         raise
-    if oil is not None and args.spectrum is None:
+    if oil is not None:
         min_scuffing = MIN_SCUFFING if args.min_scuffing is None else tuple(args.min_scuffing)
         report = rating.check(*rating_minimums(args), min_scuffing=min_scuffing)
     else:
