@@ -38,6 +38,7 @@ _getattr, __dir__, __all__ = attach(
         "Modification": "gears.contact.modification",
         "ModificationSearch": "gears.contact.result",
         "NonCircularPair": "gears.noncircular.pair",
+        "Oil": "gears.rating.scuffing",
         "pair_geometry": "gears.meshing",
         "pair_margins": "gears.checks",
         "PairForces": "gears.forces",
