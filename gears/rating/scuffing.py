@@ -21,6 +21,10 @@ rho_1C = r_b1 tan alpha_wt (rho_1 = rho_1C (1 + Gamma)): Gamma_A at the start of
 (:func:`load_sharing`), the transverse unit load w_Bt = K_A K_gamma K_v K_Hbeta K_Halpha F_t / b,
 the pitch-line speed v and the centre distance a.
 
+The documents' text was not at hand when this module was written: the formulas are the methods
+as generally known, checked by the tests for consistency with Blok's flash temperature and with
+the FZG test the scuffing temperatures come from (tests/gears/test_rating_scuffing.py).
+
 Choices made here where the documents leave one or where their text was not at hand (each says
 so where it is used): the approach factor X_J is 1 (the driven gear's approach zone is not made
 hotter) and X_Gamma is that of unmodified flanks (tip relief is not credited): both err towards
