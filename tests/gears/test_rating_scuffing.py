@@ -45,37 +45,43 @@ def test_steel_thermoelastic_factor():
 
 
 @pytest.mark.parametrize("internal", [False, True])
+@pytest.mark.parametrize("helix,spread", [(0.0, 0.0), (0.0, 2.0), (20.0, 0.0), (20.0, 2.0)])
 @pytest.mark.parametrize("gamma", [-0.6, -0.2, 0.3, 0.8])
-def test_blok_flash_temperature(gamma, internal):
+def test_blok_flash_temperature(gamma, helix, spread, internal):
     """Independent route: Blok's flash temperature of a band contact between two steel bodies,
-    theta = 1.11 mu w_n |sqrt(v1) - sqrt(v2)| / (B_M sqrt(2 b_H)), with the Hertz half-width
-    b_H = sqrt(8 w_n rho_red / (pi E_r)), the normal unit load w_n = w_Bt / cos alpha_t and the
-    rolling speeds v_i = omega_i rho_i, against the closed form mu X_M X_alphabeta X_BE
-    (X_Gamma w_Bt)^0.75 v^0.5 / a^0.25 of a spur pair (v the reference pitch-line speed).
-    The standard's constants 0.51 x 1.22 round 1.11 / sqrt(2) x (pi/8)^0.25: 0.2 %."""
-    z1, z2, m, alpha, n1 = 20, 50, 4.0, math.radians(20), 1500.0
+    theta = 1.11 mu w_n |sqrt(v1) - sqrt(v2)| / (B_M sqrt(2 b_H)), in the normal section: the
+    Hertz half-width b_H = sqrt(8 w_n rho_n / (pi E_r)) with rho_n = rho_red / cos beta_b, the
+    normal unit load w_n = w_Bt / cos alpha_t (F_bn over the contact line b / cos beta_b), the
+    rolling speeds v_i = omega_i rho_i at the working pressure angle, against the closed form
+    mu X_M X_alphabeta X_BE (X_Gamma w_Bt)^0.75 v^0.5 / a^0.25 with v the reference pitch-line
+    speed (spur and helical, at and beyond the reference centre distance). The standard's
+    constants 0.51 x 1.22 round 1.11 / sqrt(2) x (pi/8)^0.25: 0.2 %."""
+    z1, z2, m, n1 = 20, 50, 4.0, 1500.0
     s = -1 if internal else 1
-    a = m * (z2 + s * z1) / 2  # at the reference centre distance: alpha_wt = alpha
+    beta = math.radians(helix)
+    alpha_t = math.atan(math.tan(math.radians(20)) / math.cos(beta))
+    beta_b = math.asin(math.sin(beta) * math.cos(math.radians(20)))
+    alpha_wt = alpha_t + math.radians(spread)
+    d1 = z1 * m / math.cos(beta)
+    r_b1 = d1 / 2 * math.cos(alpha_t)
+    r_b2 = z2 / z1 * r_b1
+    a = (r_b2 + s * r_b1) / math.cos(alpha_wt)
     mu, w_bt, e, nu, b_m = 0.06, 400.0, 206000.0, 0.3, 13.795
-    d1 = z1 * m
-    r_b1 = d1 / 2 * math.cos(alpha)
-    rho_1c = r_b1 * math.tan(alpha)
+    rho_1c = r_b1 * math.tan(alpha_wt)
     omega1 = n1 * math.pi / 30.0
     omega2 = omega1 * z1 / z2
     rho1 = rho_1c * (1 + gamma)
-    rho2 = z2 / z1 * rho_1c - s * rho_1c * gamma  # concave ring flank: rho_2C + rho_1C Gamma
-    v1 = omega1 * rho1 * 1e-3  # m/s
-    v2 = omega2 * rho2 * 1e-3
-    rho_red = rho1 * rho2 / (rho2 + s * rho1)
+    rho2 = r_b2 * math.tan(alpha_wt) - s * rho_1c * gamma  # a ring's concave flank grows
+    v1 = omega1 * rho1  # mm/s, the units of B_M: N/(mm s^0.5 K)
+    v2 = omega2 * rho2
+    rho_n = rho1 * rho2 / (rho2 + s * rho1) / math.cos(beta_b)
     e_r = e / (1 - nu**2)
-    w_n = w_bt / math.cos(alpha)
-    b_h = math.sqrt(8 * w_n * rho_red / (math.pi * e_r))  # mm
-    # speeds in mm/s for the units of B_M: N/(mm s^0.5 K)
-    blok = 1.11 * mu * w_n * abs(math.sqrt(v1 * 1e3) - math.sqrt(v2 * 1e3))
-    blok /= b_m * math.sqrt(2 * b_h)
+    w_n = w_bt / math.cos(alpha_t)
+    b_h = math.sqrt(8 * w_n * rho_n / (math.pi * e_r))  # mm
+    blok = 1.11 * mu * w_n * abs(math.sqrt(v1) - math.sqrt(v2)) / (b_m * math.sqrt(2 * b_h))
     v = math.pi * d1 * n1 / 60000.0
     x_m = thermoelastic_factor(e, nu, e, nu)
-    x_ab = angle_factor(20, 20, 20, 0)
+    x_ab = angle_factor(math.degrees(alpha_wt), 20, math.degrees(alpha_t), helix)
     closed = flash_temperature(mu, x_m, x_ab, gamma, s * z2 / z1, 1.0, w_bt, v, a)
     assert float(closed) == pytest.approx(blok, rel=2.5e-3)
 
