@@ -352,3 +352,13 @@ def test_spectrum_worst_bin_decides():
     assert rep["scuffing_flash"].margin == pytest.approx(peak.safety_scuffing[0] - 1.0)
     assert "bin 2" in rep["scuffing_flash"].message
     assert pair.rating(spectrum=duty).safety_scuffing is None
+
+
+@pytest.mark.parametrize("internal", [False, True])
+def test_path_ends_span_the_contact_ratio(internal):
+    # (Gamma_E - Gamma_A) rho_1C / p_bt is the transverse contact ratio of ISO 21771
+    pair = _pair(70, internal)
+    r = pair.rating(150, 1500, scuffing=OIL)
+    pitch = 2 * math.pi / (20 * math.tan(math.radians(pair.working_pressure_angle)))
+    span = (float(r.scuffing.gamma_E) - float(r.scuffing.gamma_A)) / pitch
+    assert span == pytest.approx(pair.contact_ratio, rel=1e-12)
