@@ -70,11 +70,16 @@ def _slopes(knots):
     return (k1 - k0) / (y1 - y0), (k2 - k1) / (y2 - y1)
 
 
+def _hinge(u, a1, a2):
+    """ln N_f - ln N_knee on the sloped part of the S-N curve: a2 u below the knee, a1 u above
+    it (``u`` = ln(sigma / sigma_inf) - y1, the log-log lines through the knots)."""
+    return a2 * u + (a1 - a2) * np.maximum(u, 0.0)
+
+
 def _sloped_log_cycles(u, knots):
     """ln N_f on the sloped part of the S-N curve, ``u`` = ln(sigma / sigma_inf) - y1 from its
-    knee (the log-log lines through the knots)."""
-    a1, a2 = _slopes(knots)
-    return knots[1] + a2 * np.minimum(u, 0.0) + a1 * np.maximum(u, 0.0)
+    knee."""
+    return knots[1] + _hinge(u, *_slopes(knots))
 
 
 def _log_cycles(z, knots):
@@ -170,11 +175,13 @@ def _solve(z, lc, knots):
         # each bin's knots in x = ln S: endless up to e2, the knee at e1, static above e0
         e2, e1, e0 = y2 - z, y1 - z, y0 - z
         n_l = np.exp(lc)
+        above_knee = lc - knots[1]  # ln N_L - ln N_f at the knee
+        a1, a2 = _slopes(knots)
 
         def log_terms(x):
-            """ln of each bin's damage at x on its sloped segment (the slope's ends held)."""
-            u = np.minimum(np.maximum(x - e1, y2 - y1), y0 - y1)
-            return lc - _sloped_log_cycles(u, knots)
+            """ln of each bin's damage at x were it on its sloped segment (held above e^-700:
+            the masked terms stay out of exp's slow underflow)."""
+            return np.maximum(above_knee - _hinge(x - e1, a1, a2), -700.0)
 
         def damage(x):
             """D at x (left-continuous: a bin at one of its knots is on the side below)."""
@@ -203,11 +210,11 @@ def _solve(z, lc, knots):
         # its segment there
         ref = np.where(np.isfinite(end), end, 0.0)
         sloped = (end > e2) & (end <= e0)
-        t = np.exp(np.maximum(log_terms(ref), -700.0))
+        t = np.exp(log_terms(ref))
         c = np.where(end > e0, n_l, 0.0).sum(axis=0)
         A1 = (t * (sloped & (end > e1))).sum(axis=0)
         A2 = (t * (sloped & (end <= e1))).sum(axis=0)
-        a1, a2 = (np.broadcast_to(a, (n,)) for a in _slopes(knots))
+        a1, a2 = (np.broadcast_to(a, (n,)) for a in (a1, a2))
         w0 = start - ref
         jumped = c + A1 * np.exp(-a1 * w0) + A2 * np.exp(-a2 * w0) >= 1.0  # at its start
         left = np.log1p(-np.minimum(c, 1.0))  # ln(1 - C)
