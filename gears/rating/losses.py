@@ -221,9 +221,15 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
                 x2: ArrayLike = 0.0, pressure_angle: ArrayLike = 20.0,
                 helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
                 roughness: ArrayLike = 1.0, viscosity: ArrayLike = 30.0,
-                lubricant: str | float = "mineral") -> MeshLosses:  # fmt: skip
+                lubricant: str | float = "mineral", *, addendum: ArrayLike = 1.0,
+                tip_shortening: ArrayLike = True, errors: str = "raise") -> MeshLosses:  # fmt: skip
     """The mesh loss of many pairs at once, from their tooth data (ISO 21771 geometry by
-    :func:`gears.meshing.pair_geometry`, tips shortened as there; arrays broadcast).
+    :func:`gears.meshing.pair_geometry` with the basic rack's ``addendum`` and
+    ``tip_shortening`` as there; arrays broadcast).
+
+    With ``errors="mask"`` a pair whose loss the friction equation does not give (a loss
+    reaching the power, no continuous mesh) gets efficiency 0 and its whole power as loss
+    instead of an error (a search ranks it last).
 
     Raises
     ------
@@ -240,8 +246,11 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
     for name, value in (("torque", torque), ("speed", speed), ("face_width", face_width),
                         ("roughness", roughness), ("viscosity", viscosity)):  # fmt: skip
         _positive(name, value)
+    if errors not in ("raise", "mask"):
+        raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
     x_l = lubricant_factor(lubricant)
-    g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal)
+    g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal, addendum,
+                      tip_shortening)  # fmt: skip
     s = np.where(np.asarray(internal, bool), -1.0, 1.0)
     beta = np.radians(helix_angle)
     at = np.arctan(np.tan(np.radians(pressure_angle)) / np.cos(beta))
@@ -253,9 +262,19 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
     pb = np.pi * mt * np.cos(at)
     u_c = rb1 * tw
     beta_b = np.degrees(np.arcsin(np.sin(beta) * np.cos(np.radians(pressure_angle))))
+    e1, e2 = (u_e - u_c) / pb, (u_c - u_a) / pb
+    if errors == "mask":  # no continuous mesh: a stand-in path (eps = 1), masked below
+        eps = e1 + e2
+        no_mesh = ~(np.isfinite(eps) & (eps >= 1.0 - 1e-12) & (eps <= MAX_CONTACT_RATIO))
+        e1, e2 = np.where(no_mesh, 0.5, e1), np.where(no_mesh, 0.5, e2)
     out = mesh_losses(torque, speed, z1, np.asarray(z2, float) / np.asarray(z1, float), rb1,
-                      g.working_pressure_angle, (u_e - u_c) / pb, (u_c - u_a) / pb, face_width,
-                      beta_b, internal, roughness, viscosity, x_l)  # fmt: skip
+                      g.working_pressure_angle, e1, e2, face_width, beta_b, internal, roughness,
+                      viscosity, x_l)  # fmt: skip
+    if errors == "mask":
+        bad = ~(np.isfinite(out.efficiency) & (out.efficiency > 0.0)) | no_mesh
+        power = np.asarray(torque, float) * np.asarray(speed, float) * np.pi / 30.0
+        return MeshLosses(*(np.where(bad, fill, v)[()] for v, fill in
+                            zip(out, (np.nan, np.nan, 0.0, power), strict=True)))  # fmt: skip
     return _checked(out)
 
 

@@ -34,6 +34,7 @@ from gears.geometry import reference_diameter, root_diameter
 from gears.meshing import default_threads
 from gears.rating._arrays import shown
 from gears.rating.iso6336 import FACTORS, PairRatings, rate_pairs
+from gears.rating.losses import pair_losses
 from gears.rating.materials import Material, material
 from gears.rating.miner import SpectrumRatings, _combine, check_spectrum
 
@@ -123,6 +124,30 @@ class Load:
             out["life"] = self.life
         out["root"] = "standard"
         return out
+
+    def efficiency(self, z1, z2, module, face_width, x1=0.0, x2=0.0, pressure_angle=20.0,
+                   helix_angle=0.0, internal=False, rack=None,
+                   tip_shortening=True) -> np.ndarray:  # fmt: skip
+        """The mesh efficiency of rack-cut pairs under this load (ISO/TR 14179-2,
+        :func:`gears.rating.losses.pair_losses` with ``GearPair.efficiency``'s oil and the
+        load's flank roughness; arrays broadcast). Under a spectrum, the energy's: one less
+        the energy lost over the energy transmitted, sum(P_i h_i (1 - eta_i)) / sum(P_i h_i).
+        A pair the friction equation does not apply to gets 0."""
+        if np.size(z1) == 0:  # no pairs
+            return np.zeros(0)
+        bins = self.spectrum if self.spectrum is not None else ((self.torque, self.speed, 1.0),)
+        torques, speeds, hours = (np.array(v, float) for v in zip(*bins, strict=True))
+        columns = [np.asarray(v)[..., None] if np.ndim(v) else v
+                   for v in (z1, z2, module, face_width, x1, x2)]  # fmt: skip
+        geometry = dict(pressure_angle=pressure_angle, helix_angle=helix_angle,
+                        internal=internal, tip_shortening=tip_shortening)  # fmt: skip
+        if rack is not None:
+            geometry["addendum"] = rack.addendum
+        r = pair_losses(torques, speeds, *columns, roughness=self.options.get("roughness", 1.0),
+                        errors="mask", **geometry)  # fmt: skip
+        energy = torques * speeds * hours  # proportional to P_i h_i
+        lost = np.sum(np.where(r.efficiency > 0.0, 1.0 - r.efficiency, 1.0) * energy, axis=-1)
+        return np.asarray(1.0 - lost / energy.sum())[()]
 
     def meets(self, r: PairRatings) -> np.ndarray:
         """True where both gears meet both minimum safeties (a pair with no rating fails)."""

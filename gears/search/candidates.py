@@ -39,8 +39,9 @@ _INTERNAL = (
 _SPLITS = ("proportional", "equal_sliding", "keep")
 #: columns of a search with a face width (and a load): b, the gears' volume (mm^3) and mass (kg)
 _SIZE = ("face_width", "volume", "mass")
-#: and with a torque: each gear's safety against pitting and bending, and the smaller of each
-_SAFETY = ("S_H1", "S_H2", "S_F1", "S_F2", "S_H", "S_F")
+#: and with a torque: each gear's safety against pitting and bending, the smaller of each, and
+#: the mesh efficiency at the load (ISO/TR 14179-2; a spectrum's by energy)
+_SAFETY = ("S_H1", "S_H2", "S_F1", "S_F2", "S_H", "S_F", "mesh_efficiency")
 
 
 @dataclass(frozen=True)

@@ -196,6 +196,10 @@ def _size_rows(space: _Space, cols: dict[str, np.ndarray], m: float, beta: float
         cols.update(safety)
         cols["S_H"] = np.minimum(safety["S_H1"], safety["S_H2"])
         cols["S_F"] = np.minimum(safety["S_F1"], safety["S_F2"])
+        with np.errstate(all="ignore"):
+            cols["mesh_efficiency"] = np.broadcast_to(load.efficiency(
+                cols["z1"], cols["z2"], m, b, cols["x1"], cols["x2"], **geometry
+            ), b.shape)  # fmt: skip
     return cols
 
 

@@ -84,7 +84,8 @@ def pairs(
         order of the first objective, when ``top`` is given). Default ``"sliding"``, or
         ``"volume"`` with a face width. With a face width also ``"volume"`` (both gears'
         material, mm^3: :func:`gears.rating.sizing.pair_volume`) and ``"mass"`` (kg), with a torque
-        ``"-S_H"`` and ``"-S_F"`` (the smaller safety of the two gears, maximised).
+        ``"-S_H"`` and ``"-S_F"`` (the smaller safety of the two gears, maximised) and
+        ``"-mesh_efficiency"`` (the mesh loss at the load, ISO/TR 14179-2, maximised).
     top : int or None
         Rows returned; None returns every feasible row (use ``to_parquet`` for large results,
         or ``dataset=``).
@@ -93,7 +94,10 @@ def pairs(
         function ``GearPair.rating`` calls) with this torque on gear 1 (N m) at this speed
         (rpm), and keep only those that meet ``min_safety``. The result gains the columns
         ``S_H1, S_H2, S_F1, S_F2`` (each gear's safety against pitting and bending) and
-        ``S_H``, ``S_F`` (the smaller of each); ``result.rating(i)`` rates row i on its own.
+        ``S_H``, ``S_F`` (the smaller of each) and ``mesh_efficiency`` (1 - mu_mz H_V at the
+        load by ISO/TR 14179-2, as ``GearPair.efficiency(torque, speed)`` with its default oil
+        and the load's ``roughness``; under a spectrum the energy's, sum(P_i h_i eta_i) /
+        sum(P_i h_i)); ``result.rating(i)`` rates row i on its own.
     material : name, Material or pair
         ISO 6336-5 material of both gears or ``(gear 1, gear 2)`` (also the density of
         ``"mass"``).

@@ -82,3 +82,44 @@ def test_search_spectrum_property(bins):
     for name in ("S_H", "S_F"):
         values = np.asarray(r[name], float)
         assert all(math.isfinite(v) and v > 0 for v in values)
+
+
+def test_mesh_efficiency_column_is_the_pairs_efficiency():
+    # the column is GearPair.efficiency at the load (ISO/TR 14179-2, the one-pair route), and
+    # "-mesh_efficiency" ranks by it: the first row is the best of every feasible row
+    kw = dict(torque=60.0, speed=1500.0, min_safety=MIN, **GRID)
+    every = search.pairs(top=None, **kw)
+    best = search.pairs(top=3, objective="-mesh_efficiency", **kw)
+    assert float(best["mesh_efficiency"][0]) == pytest.approx(
+        float(np.max(every["mesh_efficiency"])), rel=1e-12
+    )
+    assert np.all(np.diff(best["mesh_efficiency"]) <= 0.0)
+    for i in range(len(best)):
+        b = float(best["face_width"][i])
+        eta = best.pair(i).efficiency(60.0, 1500.0, face_width=b).efficiency
+        assert float(best["mesh_efficiency"][i]) == pytest.approx(eta, rel=1e-12)
+
+
+def test_mesh_efficiency_of_a_spectrum_is_the_energys():
+    # under a spectrum: one less the energy lost over the energy transmitted, by hand from
+    # GearPair.efficiency at each bin (P_i = T_i n_i pi / 30, hours h_i)
+    r = search.pairs(spectrum=BINS, min_safety=MIN, top=2, **GRID)
+    for i in range(len(r)):
+        b = float(r["face_width"][i])
+        pair = r.pair(i)
+        lost = sum(t * n * h * (1.0 - pair.efficiency(t, n, face_width=b).efficiency)
+                   for t, n, h in BINS)  # fmt: skip
+        total = sum(t * n * h for t, n, h in BINS)
+        assert float(r["mesh_efficiency"][i]) == pytest.approx(1.0 - lost / total, rel=1e-12)
+
+
+def test_pair_losses_masked_where_the_friction_equation_fails():
+    from gears.rating.losses import pair_losses
+
+    with pytest.raises(GearError, match="efficiency"):
+        pair_losses(100.0, [1500.0, 1e-12], 20, 50, 3.0, 30.0)
+    r = pair_losses(100.0, [1500.0, 1e-12], 20, 50, 3.0, 30.0, errors="mask")
+    assert r.efficiency[0] > 0.98 and r.efficiency[1] == 0.0
+    assert r.power_loss[1] == pytest.approx(100.0 * 1e-12 * math.pi / 30.0, rel=1e-12)
+    with pytest.raises(GearError, match="errors"):
+        pair_losses(100.0, 1500.0, 20, 50, 3.0, 30.0, errors="ignore")
