@@ -117,3 +117,22 @@ def test_rate_against_scuffing(capsys):
         assert code == 2 and out == "" and named in err, err
     code, out, err = _run(capsys, *argv[:-4])
     assert code == 2 and "--fzg-stage" in err, err
+
+
+def test_planetary_rates_every_mesh_against_scuffing(capsys):
+    from gears.rating.scuffing import Oil
+
+    argv = ["planetary", "21", "36", "93", "--planets", "3", "--module", "2", "--face-width", "20",
+            "--torque", "120", "--speed", "1500", "--fzg-stage", "10", "--oil-temperature", "70",
+            "--oil-viscosity", "150", "--oil-viscosity-100", "15"]  # fmt: skip
+    code, out, _ = _run(capsys, *argv)
+    oil = Oil(10, 70, 150, 15)
+    api = Planetary(21, 36, 93, n_planets=3, module=2).rating(
+        120, 1500, face_width=20, scuffing=oil, oil_viscosity=150
+    )
+    for name, r in api.items():
+        row = _row(out, name)
+        assert row[-2:] == pytest.approx(r.safety_scuffing, abs=1e-3)
+    assert "sun-planet.scuffing_flash" in out
+    code, out, err = _run(capsys, "planetary", "21", "36", "93", "--fzg-stage", "10")
+    assert code == 2 and "--fzg-stage" in err

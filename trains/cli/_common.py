@@ -680,6 +680,86 @@ def bevel_rating_options(args: argparse.Namespace) -> dict:
     return {**rating_options(args), **own}
 
 
+#: The scuffing options' library names in error messages -> the options (``rate``, ``planetary``).
+SCUFFING_NAMES = {
+    "fzg_stage": "--fzg-stage", "oil temperature": "--oil-temperature",
+    "oil viscosity_100": "--oil-viscosity-100", "oil viscosity_40": "--oil-viscosity",
+    "oil base": "--oil", "oil density": "--oil-density", "welding_factor": "--welding-factor",
+    "min_scuffing": "--min-scuffing",
+}  # fmt: skip
+
+
+def scuffing_arguments(parser: argparse.ArgumentParser) -> None:
+    """The oil of a scuffing rating (ISO/TS 6336-20/-21): ``--fzg-stage``, ``--oil-temperature``,
+    ``--oil-viscosity-100`` (``--oil-viscosity`` is its nu_40), ``--oil``, ``--oil-density``,
+    ``--spray``, ``--welding-factor`` and ``--min-scuffing`` (:func:`scuffing_options`)."""
+    group = parser.add_argument_group(
+        "scuffing (ISO/TS 6336-20 flash temperature, ISO/TS 6336-21 integral temperature)"
+    )
+    group.add_argument(
+        "--fzg-stage", type=int, default=None, metavar="STAGE",
+        help="the oil's failure load stage in the FZG test A/8.3/90 (ISO 14635-1), 1 ... 12: "
+        "rate against scuffing",
+    )  # fmt: skip
+    group.add_argument(
+        "--oil-temperature", type=float, default=None, metavar="C",
+        help="oil temperature before the mesh, deg C (needed with --fzg-stage)",
+    )  # fmt: skip
+    group.add_argument(
+        "--oil-viscosity-100", type=float, default=None, metavar="NU100",
+        help="the oil's kinematic viscosity at 100 deg C, mm^2/s (needed with --fzg-stage; "
+        "--oil-viscosity is its nu_40)",
+    )  # fmt: skip
+    group.add_argument(
+        "--oil", default="mineral", metavar="BASE",
+        help="base oil: mineral, polyalphaolefin, polyglycol, polyglycol-water-soluble, "
+        "traction, phosphate-ester (default mineral)",
+    )  # fmt: skip
+    group.add_argument(
+        "--oil-density", type=float, default=890.0, metavar="KG_M3",
+        help="the oil's density at 15 deg C, kg/m^3 (default 890.0)",
+    )  # fmt: skip
+    group.add_argument(
+        "--spray", action="store_true", help="spray lubrication (default: dip lubrication)"
+    )
+    group.add_argument(
+        "--welding-factor", type=float, default=1.0, metavar="X_W",
+        help="welding factor X_W of the flanks (default 1.0, case-carburized)",
+    )  # fmt: skip
+    group.add_argument(
+        "--min-scuffing", type=float, nargs=2, default=None, metavar=("S_B", "S_INTS"),
+        help="minimum scuffing safeties, flash and integral (default 2.0 1.8)",
+    )  # fmt: skip
+
+
+def scuffing_options(args: argparse.Namespace, nu40: float) -> dict:
+    """``{"scuffing": Oil, "welding_factor": X_W}`` of the scuffing options (the oil's nu_40
+    ``nu40``), or ``{}`` without ``--fzg-stage``; an oil option without it, or ``--fzg-stage``
+    without the oil's temperature and nu_100, is a GearError naming the option."""
+    from gears.errors import GearError
+    from gears.rating.scuffing import Oil
+
+    needed = ("oil_temperature", "oil_viscosity_100")
+    if args.fzg_stage is None:
+        for option in needed:
+            if getattr(args, option) is not None:
+                raise GearError(f"--{option.replace('_', '-')} needs --fzg-stage STAGE")
+        return {}
+    for option in needed:
+        if getattr(args, option) is None:
+            raise GearError(f"--fzg-stage needs --{option.replace('_', '-')}")
+    lubrication = "spray" if args.spray else "dip"
+    oil = Oil(args.fzg_stage, args.oil_temperature, nu40, args.oil_viscosity_100,
+              args.oil_density, args.oil, lubrication)  # fmt: skip
+    return {"scuffing": oil, "welding_factor": args.welding_factor}
+
+
+def scuffing_minimum(args: argparse.Namespace) -> dict:
+    """``{"min_scuffing": (S_B, S_intS)}`` when ``--min-scuffing`` was given, else ``{}``
+    (``Rating.check``'s defaults)."""
+    return {} if args.min_scuffing is None else {"min_scuffing": tuple(args.min_scuffing)}
+
+
 # --- sizing for a load and running on a Dask cluster (search, synthesize --stages) -------------
 
 #: seconds --connect-timeout waits by default (Dask's own default is 30 s)

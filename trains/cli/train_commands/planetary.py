@@ -24,6 +24,7 @@ from trains.cli._common import (
     OK,
     RATING_NAMES,
     SCENE_FORMATS,
+    SCUFFING_NAMES,
     integer,
     non_negative,
     output_file,
@@ -32,6 +33,9 @@ from trains.cli._common import (
     rating_given,
     rating_minimums,
     rating_options,
+    scuffing_arguments,
+    scuffing_minimum,
+    scuffing_options,
     write_scene,
 )
 
@@ -53,6 +57,7 @@ NAMES = {
     "face_width": "--face-width",
     "tolerance": "--tolerance",
     **RATING_NAMES,
+    **SCUFFING_NAMES,
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
 
@@ -103,6 +108,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="mesh tolerance of --scene and --animate, mm (default 0.02)",
     )  # fmt: skip
     rating_arguments(parser, required=False)
+    scuffing_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -129,6 +135,9 @@ def run(args: argparse.Namespace) -> int:
     if args.torque is None and args.speed is None and rating_given(args):
         raise TrainError(f"{rating_given(args)[0]} is a rating condition: it applies with "
                          "--torque and --speed only")  # fmt: skip
+    if args.torque is None and args.speed is None and args.fzg_stage is not None:
+        raise TrainError("--fzg-stage is a rating condition (scuffing): it applies with --torque "
+                         "and --speed only")  # fmt: skip
     if args.tolerance is not None and args.scene is None and args.animate is None:
         raise TrainError("--tolerance is the mesh tolerance of --scene and --animate: it "
                          "applies with one of them only")  # fmt: skip
@@ -148,7 +157,9 @@ def run(args: argparse.Namespace) -> int:
     ok = stage.check().ok
     ratings = None
     if args.torque is not None:
-        ratings = stage.rating(args.torque, args.speed, args.face_width, **rating_options(args))
+        options = rating_options(args)
+        options |= scuffing_options(args, options["oil_viscosity"])
+        ratings = stage.rating(args.torque, args.speed, args.face_width, **options)
     print(stage.describe())
     if ratings is not None:
         print()
@@ -180,14 +191,17 @@ def _print_ratings(ratings: dict, args: argparse.Namespace, options: dict) -> bo
         f"fixed), {options['material']}, life {options['life']:g} h"
     )
     head = ("mesh", "T1 [N m]", "n1 [rpm]", "K_gamma", "S_H1", "S_H2", "S_F1", "S_F2")
+    oiled = args.fzg_stage is not None
+    head += ("S_B", "S_intS") if oiled else ()
     print(f"{head[0]:14s}" + "".join(f"{h:>10s}" for h in head[1:]))
     findings = []
     for name, r in ratings.items():
+        scuffing = r.safety_scuffing if oiled else ()
         row = (r.settings["torque"], r.settings["speed"], r.factors["K_gamma"],
-               *r.safety_pitting, *r.safety_bending)  # fmt: skip
+               *r.safety_pitting, *r.safety_bending, *scuffing)  # fmt: skip
         print(f"{name:14s}" + "".join(f"{v:10.4g}" if i < 2 else f"{v:10.3f}"
                                       for i, v in enumerate(row)))  # fmt: skip
-        findings.append(r.check(*rating_minimums(args)).prefixed(name))
+        findings.append(r.check(*rating_minimums(args), **scuffing_minimum(args)).prefixed(name))
     report = findings[0]
     for more in findings[1:]:
         report = report + more
