@@ -209,6 +209,26 @@ def test_property_differential_exit_status(capsys, side, pinion, n, module, glea
     assert (code == 2) == bool(err)
 
 
+@settings(
+    max_examples=15,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
+@given(
+    n=st.integers(2, 4),
+    module=st.sampled_from(["1", "3", "6"]),
+    torque=st.sampled_from(["1e-3", "60", "5000", "0", "-1", "nan"]),
+    left=st.sampled_from(["90", "110", "0", "1e6"]),
+    pattern=st.sampled_from(["full-load", "estimated"]),
+)
+def test_property_differential_rating_exit_status(capsys, n, module, torque, left, pattern):
+    argv = ["differential", "--side", 16, "--pinion", 10, "--pinions", n, "--module", module,
+            "--gleason", "--torque", torque, "--left", left, "--pattern", pattern]  # fmt: skip
+    code, out, err = _run(capsys, *argv)
+    assert code in (0, 1, 2), err
+    assert (code == 2) == bool(err) and (code == 2) == (not out)
+
+
 @pytest.mark.parametrize("z", [3, 4])
 def test_bevel_scene_of_a_few_tooth_pinion_is_written(capsys, tmp_path, z):
     # issue 26: the solid of a 3- or 4-tooth pinion raised TypeError (exit 3, a traceback); it is
