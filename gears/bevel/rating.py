@@ -297,6 +297,12 @@ def bevel_rating(pair: Any, torque: float, speed: float, material: Any = "case-c
     if not (isinstance(contacts, tuple | list) and len(contacts) == 2):
         raise GearError(f"contacts = {contacts!r}; valid is a pair of integers >= 1")
     vp = pair.virtual_pair
+    eps = float(vp.contact_ratio)
+    if not 1.0 < eps < 2.0:
+        raise GearError(
+            f"the virtual pair's transverse contact ratio eps_valpha = {eps:.4g}: ISO 10300 "
+            "rates virtual gears with 1 < eps_valpha < 2"
+        )
     c1 = math.cos(math.radians(delta1))
     # the real load cycles, on the real speeds (the virtual pinion turns at n cos delta_1)
     n_l = (60.0 * life * n * contacts[0], 60.0 * life * n * pair.z1 / pair.z2 * contacts[1])
@@ -315,12 +321,6 @@ def bevel_rating(pair: Any, torque: float, speed: float, material: Any = "case-c
                        contacts=tuple(contacts), **life_factors, **options)  # fmt: skip
     except GearError as exc:
         raise GearError(f"the virtual cylindrical pair of this bevel pair: {exc}") from None
-    eps = float(vp.contact_ratio)
-    if not 1.0 < eps < 2.0:
-        raise GearError(
-            f"the virtual pair's transverse contact ratio eps_valpha = {eps:.4g}: ISO 10300 "
-            "rates virtual gears with 1 < eps_valpha < 2"
-        )
     v = _iso10300(pair, vp, t, w, r6)
     bad = [k for k, x in v.items() if not math.isfinite(x)]
     if bad:  # a tooth the method cannot load (e.g. the tip load point of a stubby virtual gear)

@@ -185,6 +185,15 @@ def test_bevel_rating_bad_input(args, kw, match):
         BevelPair(20, 40, module=3, face_width=20).rating(*args, **kw)
 
 
+def test_outside_the_method_scope_is_refused():
+    # ISO 10300 rates virtual gears with eps_valpha < 2 (its scope, ISO 10300-1 clause 1)
+    deep = BevelPair(40, 80, module=2, face_width=15, pressure_angle=14.5, addendum=1.2,
+                     dedendum=1.45)  # fmt: skip
+    assert deep.contact_ratio > 2.0
+    with pytest.raises(GearError, match="eps_valpha = 2.66"):
+        deep.rating(10.0, 100.0)
+
+
 def test_check_findings():
     r = BevelPair(20, 40, module=3, face_width=20).rating(50, 1500)
     rep = r.check(min_pitting=1.0, min_bending=1.4)
