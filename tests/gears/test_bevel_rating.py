@@ -190,7 +190,7 @@ def test_outside_the_method_scope_is_refused():
     deep = BevelPair(40, 80, module=2, face_width=15, pressure_angle=14.5, addendum=1.2,
                      dedendum=1.45)  # fmt: skip
     assert deep.contact_ratio > 2.0
-    with pytest.raises(GearError, match="eps_valpha = 2.66"):
+    with pytest.raises(GearError, match=r"eps_valpha = 2\.66"):
         deep.rating(10.0, 100.0)
 
 
