@@ -613,21 +613,16 @@ class GearPair:
         if spectrum is not None:
             if torque is not None or speed is not None:
                 raise GearError("give either torque and speed or spectrum=, not both")
-            if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):
-                raise GearError('K_Hbeta="contact" / K_Halpha="contact" take the contact analysis '
-                                "at one torque: give torque and speed, not spectrum=")  # fmt: skip
-            from gears.rating.spectrum import check_spectrum, spectrum_rating
+            from gears.rating.capacity import rate_pair_spectrum
 
-            bins = check_spectrum(spectrum)
-            kw = dict(application_factor=application_factor, quality=quality,
-                      roughness=roughness, oil_viscosity=oil_viscosity, tip_relief=tip_relief,
-                      sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
-                      contacts=contacts, idler=idler, misalignment=misalignment, root=root,
-                      root_roughness=root_roughness, scuffing=scuffing,
-                      welding_factor=welding_factor, **factors)  # fmt: skip
-            rows = list(zip(*(b.tolist() for b in bins), strict=True))
-            ratings = [rate_pair(self, t, n, material, life=h, **kw) for t, n, h in rows]
-            return spectrum_rating(ratings, material, rows)
+            return rate_pair_spectrum(
+                self, spectrum, material, application_factor=application_factor,
+                quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
+                tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
+                face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
+                root=root, root_roughness=root_roughness, scuffing=scuffing,
+                welding_factor=welding_factor, **factors,
+            )  # fmt: skip
         if torque is None or speed is None:
             raise GearError("rating needs torque (N m) and speed (rpm), or spectrum=")
         if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):

@@ -22,9 +22,17 @@ from gears.rating.iso6336 import FACTORS, QUANTITIES, OnePair, PairRatings, rate
 from gears.rating.materials import material
 from gears.rating.root import measure_root
 from gears.rating.scuffing import Oil, ScuffingRatings, pair_scuffing
+from gears.rating.spectrum import SpectrumRating, check_spectrum, spectrum_rating
 from gears.report import Finding, Report
 
-__all__ = ["MIN_SCUFFING", "ROOT_ROUTES", "Rating", "load_diameters", "rate_pair"]
+__all__ = [
+    "MIN_SCUFFING",
+    "ROOT_ROUTES",
+    "Rating",
+    "load_diameters",
+    "rate_pair",
+    "rate_pair_spectrum",
+]
 
 #: How the root form of each gear is found: ``"auto"`` (the standard's equations for rack-cut
 #: external gears, measured on the exact envelope for internal and shaper-cut gears),
@@ -433,6 +441,20 @@ def rate_pair(
             "scuffing": (scuffing, b, roughness, (m1, m2), welding_factor, meshes),
         }
     return Rating(pair, values, settings, (routes[0], routes[1]), kept, scuff)
+
+
+def rate_pair_spectrum(pair, spectrum, material_="case-carburized", **options) -> SpectrumRating:
+    """``pair.rating(spectrum=...)``: the first bin rated by :func:`rate_pair` (life = its
+    hours), the others by :meth:`Rating.at` on the gears' part it kept (each bin a load of its
+    own, ISO 6336-6), then Miner's rule (:func:`gears.rating.spectrum.spectrum_rating`)."""
+    if "contact" in (options.get("K_Hbeta"), options.get("K_Halpha")):
+        raise GearError('K_Hbeta="contact" / K_Halpha="contact" take the contact analysis '
+                        "at one torque: give torque and speed, not spectrum=")  # fmt: skip
+    rows = list(zip(*(b.tolist() for b in check_spectrum(spectrum)), strict=True))
+    (t, n, h), rest = rows[0], rows[1:]
+    first = rate_pair(pair, t, n, material_, life=h, **options)
+    ratings = [first, *(first.at(t, n, life=h) for t, n, h in rest)]
+    return spectrum_rating(ratings, material_, rows)
 
 
 _ONE = ("torque", "speed", "life", "application_factor", "quality", "roughness", "oil_viscosity",
