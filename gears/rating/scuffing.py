@@ -90,7 +90,7 @@ STEEL_THERMAL_CONTACT = 13.795
 #: temperature's C_2 in the integral temperature.
 C_1, C_2 = 0.7, 1.5
 
-_GAUSS = np.polynomial.legendre.leggauss(12)  # nodes and weights per segment of the path
+_GAUSS = np.polynomial.legendre.leggauss(8)  # nodes and weights per segment of the path
 
 
 @dataclass(frozen=True)
@@ -198,7 +198,7 @@ def oil_dynamic_viscosity(nu40, nu100, temperature, density=890.0):
     return nu * rho
 
 
-_B_STEEL = 13.795  # STEEL_THERMAL_CONTACT, short for the signatures
+_B_STEEL = STEEL_THERMAL_CONTACT  # short for the signatures
 
 
 def thermoelastic_factor(youngs_1, poisson_1, youngs_2, poisson_2, thermal_1=_B_STEEL,
@@ -590,7 +590,7 @@ def rate_scuffing(
     return result
 
 
-#: Pairs per block of :func:`rate_scuffing` (each pair evaluates its path at 53 points).
+#: Pairs per block of :func:`rate_scuffing` (each pair evaluates its path at 37 points).
 _BLOCK = 16384
 
 
