@@ -55,8 +55,8 @@ __all__ = [
 
 #: Bevel gear factor Z_K of ISO 10300-2 (method B1), a factor of the permissible contact stress:
 #: sigma_HP = sigma_Hlim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K. ISO/TR 10300-30 sample 1 works it as
-#: 1.2 (its sigma_HP1 = 1617.8 MPa = 1500 MPa x 0.992 x 0.974 x 0.930 x 1.2). The first edition
-#: (ISO 10300-2:2001) had Z_K = 0.85 on the contact stress instead.
+#: 1.2 (its sigma_HP1 = 1617.8 MPa = 1500 MPa x 0.992 x 0.974 x 0.930 x 1.2), by the 2023
+#: edition. The first edition (ISO 10300-2:2001) had Z_K = 0.85 on the contact stress instead.
 BEVEL_FACTOR = 1.2
 
 #: How the members are mounted (the columns of the mounting factor's table): both straddle-mounted
