@@ -147,6 +147,16 @@ def _ok(c):
 def _brute_force_best(target, z_max, modules, widths, objective):
     """Every product of two single simple stages (synthesize, each with its exact target), in
     both orders, each stage sized at its place; the best by the objective."""
+    found = _brute_force_products(target, z_max, tuple(modules), tuple(widths))
+    return min((value[objective], *rest) for value, *rest in found)
+
+
+@functools.cache
+def _brute_force_products(target, z_max, modules, widths):
+    """(objective -> value, teeth of stage 1, of stage 2, module 1, module 2) of every feasible
+    product: the enumeration does not depend on the objective, so the volume and mass tests
+    share one (cached) brute force, and each takes its own minimum."""
+    modules, widths = list(modules), list(widths)
     ratios = {Fraction(z1 + z3, z1) for z1 in range(17, z_max + 1)
               for z3 in range(z1 + 1, z_max + 1)}  # fmt: skip
     load = load_case(BOX["torque"], BOX["speed"])
@@ -174,9 +184,9 @@ def _brute_force_best(target, z_max, modules, widths, objective):
                 continue
             value = {"volume": d1["volume"][i] + d2["volume"][j],
                      "mass": d1["mass"][i] + d2["mass"][j],
-                     "ring": max(d1["ring"][i], d2["ring"][j])}[objective]  # fmt: skip
+                     "ring": max(d1["ring"][i], d2["ring"][j])}  # fmt: skip
             found.append((value, a.teeth, b.teeth, d1["module"][i], d2["module"][j]))
-    return min(found)
+    return found
 
 
 @pytest.mark.parametrize("objective", ["volume", "mass"])
