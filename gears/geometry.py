@@ -56,12 +56,16 @@ CROSSING = 1e-12
 
 
 def _out(a):
+    if type(a) is np.float64:  # one number already
+        return a
     a = np.asarray(a)
     return a[()] if a.ndim == 0 else a
 
 
 def _sign(internal):
     """+1 for external gears, -1 for internal gears (broadcasts)."""
+    if type(internal) is bool or type(internal) is np.bool_:  # one gear: no array
+        return -1.0 if internal else 1.0
     return np.where(np.asarray(internal, bool), -1.0, 1.0)
 
 
