@@ -123,3 +123,38 @@ def test_pair_losses_masked_where_the_friction_equation_fails():
     assert r.power_loss[1] == pytest.approx(100.0 * 1e-12 * math.pi / 30.0, rel=1e-12)
     with pytest.raises(GearError, match="errors"):
         pair_losses(100.0, 1500.0, 20, 50, 3.0, 30.0, errors="ignore")
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    st.lists(st.integers(5, 80), min_size=1, max_size=4),
+    st.floats(-0.6, 1.2),
+    st.lists(
+        st.tuples(st.floats(1e-3, 1e5), st.floats(1e-2, 1e5), st.floats(1e-3, 1e7)),
+        min_size=1,
+        max_size=4,
+    ),
+)
+def test_masked_spectrum_and_losses_property(z1, x1, bins):
+    # rate_spectrum(errors="mask") and pair_losses(errors="mask") over any pairs and loads:
+    # every row finite with its flag, never an exception but our own for bad input
+    from gears.rating.losses import pair_losses
+    from gears.rating.spectrum import rate_spectrum
+
+    z1 = np.array(z1)
+    try:
+        r = rate_spectrum(z1, 60, 2.0, 20.0, bins, x1=x1, errors="mask")
+    except GearError:
+        return
+    valid = np.asarray(r.valid, bool)
+    for name in ("S_H1", "S_H2", "S_F1", "S_F2", "L_H1", "L_F2"):
+        v = np.asarray(getattr(r, name))
+        assert np.all(np.isfinite(v) & (v >= 0.0)) and np.all(v[~valid] == 0.0), name
+    torques = np.array([t for t, _, _ in bins])
+    speeds = np.array([n for _, n, _ in bins])
+    try:
+        eff = pair_losses(torques, speeds, z1[:, None], 60, 2.0, 20.0, x1, errors="mask")
+    except GearError:
+        return
+    assert np.all((eff.efficiency >= 0.0) & (eff.efficiency < 1.0))
+    assert np.all(np.isfinite(eff.power_loss) & (eff.power_loss >= 0.0))
