@@ -13,9 +13,11 @@ then rates each mesh built from real gears with :meth:`gears.GearPair.rating`:
 * the mesh load factor K_gamma of planet meshes defaults to :func:`load_sharing` of the planet
   count (AGMA 6123 values, as ISO 6336-1 leaves them to the designer), or is given.
 
-:meth:`trains.Planetary.rating` rates one stage this way. Bevel meshes
-(:class:`gears.BevelPair`) are left out of the result: rate them with
-:meth:`gears.BevelPair.rating` or :meth:`trains.Differential.rating` (after ISO 10300 method B1).
+:meth:`trains.Planetary.rating` rates one stage this way. A bevel mesh (``pair=``
+:class:`gears.BevelPair`) is rated by ISO 10300 method B1 (:meth:`gears.BevelPair.rating`, a
+:class:`gears.BevelRating`) at the same torque and speed of its pinion, with the options
+``mounting``, ``pattern`` and ``effective_width`` (bevel meshes only; its face width is its
+pair's); under a load spectrum bevel meshes are left out.
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ import numbers
 from collections.abc import Iterable, Mapping
 from typing import Any
 
-from gears import GearPair, Rating
+from gears import BevelPair, GearPair, Rating
 from gears.errors import GearError
 from trains.errors import TrainError
 from trains.power import power_flow
@@ -140,19 +142,19 @@ def rating(
                       friction=friction)  # fmt: skip
     speeds = flow.speeds
     planets = dict(getattr(train, "_planets", {}))
-    # bevel meshes (gears.BevelPair): BevelPair.rating / Differential.rating rate them
-    relations = [r for r in train.relations if isinstance(r.pair, GearPair)]
+    bevel = {k: options.pop(k) for k in _BEVEL_ONLY if k in options}  # ISO 10300's options
+    kinds = GearPair if options.pop("_no_bevel", False) else GearPair | BevelPair
+    relations = [r for r in train.relations if isinstance(r.pair, kinds)]
     if not relations:
         raise TrainError(
-            "the train has no mesh of real gears to rate (build meshes with gears=; bevel "
-            "meshes: rate them with BevelPair.rating or Differential.rating, ISO 10300)"
+            "the train has no mesh of real gears to rate (build meshes with gears= or pair=)"
         )
     scale = max(abs(float(t)) for t in flow.torques.values())
     out: dict[str, Rating] = {}
     for r in relations:
         rp = flow.relations[r.name]
         pair = r.pair
-        first_on_b = r.gears[0].internal  # the pair's g1 is the external gear
+        first_on_b = not isinstance(pair, BevelPair) and r.gears[0].internal  # g1 external
         m1, m2 = (r.b, r.a) if first_on_b else (r.a, r.b)
         g1, g2 = pair.g1, pair.g2
         copies = max(planets.get(m1, 1), planets.get(m2, 1))
@@ -181,12 +183,26 @@ def rating(
         mat = _per_mesh(material, r.name, "material") if isinstance(material, Mapping) else material
         if mat is None:
             raise TrainError(f"material: no entry for mesh {r.name!r}")
+        is_bevel = isinstance(pair, BevelPair)
+        if is_bevel and isinstance(face_width, Mapping) and b is not None:
+            raise TrainError(
+                f"face_width: mesh {r.name!r} is a bevel pair, whose face width is its own "
+                f"({pair.face_width:g} mm)"
+            )
         try:
-            out[r.name] = pair.rating(t1, n1, mat, face_width=b, contacts=contacts, idler=idler,
-                                      **kw)  # fmt: skip
+            if is_bevel:  # ISO 10300 method B1 (the face width is the pair's)
+                out[r.name] = pair.rating(t1, n1, mat, contacts=contacts, idler=idler, **kw,
+                                          **bevel)  # fmt: skip
+            else:
+                out[r.name] = pair.rating(t1, n1, mat, face_width=b, contacts=contacts,
+                                          idler=idler, **kw)  # fmt: skip
         except GearError as exc:
             raise TrainError(f"mesh {r.name}: {exc}") from None
     return out
+
+
+#: the options of :func:`rating` that only bevel meshes take (ISO 10300's)
+_BEVEL_ONLY = ("mounting", "pattern", "effective_width")
 
 
 def _at_least_one(name: str, value: Any, mesh: str) -> None:
@@ -227,6 +243,9 @@ def _spectrum_rating(train, input, output, fixed, spectrum, material, face_width
 
     if "life" in options:
         raise TrainError("life= and spectrum= exclude each other: the spectrum gives the hours")
+    for key in _BEVEL_ONLY:
+        if key in options:
+            raise TrainError(f"{key}= rates bevel meshes, which a spectrum rating leaves out")
     try:
         torques, speeds, hours = check_spectrum(spectrum)
     except GearError as exc:
@@ -234,7 +253,8 @@ def _spectrum_rating(train, input, output, fixed, spectrum, material, face_width
     per_bin = [
         rating(train, input, output, fixed, torque=float(t), speed=float(n), material=material,
                face_width=face_width, load_sharing_factor=load_sharing_factor,
-               mesh_efficiency=mesh_efficiency, friction=friction, life=float(h), **options)
+               mesh_efficiency=mesh_efficiency, friction=friction, life=float(h), _no_bevel=True,
+               **options)
         for t, n, h in zip(torques, speeds, hours, strict=True)
     ]  # fmt: skip
     out = {}

@@ -262,3 +262,34 @@ def test_method_b1_over_arrays_is_each_pair():
     assert sh / sh[1, 1] == pytest.approx(np.sqrt(t / 50.0 * 20.0 / b), rel=1e-12)
     sf = out["sigma_F1"]
     assert sf / sf[1, 1] == pytest.approx(t / 50.0 * 20.0 / b, rel=1e-12)
+
+
+def test_train_rating_rates_bevel_meshes_from_the_power_flow():
+    """trains.rating on the differential's train: the statics of the power flow (the case
+    torque into the left wheel, the right held) against the Differential's own split (Ozols
+    §13: half the case torque on each side gear, shared by the pinions)."""
+    import trains
+
+    d = Differential(side=16, pinion=10, n_pinions=2, module=3, gleason=True)
+    r = trains.rating(d.train, "case", "left", fixed=["right"], torque=150, speed=100,
+                      mounting="one-straddle")  # fmt: skip
+    left = float(d.solve(case=100, right=0)["left"])
+    direct = d.rating(150, left, 0.0, mounting="one-straddle")
+    assert set(r) == {"pinion-right", "pinion-left"}
+    for name in r:
+        assert isinstance(r[name], BevelRating)
+        for a, b in zip((*r[name].safety_pitting, *r[name].safety_bending),
+                        (*direct[name].safety_pitting, *direct[name].safety_bending),
+                        strict=True):  # fmt: skip
+            assert a == pytest.approx(b, rel=1e-9)
+        assert r[name].factors["K_Hbeta-be"] == pytest.approx(1.10, rel=1e-12)
+    with pytest.raises(TrainError, match="face width is its own"):
+        trains.rating(d.train, "case", "left", fixed=["right"], torque=150, speed=100,
+                      face_width={"pinion-left": 10.0})  # fmt: skip
+    # a spectrum rates cylindrical meshes only: here there are none
+    with pytest.raises(TrainError, match="no mesh of real gears"):
+        trains.rating(d.train, "case", "left", fixed=["right"],
+                      spectrum=[(150, 100, 10), (50, 100, 100)])  # fmt: skip
+    with pytest.raises(TrainError, match="mounting= rates bevel meshes"):
+        trains.rating(d.train, "case", "left", fixed=["right"], mounting="one-straddle",
+                      spectrum=[(150, 100, 10)])  # fmt: skip

@@ -137,16 +137,20 @@ def test_power_flow_with_friction_on_bevel_meshes():
         assert flow.relations[name].loss > 0
 
 
-def test_rating_leaves_bevel_meshes_out():
+def test_rating_rates_bevel_meshes_too():
     d = Differential(16, 10, **GLEASON)
     t = d.train
-    with pytest.raises(TrainError, match="ISO 10300"):
-        rating(t, "case", "left", fixed=["right"], torque=100, speed=500)
-    # a spur final drive on the case is rated; the bevel meshes are left out
+    # a spur final drive on the case: every mesh is rated, the bevel meshes by ISO 10300
     t.mesh("input", "case", gears=(Gear(13, 4, face_width=30), Gear(41, 4, face_width=30)),
            name="final-drive")  # fmt: skip
     r = rating(t, "input", "left", fixed=["right"], torque=100, speed=1500)
-    assert list(r) == ["final-drive"]
+    assert sorted(r) == ["final-drive", "pinion-left", "pinion-right"]
+    assert type(r["pinion-left"]).__name__ == "BevelRating"
+    assert type(r["final-drive"]).__name__ == "Rating"
+    # the case carries 100 x 41/13 N m: each side gear half, each of the two pinions a quarter
+    # of that times z_p / z_s (Ozols §13)
+    case = 100 * 41 / 13
+    assert r["pinion-left"].settings["torque"] == pytest.approx(case / 4 * 10 / 16, rel=1e-9)
 
 
 def test_train_bevel_mesh_input_is_checked():
