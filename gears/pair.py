@@ -604,39 +604,30 @@ class GearPair:
         >>> [round(s, 3) for s in r.safety_pitting], [round(s, 3) for s in r.safety_bending]
         ([1.053, 1.161], [3.287, 3.563])
         """
-        from gears.rating.capacity import rate_pair  # the rating family: loaded when rated
+        from gears.rating.capacity import rate_pair, rate_pair_spectrum  # loaded when rated
 
         if tip_relief is None:  # the gears' own tip relief, the larger (ISO 6336-1 C_a)
             reliefs = [m.tip_relief for g in (self.g1, self.g2)
                        if (m := getattr(g, "modification", None)) is not None]  # fmt: skip
             tip_relief = max(reliefs) if any(reliefs) else None
+        options = dict(application_factor=application_factor, quality=quality,
+                       roughness=roughness, oil_viscosity=oil_viscosity, tip_relief=tip_relief,
+                       sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
+                       contacts=contacts, idler=idler, misalignment=misalignment, root=root,
+                       root_roughness=root_roughness, scuffing=scuffing,
+                       welding_factor=welding_factor, **factors)  # fmt: skip
         if spectrum is not None:
             if torque is not None or speed is not None:
                 raise GearError("give either torque and speed or spectrum=, not both")
-            from gears.rating.capacity import rate_pair_spectrum
-
-            return rate_pair_spectrum(
-                self, spectrum, material, application_factor=application_factor,
-                quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
-                tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
-                face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
-                root=root, root_roughness=root_roughness, scuffing=scuffing,
-                welding_factor=welding_factor, **factors,
-            )  # fmt: skip
+            return rate_pair_spectrum(self, spectrum, material, **options)
         if torque is None or speed is None:
             raise GearError("rating needs torque (N m) and speed (rpm), or spectrum=")
         if "contact" in (factors.get("K_Hbeta"), factors.get("K_Halpha")):
             from gears.contact.result import rating_factors
 
-            factors = rating_factors(self, torque * application_factor, misalignment, factors)
-        return rate_pair(
-            self, torque, speed, material, life=life, application_factor=application_factor,
-            quality=quality, roughness=roughness, oil_viscosity=oil_viscosity,
-            tip_relief=tip_relief, sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim,
-            face_width=face_width, contacts=contacts, idler=idler, misalignment=misalignment,
-            root=root, root_roughness=root_roughness, scuffing=scuffing,
-            welding_factor=welding_factor, **factors,
-        )  # fmt: skip
+            options.update(rating_factors(self, torque * application_factor, misalignment,
+                                          factors))  # fmt: skip
+        return rate_pair(self, torque, speed, material, life=life, **options)
 
     # --- loaded tooth contact analysis ---------------------------------------------------------
     def contact(
