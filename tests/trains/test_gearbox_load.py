@@ -357,3 +357,15 @@ def test_the_rated_search_keeps_stages_that_pass_thanks_to_the_ring_relief():
     for g in planets18:
         for c in g.stages:
             assert "planet-ring.involute_interference" not in c.stage.check().failed()
+
+
+def test_gearbox_search_refuses_a_spectrum_by_name():
+    # not modelled there (each stage would take its own bins): refused before any work, naming
+    # the option and what to do instead
+    bins = [(40.0, 1500.0, 2000.0), (80.0, 1500.0, 200.0)]
+    for kwargs in (
+        dict(spectrum=bins, face_width=[10, 20]),
+        dict(torque=50.0, speed=1500.0, spectrum=bins, face_width=[10, 20]),
+    ):
+        with pytest.raises(TrainError, match="spectrum= is not an option"):
+            synthesize_gearbox(20, stages=2, n_planets=3, **kwargs)

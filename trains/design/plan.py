@@ -57,6 +57,10 @@ class _Plan:
 
 def _plan(objective, module, torque, speed, material, face_width, life, min_safety,
           options) -> _Plan:  # fmt: skip
+    if "spectrum" in options:  # a load spectrum per stage is not modelled in this search
+        raise TrainError("spectrum= is not an option of the gearbox search: size for the "
+                         "spectrum's peak torque and speed, then rate a found stage with "
+                         "Planetary.rating(spectrum=...)")  # fmt: skip
     if torque is None:
         extra = [k for k, v in (("speed", speed), ("face_width", face_width),
                                 ("min_safety", min_safety)) if v is not None]  # fmt: skip
