@@ -114,8 +114,8 @@ LAYERS = {
         ["solid.export", "search.engine"],
     ],
     "trains": [
-        ["errors", "cli._text"],
-        ["inertia", "trajectory", "conditions", "relations"],
+        ["errors", "cli._text", "cli._types"],
+        ["inertia", "trajectory", "conditions", "relations", "cli._rating"],
         ["willis", "planetary.schemes"],
         [
             "power",

@@ -25,26 +25,25 @@ import argparse
 
 from trains.cli._common import (
     BEVEL_NAMES,
-    BEVEL_RATING_NAMES,
     CHECK_FAILED,
     DRAWING_NAMES,
     OK,
-    RATING_NAMES,
     bevel_arguments,
-    bevel_rating_arguments,
-    bevel_rating_given,
-    bevel_rating_options,
     drawing_arguments,
-    finite,
-    integer,
-    non_negative,
-    positive,
-    rating_arguments,
-    rating_minimums,
     refuse_undrawn,
     write_animation,
     write_scene,
 )
+from trains.cli._rating import (
+    BEVEL_RATING_NAMES,
+    RATING_NAMES,
+    bevel_rating_arguments,
+    bevel_rating_given,
+    bevel_rating_options,
+    rating_arguments,
+    rating_minimums,
+)
+from trains.cli._types import finite, integer, non_negative, positive
 
 HELP = "check a straight bevel pair (Z1 Z2): geometry, report, ISO 10300 rating; 3D scene"
 

@@ -20,17 +20,8 @@ from __future__ import annotations
 
 import argparse
 
-from trains.cli._common import (
-    CHECK_FAILED,
-    OK,
-    PAIR_NAMES,
-    bounded,
-    integer,
-    non_negative,
-    output_file,
-    pair_arguments,
-    positive,
-)
+from trains.cli._common import CHECK_FAILED, OK, PAIR_NAMES, output_file, pair_arguments
+from trains.cli._types import bounded, integer, non_negative, positive
 
 HELP = "loaded tooth contact: transmission error, mesh stiffness, load sharing, K_Hbeta"
 

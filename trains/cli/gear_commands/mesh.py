@@ -26,12 +26,10 @@ from trains.cli._common import (
     SCENE_FORMATS,
     design_status,
     gear_arguments,
-    integer,
     no_check_argument,
-    non_negative,
     output_file,
-    positive,
 )
+from trains.cli._types import integer, non_negative, positive
 
 HELP = "3D mesh of one gear (spur, helical, herringbone, ring) to .stl/.3mf/.glb/.obj/.ply"
 

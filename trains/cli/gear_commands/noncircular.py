@@ -22,16 +22,8 @@ from __future__ import annotations
 
 import argparse
 
-from trains.cli._common import (
-    CHECK_FAILED,
-    OK,
-    SCENE_FORMATS,
-    bounded,
-    finite,
-    integer,
-    output_file,
-    positive,
-)
+from trains.cli._common import CHECK_FAILED, OK, SCENE_FORMATS, output_file
+from trains.cli._types import bounded, finite, integer, positive
 
 HELP = "design a non-circular pair (elliptical, lobed, eccentric): centrodes, teeth, checks"
 

@@ -24,16 +24,13 @@ from trains.cli._common import (
     CHECK_FAILED,
     OK,
     PAIR_NAMES,
-    bounded,
     build_pair,
-    finite,
-    non_negative,
     pair_arguments,
-    positive,
     refuse_split_alone,
     scene_argument,
     write_scene,
 )
+from trains.cli._types import bounded, finite, non_negative, positive
 
 if TYPE_CHECKING:
     from gears import Gear, GearPair

@@ -25,15 +25,12 @@ import argparse
 from trains.cli._common import (
     GEAR_NAMES,
     design_status,
-    finite,
     gear_arguments,
-    integer,
     no_check_argument,
-    non_negative,
     output_file,
-    positive,
     progress_bar,
 )
+from trains.cli._types import finite, integer, non_negative, positive
 
 HELP = "tooth outline (analytic, simulated rack or shaper cutting) to .svg/.dxf/.png/.npz"
 

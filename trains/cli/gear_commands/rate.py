@@ -18,14 +18,10 @@ from __future__ import annotations
 
 import argparse
 
-from trains.cli._common import (
-    CHECK_FAILED,
-    OK,
-    PAIR_NAMES,
+from trains.cli._common import CHECK_FAILED, OK, PAIR_NAMES, build_pair, pair_arguments
+from trains.cli._rating import (
     RATING_NAMES,
     SCUFFING_NAMES,
-    build_pair,
-    pair_arguments,
     rating_arguments,
     rating_minimums,
     rating_options,

@@ -20,19 +20,14 @@ from trains.cli._common import (
     CHECK_FAILED,
     LOAD_NAMES,
     OK,
-    bounded,
     dask_arguments,
     dask_session,
-    exact,
-    finite,
-    integer,
     load_arguments,
     load_options,
-    non_negative,
     output_file,
-    positive,
     progress_bar,
 )
+from trains.cli._types import bounded, exact, finite, integer, non_negative, positive
 
 HELP = "search gear pairs or multi-stage planetary gearboxes and print them ranked"
 

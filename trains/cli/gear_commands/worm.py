@@ -22,17 +22,8 @@ from __future__ import annotations
 
 import argparse
 
-from trains.cli._common import (
-    CHECK_FAILED,
-    OK,
-    bounded,
-    finite,
-    integer,
-    positive,
-    progress_bar,
-    scene_argument,
-    write_scene,
-)
+from trains.cli._common import CHECK_FAILED, OK, progress_bar, scene_argument, write_scene
+from trains.cli._types import bounded, finite, integer, positive
 
 HELP = "check a worm pair (STARTS TEETH): geometry, checks, efficiency both ways, self-locking"
 

@@ -24,25 +24,25 @@ import functools
 
 from trains.cli._common import (
     BEVEL_NAMES,
-    BEVEL_RATING_NAMES,
     CHECK_FAILED,
     DRAWING_NAMES,
     OK,
-    RATING_NAMES,
     bevel_arguments,
-    bevel_rating_arguments,
-    bevel_rating_given,
-    bevel_rating_options,
     drawing_arguments,
-    finite,
-    integer,
-    positive,
-    rating_arguments,
-    rating_minimums,
     refuse_undrawn,
     write_animation,
     write_scene,
 )
+from trains.cli._rating import (
+    BEVEL_RATING_NAMES,
+    RATING_NAMES,
+    bevel_rating_arguments,
+    bevel_rating_given,
+    bevel_rating_options,
+    rating_arguments,
+    rating_minimums,
+)
+from trains.cli._types import finite, integer, positive
 
 HELP = "check a bevel differential (side gears, pinions) and its cornering speeds; 3D and GIF"
 

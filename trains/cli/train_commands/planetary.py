@@ -22,13 +22,13 @@ from trains.cli._common import (
     ANIMATION_FORMATS,
     CHECK_FAILED,
     OK,
-    RATING_NAMES,
     SCENE_FORMATS,
-    SCUFFING_NAMES,
-    integer,
-    non_negative,
     output_file,
-    positive,
+    write_scene,
+)
+from trains.cli._rating import (
+    RATING_NAMES,
+    SCUFFING_NAMES,
     rating_arguments,
     rating_given,
     rating_minimums,
@@ -36,8 +36,8 @@ from trains.cli._common import (
     scuffing_arguments,
     scuffing_minimum,
     scuffing_options,
-    write_scene,
 )
+from trains.cli._types import integer, non_negative, positive
 
 HELP = "check a planetary stage (sun planet [planet2] ring) and print its report"
 

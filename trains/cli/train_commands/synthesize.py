@@ -21,15 +21,12 @@ from trains.cli._common import (
     OK,
     dask_arguments,
     dask_session,
-    exact,
-    integer,
     load_arguments,
     load_options,
-    non_negative,
     output_file,
-    positive,
     progress_bar,
 )
+from trains.cli._types import exact, integer, non_negative, positive
 
 HELP = "search planetary tooth numbers for a target ratio and print them ranked"
 

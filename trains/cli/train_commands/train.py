@@ -20,7 +20,8 @@ import argparse
 from fractions import Fraction
 from typing import Any
 
-from trains.cli._common import bounded, exact, finite, input_file, positive
+from trains.cli._common import input_file
+from trains.cli._types import bounded, exact, finite, positive
 
 HELP = "solve a gear train from a TOML file (speeds, ratios, torques, efficiency)"
 
