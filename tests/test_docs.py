@@ -14,6 +14,10 @@
   fails, as documented), or the status its trailing ``# exit N`` comment names.
 - A ``toml`` block is a train file: it is read by ``read_train``.
 - A block preceded by ``<!-- no-test: reason -->`` is not run; there are at most two.
+
+The blocks start running as soon as the tests are collected (``start_in_background``, called by
+``tests/conftest.py``), as many at a time as there are cores, beside the rest of the suite; each
+block's test waits for them and checks its own.
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ import pathlib
 import re
 import runpy
 import tempfile
+import threading
 import tokenize
 from fractions import Fraction
 
@@ -251,9 +256,47 @@ def problems(block: Block, got: dict) -> list[str]:
     return out
 
 
+class _Background:
+    """``run_blocks`` in a thread of this process (it mostly waits on its block processes):
+    started when the tests are collected, so the other tests run meanwhile."""
+
+    def __init__(self, blocks: list[Block], basetemp: pathlib.Path):
+        self.done: dict[str, dict] | None = None
+        self.error: BaseException | None = None
+        self.thread = threading.Thread(target=self._run, args=(blocks, basetemp), daemon=True)
+        self.thread.start()
+
+    def _run(self, blocks, basetemp):
+        try:
+            self.done = run_blocks(blocks, basetemp)
+        except BaseException as exc:  # raised again in the test that waits for it
+            self.error = exc
+
+    def result(self) -> dict[str, dict]:
+        self.thread.join()
+        if self.error is not None:
+            raise self.error
+        return self.done
+
+
+_STARTED: list[_Background] = []
+
+
+def start_in_background(session) -> None:
+    """Run the blocks from the end of collection (tests/conftest.py) when a test that checks
+    them is among the collected tests."""
+    if not _STARTED and any(
+        "outcomes" in getattr(item, "fixturenames", ()) for item in session.items
+    ):
+        basetemp = session.config._tmp_path_factory.getbasetemp()  # outcomes' own folder
+        _STARTED.append(_Background(RUN, basetemp))
+
+
 @pytest.fixture(scope="session")
 def outcomes(tmp_path_factory):
-    return run_blocks(RUN, tmp_path_factory.getbasetemp())
+    if not _STARTED:
+        _STARTED.append(_Background(RUN, tmp_path_factory.getbasetemp()))
+    return _STARTED[0].result()
 
 
 def test_the_runner_catches_what_is_wrong(tmp_path):

@@ -6,11 +6,15 @@ The build is the README's command (``sphinx-build -W -b html docs docs/_build/ht
 ``docs/_build/html``. sphinx-gallery runs each example once and keeps its output: an unchanged
 example is not run again (its md5 is cached in ``docs/auto_examples``), which keeps this test
 within the suite's time budget; ``tests/test_examples.py`` runs every example on every run.
+The build starts in the background when the tests are collected (``start_in_background``, called
+by ``tests/conftest.py``) and runs beside the other tests; the test waits for it and checks what
+it built.
 """
 
 from __future__ import annotations
 
 import ast
+import dataclasses
 import html
 import importlib
 import pathlib
@@ -27,6 +31,74 @@ DOCS = ROOT / "docs"
 API = DOCS / "api"
 EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
 OUT = DOCS / "_build" / "html"
+
+
+# the README's command with -E: every page read again, so a docstring changed since the last
+# build is checked
+COMMAND = [sys.executable, "-m", "sphinx", "-E", "-W", "--keep-going", "-b", "html", str(DOCS),
+           str(OUT)]  # fmt: skip
+TIMEOUT = 900.0  # s
+
+
+@dataclasses.dataclass
+class SiteBuild:
+    """A running ``sphinx-build``: its process, the examples folder's listing when it started,
+    and the files its output goes to (files, not pipes: nobody reads the output until the build
+    ends, and a full pipe would stop it)."""
+
+    process: subprocess.Popen
+    examples_before: list[str]
+    start: float
+    stdout: object
+    stderr: object
+
+    @classmethod
+    def start_now(cls) -> SiteBuild:
+        examples_before = sorted(p.name for p in (ROOT / "examples").iterdir())
+        out, err = tempfile.TemporaryFile("w+"), tempfile.TemporaryFile("w+")
+        process = subprocess.Popen(COMMAND, stdout=out, stderr=err, text=True, cwd=ROOT)
+        return cls(process, examples_before, time.perf_counter(), out, err)
+
+    def wait(self) -> tuple[int, str, str, float]:
+        """Return code, stdout, stderr and the build's seconds, once it has finished."""
+        try:
+            code = self.process.wait(TIMEOUT - (time.perf_counter() - self.start))
+        except subprocess.TimeoutExpired:
+            self.stop()
+            raise
+        self.stdout.seek(0)
+        self.stderr.seek(0)
+        return code, self.stdout.read(), self.stderr.read(), time.perf_counter() - self.start
+
+    def stop(self) -> None:
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
+
+
+_BUILD: list[SiteBuild] = []  # the session's build, once started
+
+
+def start_in_background(session) -> None:
+    """Start the build when the site test is among the collected tests (tests/conftest.py)."""
+    if not _BUILD and any(
+        getattr(item, "function", None) is test_site_builds_with_warnings_as_errors
+        for item in session.items
+    ):
+        _BUILD.append(SiteBuild.start_now())
+
+
+def stop_in_background() -> None:
+    for build in _BUILD:
+        build.stop()
+
+
+@pytest.fixture(scope="session")
+def site_build() -> SiteBuild:
+    """The session's site build (started now when collection did not start it)."""
+    if not _BUILD:
+        _BUILD.append(SiteBuild.start_now())
+    return _BUILD[0]
 
 
 def _listed(page: str) -> set[str]:
@@ -95,20 +167,13 @@ def test_every_example_opens_with_a_title(script):
     assert len(lines[1]) >= len(lines[0]), f"{script.name}: the underline is shorter than the title"
 
 
-def test_site_builds_with_warnings_as_errors():
-    before = sorted(p.name for p in (ROOT / "examples").iterdir())
-    start = time.perf_counter()
-    run = subprocess.run(
-        [sys.executable, "-m", "sphinx", "-E", "-W", "--keep-going", "-b", "html",
-         str(DOCS), str(OUT)],
-        capture_output=True, text=True, cwd=ROOT, timeout=900,
-    )  # fmt: skip
-    seconds = time.perf_counter() - start
-    assert run.returncode == 0, f"sphinx-build -W failed:\n{run.stderr[-6000:]}"
+def test_site_builds_with_warnings_as_errors(site_build):
+    code, stdout, stderr, seconds = site_build.wait()  # COMMAND, started at collection
+    assert code == 0, f"sphinx-build -W failed:\n{stderr[-6000:]}"
     # myst-parser's whole configuration (one line of some 2 000 characters) is not logged
-    assert "MdParserConfig(" not in run.stdout + run.stderr
+    assert "MdParserConfig(" not in stdout + stderr
     # examples write their files to temporary folders, never beside themselves
-    assert sorted(p.name for p in (ROOT / "examples").iterdir()) == before
+    assert sorted(p.name for p in (ROOT / "examples").iterdir()) == site_build.examples_before
 
     # every public name and every module's __all__ is in the inventory of documented objects
     from sphinx.util.inventory import InventoryFile
