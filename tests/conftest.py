@@ -8,9 +8,16 @@ Ctrl-C, leaves nothing behind). Two modules do: ``tests/test_site.py`` (the site
 the suite's time, in a process of its own) and ``tests/test_docs.py`` (every documentation block,
 each in a process of its own). Their tests then wait for the result and check it as before; the
 work and every check are the same, only the suite's other tests no longer wait for it.
+
+``line_hausdorff``: shapely's Hausdorff distance of two lines, found through an index (the same
+value, for the outlines compared at fine tolerances).
 """
 
 from __future__ import annotations
+
+import numpy as np
+import pytest
+import shapely
 
 
 def _modules(session):
@@ -36,3 +43,28 @@ def pytest_sessionfinish(session):
         stop = getattr(module, "stop_in_background", None)
         if stop is not None:
             stop()
+
+
+def hausdorff(a, b) -> float:
+    """shapely's Hausdorff distance of two lines (GEOS's discrete one: the largest distance from
+    a vertex of either line to the other line), each vertex's nearest segment found through an
+    STRtree: O(n log n), where GEOS compares every vertex with every segment (10^8 pairs for two
+    tooth outlines at 1 um, 5 s; equal to shapely's value within 1e-15 mm on the tests' gears)."""
+
+    def one_way(p, q):
+        xy = shapely.get_coordinates(q)
+        tree = shapely.STRtree(shapely.linestrings(np.stack([xy[:-1], xy[1:]], axis=1)))
+        points = shapely.points(shapely.get_coordinates(p))
+        _, d = tree.query_nearest(points, return_distance=True, all_matches=False)
+        return float(d.max())
+
+    for g in (a, b):
+        if shapely.get_type_id(g) not in (1, 2):  # LineString, LinearRing: one chain of segments
+            raise TypeError(f"hausdorff() takes lines, got {g.geom_type}")
+    return max(one_way(a, b), one_way(b, a))
+
+
+@pytest.fixture
+def line_hausdorff():
+    """:func:`hausdorff`, for the tests that compare two outlines' exteriors."""
+    return hausdorff
