@@ -137,6 +137,7 @@ LAYERS = {
             "design.plan",
             "design.ratios",
             "design.scheduling",
+            "design.combine",
         ],
         ["design.gearbox"],
         ["cli._common"],

@@ -605,7 +605,7 @@ def parallel_efficiency(
     return float(p.sum() / (p / eta).sum())
 
 
-def planetary_efficiency(ratio: Any, basic_efficiency: float, driver: str = "gear") -> float:
+def planetary_efficiency(ratio: Any, basic_efficiency: Any, driver: str = "gear") -> Any:
     """Efficiency of a planetary train (gear 1, fixed gear n, carrier H), Ozols (14.26).
 
     ``i_1H eta^k = 1 - (1 - i_1H) eta_H^h`` with ``k = +1`` when gear 1 drives (``driver =
@@ -613,23 +613,28 @@ def planetary_efficiency(ratio: Any, basic_efficiency: float, driver: str = "gea
     the carrier frame (for gear 1 driving: ``i_1H < 0`` or ``i_1H > 1``), else ``-1``. The
     printed (14.26) has the exponent ``h`` on the left, a misprint: only ``k``
     follows from the derivation and reproduces example 14-3. A closed form to check
-    :func:`power_flow` against.
+    :func:`power_flow` against; ``ratio`` and ``basic_efficiency`` broadcast (arrays give an
+    array, numbers a float).
 
     Examples
     --------
     >>> round(planetary_efficiency(4, 0.98), 5), round(planetary_efficiency(4, 0.98, "carrier"), 5)
     (0.985, 0.98492)
     """
-    i = float(ratio)
-    if i == 0 or not math.isfinite(i):
+    try:
+        i = np.asarray(ratio, float)
+    except (TypeError, ValueError):
+        raise TrainError(f"the planetary ratio must be a finite non-zero number, got {ratio!r}") \
+            from None  # fmt: skip
+    if not np.all(np.isfinite(i) & (i != 0)):
         raise TrainError(f"the planetary ratio must be finite and non-zero, got {ratio!r}")
     if driver not in ("gear", "carrier"):
         raise TrainError(f"driver must be 'gear' or 'carrier', got {driver!r}")
     k = 1 if driver == "gear" else -1
-    h = -1 if 0 < i < 1 else 1
-    h *= k
-    x = (1 - (1 - i) * basic_efficiency**h) / i
-    return x if k == 1 else 1 / x
+    h = np.where((0 < i) & (i < 1), -1.0, 1.0) * k
+    x = (1 - (1 - i) * np.asarray(basic_efficiency, float) ** h) / i
+    out = x if k == 1 else 1 / x
+    return float(out) if np.ndim(out) == 0 else out
 
 
 def self_locking_range(basic_efficiency: float) -> tuple[float, float]:

@@ -37,6 +37,7 @@ from numpy.typing import ArrayLike
 
 from gears.arguments import check_positive
 from gears.errors import GearError
+from gears.geometry import tip_diameter
 from gears.meshing import line_positions, pair_geometry
 
 __all__ = [
@@ -222,10 +223,15 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
                 helix_angle: ArrayLike = 0.0, internal: ArrayLike = False,
                 roughness: ArrayLike = 1.0, viscosity: ArrayLike = 30.0,
                 lubricant: str | float = "mineral", *, addendum: ArrayLike = 1.0,
-                tip_shortening: ArrayLike = True, errors: str = "raise") -> MeshLosses:  # fmt: skip
+                tip_shortening: ArrayLike = True, tip_alteration: Any = (0.0, 0.0),
+                errors: str = "raise") -> MeshLosses:  # fmt: skip
     """The mesh loss of many pairs at once, from their tooth data (ISO 21771 geometry by
     :func:`gears.meshing.pair_geometry` with the basic rack's ``addendum`` and
     ``tip_shortening`` as there; arrays broadcast).
+
+    ``tip_alteration`` ``(k1, k2)`` alters the tips beyond the rack's (modules, DIN 3960's k,
+    as :func:`gears.geometry.tip_diameter` takes it; a ring's tip relieved as
+    :class:`trains.Planetary` relieves it is a k2 < 0), arrays broadcast.
 
     With ``errors="mask"`` a pair whose loss the friction equation does not give (a loss
     reaching the power, no continuous mesh) gets efficiency 0 and its whole power as loss
@@ -258,7 +264,14 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
     rb1 = np.asarray(z1, float) * mt * np.cos(at) / 2.0
     rb2 = np.asarray(z2, float) * mt * np.cos(at) / 2.0
     tw = np.tan(np.radians(g.working_pressure_angle))
-    u_a, u_e, _ = line_positions(g.tip_diameter_1 / 2, g.tip_diameter_2 / 2, rb1, rb2, tw, s)
+    da1, da2 = g.tip_diameter_1, g.tip_diameter_2
+    k1, k2 = tip_alteration
+    if np.any(np.asarray(k1) != 0.0) or np.any(np.asarray(k2) != 0.0):  # from the rack's tips
+        k = np.asarray(g.tip_alteration, float)
+        da1 = tip_diameter(z1, module, x1, helix_angle, addendum, False, k + k1)
+        da2 = tip_diameter(z2, module, x2, helix_angle, addendum, internal,
+                           np.where(internal, 0.0, k) + k2)  # fmt: skip
+    u_a, u_e, _ = line_positions(da1 / 2, da2 / 2, rb1, rb2, tw, s)
     pb = np.pi * mt * np.cos(at)
     u_c = rb1 * tw
     beta_b = np.degrees(np.arcsin(np.sin(beta) * np.cos(np.radians(pressure_angle))))

@@ -49,6 +49,7 @@ import numpy as np
 from gears.errors import GearError
 from gears.meshing import default_threads
 from gears.search.cluster import dask_client, progress_callback
+from trains.design.combine import _COMBINE_FIELDS, _best_per_key, _combine_task, _score_order
 from trains.design.plan import _Plan, _plan
 from trains.design.ratios import (
     _place_keys,
@@ -113,6 +114,12 @@ class Gearbox:
         With a load: the gears' material, mm^3 and kg (:func:`trains.design.sizing.size_stages`).
     torques, speeds : tuple of float
         With a load: each stage's input torque (N m) and speed (rpm).
+    mesh_efficiency : float or None
+        With a load: the product of ``stage_efficiencies``.
+    stage_efficiencies : tuple of float
+        With a load: each stage's efficiency from its meshes at its load
+        (:func:`trains.design.sizing.stage_efficiency`: ISO/TR 14179-2 per mesh, Ozols (14.26)
+        for the stage; 0 where the friction equation does not give a mesh's loss).
     """
 
     stages: tuple[Candidate, ...]
@@ -127,6 +134,8 @@ class Gearbox:
     mass: float | None = None
     torques: tuple[float, ...] = ()
     speeds: tuple[float, ...] = ()
+    mesh_efficiency: float | None = None
+    stage_efficiencies: tuple[float, ...] = ()
 
     @property
     def modules(self) -> tuple[float, ...]:
@@ -146,7 +155,8 @@ class Gearbox:
         head = (f"ratio {self.ratio} (error {self.ratio_error:.2e}), ring {self.ring:g} mm, "
                 f"{self.teeth} teeth, efficiency {self.efficiency:.4f}")  # fmt: skip
         if self.volume is not None:
-            head += f", volume {self.volume / 1e3:.4g} cm^3, mass {self.mass:.4g} kg"
+            head += (f", volume {self.volume / 1e3:.4g} cm^3, mass {self.mass:.4g} kg, mesh "
+                     f"efficiency {self.mesh_efficiency:.4f}")  # fmt: skip
         return f"{head}: {' | '.join(parts)}"
 
 
@@ -193,31 +203,32 @@ class Gearboxes(list):
 
     def to_array(self) -> np.ndarray:
         """A numpy structured array: rank, ratio, error, ring, teeth, efficiency (with a load
-        also volume and mass) and, per stage ``s``, ``s_scheme``, ``s_z1``, ``s_z2``,
-        ``s_z2p``, ``s_z3``, ``s_planets`` (with a load also ``s_module``, ``s_face_width``,
-        ``s_S_H``, ``s_S_F``, ``s_torque``)."""
+        also volume, mass and mesh_efficiency) and, per stage ``s``, ``s_scheme``, ``s_z1``,
+        ``s_z2``, ``s_z2p``, ``s_z3``, ``s_planets`` (with a load also ``s_module``,
+        ``s_face_width``, ``s_S_H``, ``s_S_F``, ``s_torque``, ``s_efficiency``)."""
         k = len(self[0].stages) if self else 0
         rated = bool(self and self[0].face_widths)
         fields = [("rank", int), ("ratio", float), ("ratio_error", float), ("ring", float),
                   ("teeth", int), ("efficiency", float)]  # fmt: skip
         if rated:
-            fields += [("volume", float), ("mass", float)]
+            fields += [("volume", float), ("mass", float), ("mesh_efficiency", float)]
         for s in range(1, k + 1):
             fields += [(f"{s}_scheme", "U13"), (f"{s}_z1", int), (f"{s}_z2", int),
                        (f"{s}_z2p", int), (f"{s}_z3", int), (f"{s}_planets", int)]  # fmt: skip
             if rated:
                 fields += [(f"{s}_module", float), (f"{s}_face_width", float),
                            (f"{s}_S_H", float), (f"{s}_S_F", float),
-                           (f"{s}_torque", float)]  # fmt: skip
+                           (f"{s}_torque", float), (f"{s}_efficiency", float)]  # fmt: skip
         out = np.zeros(len(self), fields)
         for i, g in enumerate(self):
             row = [i + 1, float(g.ratio), g.ratio_error, g.ring, g.teeth, g.efficiency]
             if rated:
-                row += [g.volume, g.mass]
+                row += [g.volume, g.mass, g.mesh_efficiency]
             for j, c in enumerate(g.stages):
                 row += [c.scheme, *c.teeth, c.n_planets]
                 if rated:
-                    row += [c.module, g.face_widths[j], *g.safety[j], g.torques[j]]
+                    row += [c.module, g.face_widths[j], *g.safety[j], g.torques[j],
+                            g.stage_efficiencies[j]]  # fmt: skip
             out[i] = tuple(row)
         return out
 
@@ -285,9 +296,13 @@ def synthesize_gearbox(
         :data:`gears.rating.sizing.ISO54`): each stage takes the smallest that carries its load.
     objective : str, optional
         Without a torque ``"ring"`` (default: the smallest largest ring), ``"teeth"`` (fewest
-        teeth in total) or ``"efficiency"`` (highest); ties go to the next objectives in that
-        order. With a torque also ``"volume"`` (default: the least material in total, mm^3)
-        and ``"mass"`` (kg); ties then go to the volume.
+        teeth in total) or ``"efficiency"`` (highest, each mesh by Ozols (14.25) with friction
+        0.1); ties go to the next objectives in that order. With a torque also ``"volume"``
+        (default: the least material in total, mm^3), ``"mass"`` (kg) and
+        ``"mesh_efficiency"`` (highest: each stage's efficiency from its meshes at its load and
+        its module and face width, ISO/TR 14179-2 per mesh and Ozols (14.26) for the stage,
+        :func:`trains.design.sizing.stage_efficiency`; the gearbox's the product); ties then
+        go to the volume.
     top : int
         Gearboxes returned.
     full_checks : bool
@@ -443,6 +458,8 @@ def _stage_lists(runner, pool, plan: _Plan, names, target, k, tol, top) -> tuple
         design = _size(runner, pool, rid, keys, plan, names)
         rows, row_key = design["stage"], design["key"]
         feasible = design["ok"]
+        if plan.objective == "mesh_efficiency":  # a stage whose mesh loss is not given: no
+            feasible = feasible & (design["efficiency"] > 0.0)
     else:
         keys = list(range(len(ratios)))
         key_tuples = list(tuples)
@@ -503,7 +520,7 @@ def _size(runner: _Runner, pool, rid, keys, plan: _Plan, names) -> dict:
     offset = np.arange(key_ids.size) - np.repeat(np.cumsum(counts) - counts, counts)
     stage_ids = order[np.repeat(cuts[r], counts) + offset] if len(keys) else key_ids
     mult = np.repeat(np.array([float(key[1]) for key in keys]), counts)
-    fields = ("module", "face_width", "S_H", "S_F", "volume", "mass", "ring")
+    fields = ("module", "face_width", "S_H", "S_F", "volume", "mass", "ring", "efficiency")
     design = {f: np.zeros(stage_ids.size) for f in fields}
     design["ok"] = np.zeros(stage_ids.size, bool)
     scheme = pool["scheme"][stage_ids]
@@ -580,96 +597,10 @@ def _stage_table(pool, rows: np.ndarray, design, plan: _Plan, names) -> dict:
     for f in ("z1", "z2", "z2p", "z3", "k", "scheme", "num", "den", "total"):
         t[f] = pool[f][rows]
     t["eta"] = pool["eta"][rows] if "eta" in pool else np.zeros(rows.size)
+    t["mesh_eta"] = design["efficiency"] if design is not None else np.zeros(rows.size)
     t["alpha"] = np.array([_ALPHABET[s] for s in names], np.int64)[t["scheme"]] if rows.size \
         else np.empty(0, np.int64)  # fmt: skip
     return t
-
-
-def _head(objective: str, rated: bool, ring, teeth, vol, mass, eta) -> list:
-    """The leading score keys of an objective (most significant first)."""
-    if objective == "volume":
-        return [vol, ring, teeth]
-    if objective == "mass":
-        return [mass, vol, ring, teeth]
-    if objective == "ring":
-        return [ring, vol, teeth] if rated else [ring, teeth]
-    if objective == "teeth":
-        return [teeth, vol, ring] if rated else [teeth, ring]
-    return [-eta, vol, ring, teeth] if rated else [-eta, ring, teeth]
-
-
-def _best_per_key(t: dict, row_key, feasible, n_keys: int, plan: _Plan, top: int) -> list:
-    """For each key, its feasible rows of the table in objective order, the best ``4 top``
-    (the objectives are separable, so the best gearboxes combine only those)."""
-    rows = np.flatnonzero(feasible)
-    head = _head(plan.objective, plan.rated, t["ring"][rows], t["total"][rows],
-                 t["volume"][rows], t["mass"][rows], t["eta"][rows])  # fmt: skip
-    ident = [t[f][rows] for f in ("z1", "z2", "z2p", "z3", "scheme")] + [-t["k"][rows]]
-    order = rows[np.lexsort([*reversed([*head, *ident]), row_key[rows]])]
-    bounds = np.searchsorted(row_key[order], np.arange(n_keys + 1))
-    return [order[bounds[i] : bounds[i + 1]][: 4 * top] for i in range(n_keys)]
-
-
-def _score_order(t: dict, c: np.ndarray, err: np.ndarray, objective: str, rated: bool):
-    """The order of combinations ``c`` (table rows, one column per place) by score: the
-    objective, its tie-breakers, the ratio error, then each stage's identity (scheme name,
-    teeth, planets), as the unrated search always ranked."""
-    head = _head(objective, rated, *_columns(t, c))
-    ident = []
-    for j in range(c.shape[1]):
-        cj = c[:, j]
-        ident += [t[f][cj] for f in ("alpha", "z1", "z2", "z2p", "z3", "k", "module")]
-    return np.lexsort(list(reversed([*head, err, *ident])))
-
-
-def _combine_task(shared: tuple, key_tuples: np.ndarray, errors: np.ndarray, objective: str,
-                  rated: bool, keep: int) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
-    """The best ``keep`` combinations of a chunk of key tuples (a task; ``key_tuples`` an
-    (T, k) array, ``errors`` their ratio errors): each tuple's lists crossed, scored, reduced.
-    ``shared`` is ``(table, keys, sizes, flat)``, the same for every chunk: the rows the lists
-    name and the lists packed (key ``keys[i]`` owns ``sizes[i]`` rows of ``flat``, positions
-    in the table). Returns the combinations' ``row`` ids (an (n, k) array) and their ratio
-    errors, in score order."""
-    t, keys, sizes, flat = shared
-    c, tuple_of = _cross(keys, sizes, flat, key_tuples)
-    err = errors[tuple_of]
-    if len(c) > 2 * keep:  # only rows that can reach the best `keep` by the first key
-        first = _head(objective, rated, *_columns(t, c))[0]
-        near = first <= np.partition(first, keep - 1)[keep - 1]
-        c, err = c[near], err[near]
-    order = _score_order(t, c, err, objective, rated)[:keep]
-    return t["row"][c[order]], err[order]
-
-
-def _cross(keys: np.ndarray, sizes: np.ndarray, flat: np.ndarray,
-           key_tuples: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
-    """Every combination of each key tuple's lists (the rows per place, an (n, k) array), and
-    the index of the tuple each came from: all tuples at once, by mixed-radix counting. The
-    lists are packed: key ``keys[i]`` (ascending) owns ``sizes[i]`` entries of ``flat``."""
-    k = key_tuples.shape[1]
-    start = np.cumsum(sizes) - sizes
-    at = np.searchsorted(keys, key_tuples)  # (T, k) positions of the keys
-    radix, base = sizes[at], start[at]
-    count = radix.prod(axis=1)
-    tuple_of = np.repeat(np.arange(len(key_tuples)), count)
-    local = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
-    out = np.empty((local.size, k), np.int64)
-    for j in range(k - 1, -1, -1):  # the last place counts fastest
-        r = radix[tuple_of, j]
-        out[:, j] = flat[base[tuple_of, j] + local % r]
-        local = local // r
-    return out, tuple_of
-
-
-def _columns(t: dict, c: np.ndarray) -> tuple:
-    """``(ring, teeth, volume, mass, efficiency)`` of combinations ``c``."""
-    return (t["ring"][c].max(axis=1), t["total"][c].sum(axis=1), t["volume"][c].sum(axis=1),
-            t["mass"][c].sum(axis=1), np.prod(t["eta"][c], axis=1))  # fmt: skip
-
-
-#: the table columns a combination's score reads (:func:`_columns`, :func:`_score_order`)
-_COMBINE_FIELDS = ("row", "ring", "total", "volume", "mass", "eta", "alpha", "z1", "z2", "z2p",
-                   "z3", "k", "module")  # fmt: skip
 
 
 def _walk(runner, t, lists, key_tuples, errors, plan, top, full_checks, cr, names,
@@ -775,6 +706,8 @@ def _gearbox(combo, t, plan: _Plan, target, names) -> Gearbox:
         mass=float(sum(t["mass"][r] for r in rows)),
         torques=tuple(float(t["torque"][r]) for r in rows),
         speeds=tuple(float(t["speed"][r]) for r in rows),
+        mesh_efficiency=math.prod(float(t["mesh_eta"][r]) for r in rows),
+        stage_efficiencies=tuple(float(t["mesh_eta"][r]) for r in rows),
     )  # fmt: skip
 
 

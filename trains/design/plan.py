@@ -19,7 +19,7 @@ from gears.rating.sizing import ISO54, load_case
 from trains.errors import TrainError
 
 _OBJECTIVES = ("ring", "teeth", "efficiency")
-_RATED_OBJECTIVES = ("volume", "mass", "ring", "teeth", "efficiency")
+_RATED_OBJECTIVES = ("volume", "mass", "ring", "teeth", "efficiency", "mesh_efficiency")
 
 
 def _positive_list(name: str, value, what: str) -> np.ndarray:
@@ -71,7 +71,7 @@ def _plan(objective, module, torque, speed, material, face_width, life, min_safe
         objective = "ring" if objective is None else objective
         if objective not in _OBJECTIVES:
             raise TrainError(f"objective = {objective!r}; valid are {list(_OBJECTIVES)} (with "
-                             f"a torque also 'volume' and 'mass')")  # fmt: skip
+                             f"a torque also 'volume', 'mass' and 'mesh_efficiency')")  # fmt: skip
         m = 1.0 if module is None else module
         if (
             isinstance(m, bool)

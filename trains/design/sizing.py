@@ -15,6 +15,10 @@ load and, at that module, the smallest face width of a set: every mesh is rated 
 * a ring whose tip reaches the planet's fillet is relieved as :class:`trains.Planetary`
   relieves it (``ring_tip_relief``: the tip circle enlarged to the limit, rounded up to 1 um).
 
+With its module and face width, :func:`stage_efficiency` gives the stage's efficiency from its
+meshes at the load (ISO/TR 14179-2 per mesh, combined by Ozols (14.26)); :func:`size_stages`
+returns it for every stage it sizes.
+
 The stage's volume counts the sun, ``k`` planets (both gears of a stepped planet) and the ring
 (:func:`gears.rating.sizing.gear_volume`: pitch cylinders, a ring's annulus out to its rim).
 """
@@ -24,12 +28,21 @@ from __future__ import annotations
 import numpy as np
 
 from gears.rack import BasicRack
+from gears.rating.losses import pair_losses
 from gears.rating.sizing import Load, gear_volume, rate
 from trains.capacity import LOAD_SHARING
 from trains.planetary.checks import ring_tip_alteration
 from trains.planetary.schemes import canonical_scheme
+from trains.power import planetary_efficiency
 
-__all__ = ["MODULE_WINDOW", "ring_tip_alteration", "size_stages", "stage_gears", "stage_meshes"]
+__all__ = [
+    "MODULE_WINDOW",
+    "ring_tip_alteration",
+    "size_stages",
+    "stage_efficiency",
+    "stage_gears",
+    "stage_meshes",
+]
 
 #: modules rated at once for the stages still without one (the first that carries a stage is
 #: its module: most stages find it within the first window)
@@ -118,7 +131,8 @@ def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, t
     Returns a dict of arrays of the inputs' broadcast shape: ``module_index`` and
     ``width_index`` (-1 where no module of the list carries it), ``module``, ``face_width``
     (mm), ``S_H``, ``S_F`` (the smallest safety of any gear of any mesh), ``volume`` (mm^3),
-    ``mass`` (kg) and ``ring`` (the ring's reference diameter, mm); NaN-free (0 where it does
+    ``mass`` (kg), ``ring`` (the ring's reference diameter, mm) and ``efficiency`` (the
+    stage's, :func:`stage_efficiency` at its module and face width); NaN-free (0 where it does
     not carry).
     """
     scheme = canonical_scheme(scheme)
@@ -162,12 +176,59 @@ def size_stages(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, t
         v = gear_volume(teeth, m_of, b_of, 0.0, internal, 0.0, rack.dedendum) * copies
         volume += np.where(found, v, 0.0)
     mass = volume * density
+    eta = np.zeros(n)
+    if found.any():
+        f = np.flatnonzero(found)
+        eta[f] = stage_efficiency(load, scheme, z1[f], z2[f], z2p[f], z3[f], k[f], num[f], den[f],
+                                  torque[f], speed[f], m_of[f], b_of[f], rack)  # fmt: skip
     out = {
         "module_index": mi, "width_index": wi, "module": m_of, "face_width": b_of,
         "S_H": s_h, "S_F": s_f, "volume": volume, "mass": mass,
-        "ring": np.asarray(z3, float) * m_of,
+        "ring": np.asarray(z3, float) * m_of, "efficiency": eta,
     }  # fmt: skip
     return {key: v.reshape(shape) for key, v in out.items()}
+
+
+def stage_efficiency(load: Load, scheme: str, z1, z2, z2p, z3, n_planets, num, den, torque,
+                     speed, module, face_width, rack: BasicRack | None = None):  # fmt: skip
+    """The efficiency of zero-shift stages (ring fixed, sun in, carrier out; arrays broadcast)
+    from their meshes at the load: each mesh's ISO/TR 14179-2 efficiency
+    (:func:`gears.rating.losses.pair_losses`, the load's flank roughness and
+    :meth:`gears.GearPair.efficiency`'s oil) at its torque per planet and its speed relative to
+    the carrier (:func:`stage_meshes`: the lossless flow, as the sizing rates them), the ring's
+    tip relieved as :class:`trains.Planetary` relieves it; their product is the basic
+    efficiency eta_0 of the stage in the carrier frame, and the stage's is Ozols (14.26),
+    :func:`trains.power.planetary_efficiency` of the stage ratio ``num/den`` (sun driving), as
+    :meth:`trains.Planetary.efficiency` finds it with those mesh efficiencies. ``torque`` in
+    N m on the sun, ``speed`` in rpm, ``module`` and ``face_width`` in mm.
+
+    Returns the efficiencies: at most 1, in (0, 1] for a reduction (``num/den > 1``, the
+    gearbox search's stages); at or below 0 where a stage locks (a step-up or negative ratio
+    with a poor eta_0, Ozols (14.27)); 0 where the friction equation does not give a mesh's
+    loss (a loss reaching its power, no continuous mesh).
+
+    >>> from gears.rating.sizing import load_case
+    >>> round(float(stage_efficiency(load_case(60, 1500), "simple", 20, 31, 31, 82, 3, 102,
+    ...                              20, 60, 1500, 2.0, 20.0)), 4)   # Planetary.efficiency: 0.9894
+    0.9894
+    """
+    scheme = canonical_scheme(scheme)
+    rack = rack or BasicRack.iso53()
+    m, b = np.asarray(module, float), np.asarray(face_width, float)
+    torque, speed = np.asarray(torque, float), np.asarray(speed, float)
+    eta0 = 1.0
+    ok = True
+    for ms in stage_meshes(scheme, z1, z2, z2p, z3, n_planets, num, den):
+        relief = ring_tip_alteration(ms["z1"], ms["z2"], m, rack) if ms["internal"] else 0.0
+        r = pair_losses(torque * ms["torque"], speed * np.abs(ms["speed"]), ms["z1"], ms["z2"],
+                        m, b, pressure_angle=rack.pressure_angle, internal=ms["internal"],
+                        roughness=load.options.get("roughness", 1.0), addendum=rack.addendum,
+                        tip_alteration=(0.0, relief), errors="mask")  # fmt: skip
+        eta0 = eta0 * r.efficiency
+        ok = ok & (r.efficiency > 0.0)
+    ratio = np.asarray(num, float) / np.asarray(den, float)
+    eta = planetary_efficiency(np.where(ok, ratio, 2.0), np.where(ok, eta0, 1.0))
+    return np.where(ok, eta, 0.0)[()]
 
 
 def _window(load, meshes, pending, window, lo, widths, torque, speed, k_gamma, rack, mi, wi,

@@ -154,9 +154,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--module", "-m", type=positive("--module", "mm"), nargs="+", default=None,
                    help="module of every stage (default 1); with --torque the modules to choose "
                    "from (default the ISO 54 series I)")  # fmt: skip
-    g.add_argument("--objective", choices=("ring", "teeth", "efficiency", "volume", "mass"),
-                   default=None,
-                   help="what to minimise (default ring; with --torque volume)")  # fmt: skip
+    g.add_argument("--objective", default=None,
+                   choices=("ring", "teeth", "efficiency", "volume", "mass", "mesh_efficiency"),
+                   help="what to minimise (default ring; with --torque volume; mesh_efficiency: "
+                   "the highest efficiency from the meshes at the load)")  # fmt: skip
     load_arguments(g, "each stage")
     _common(g)
 

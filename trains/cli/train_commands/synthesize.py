@@ -139,8 +139,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "every stage of --scheme, ring fixed, sun in, carrier out; as 'search gearbox')",
     )  # fmt: skip
     parser.add_argument(
-        "--objective", choices=("ring", "teeth", "efficiency", "volume", "mass"), default=None,
-        help="with --stages: what to minimise (default ring; with --torque volume)",
+        "--objective", default=None,
+        choices=("ring", "teeth", "efficiency", "volume", "mass", "mesh_efficiency"),
+        help="with --stages: what to minimise (default ring; with --torque volume; "
+        "mesh_efficiency: the highest efficiency from the meshes at the load, ISO/TR 14179-2)",
     )  # fmt: skip
     load_arguments(parser, "each stage (with --stages)")
     dask_arguments(parser)
