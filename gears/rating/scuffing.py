@@ -332,12 +332,15 @@ def integral_scuffing_temperature(stage, viscosity_40, welding=1.0, lubricant=1.
     """Scuffing integral temperature of the integral method from the FZG test:
     theta_intS = theta_MT + C_2 X_WrelT theta_flaintT with the test's bulk temperature
     theta_MT = 80 + 0.23 T_1T X_L and mean flash temperature theta_flaintT = 0.2 T_1T
-    (100/nu_40)^0.02 X_L (T_1T the pinion torque of the stage, N m; deg C).
+    (100/nu_40)^0.02 X_L, where T_1T = 3.726 S_FZG^2 N m is the method's fit of the test's
+    pinion torque (ISO/TR 13989-2:2000 Eq. (94)-(97); within 0.5 % of :data:`FZG_TORQUES`
+    from stage 7 up, equal at stage 10); deg C.
 
     >>> round(float(integral_scuffing_temperature(12, 100.0)), 2)
-    363.29
+    364.37
     """
-    t = fzg_torque(stage)
+    s = _number("fzg_stage", stage, 1.0, len(FZG_TORQUES), False, False, integer=True)
+    t = 3.726 * np.square(np.asarray(s, float))
     theta_mt = 80.0 + 0.23 * t * lubricant
     theta_flat = 0.2 * t * (100.0 / np.asarray(viscosity_40, float)) ** 0.02 * lubricant
     return theta_mt + C_2 * np.asarray(welding, float) * theta_flat
@@ -439,7 +442,10 @@ def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_
     x_l = oil.lubricant_factor
     mu_m = flash_friction(w_bt, roughness, eta, v_sum, rho_red, x_l)
     k_bg = helical_load_factor(eps_alpha + eps_beta)
-    mu_c = integral_friction(w_bt, k_bg, roughness, eta, v_sum, rho_red, x_l)
+    # the integral method's sum of the rolling speeds at C with v on the reference circle,
+    # 2 v tan(alpha_wt) cos(alpha_t) (ISO/TR 13989-2 Eq. (2)): 2 omega_1 rho_1C exactly
+    v_sum_c = 2.0 * v * tw * np.cos(at)
+    mu_c = integral_friction(w_bt, k_bg, roughness, eta, v_sum_c, rho_red, x_l)
     x_ab = angle_factor(np.degrees(awt), np.degrees(an), np.degrees(at), np.degrees(beta))
     # the flash temperature per unit friction at every point of the path
     pts, weights = _path(gamma_a, gamma_e - pitch, gamma_a + pitch, gamma_e)
@@ -460,7 +466,7 @@ def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_
     theta_b = theta_m + theta_flmax
     theta_s = scuffing_temperature(oil.fzg_stage, welding, x_l)
     theta_flaint = mu_c * k_bg**0.75 * mean
-    theta_m_int = theta_oil + C_1 * x_mp * theta_flaint
+    theta_m_int = theta_oil + C_1 * LUBRICATION[oil.lubrication] * x_mp * theta_flaint
     theta_int = theta_m_int + C_2 * theta_flaint
     theta_ints = integral_scuffing_temperature(oil.fzg_stage, oil.viscosity_40, welding, x_l)
     return {

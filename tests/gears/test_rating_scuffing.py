@@ -1,11 +1,14 @@
 """Scuffing by the flash temperature method (ISO/TS 6336-20) and the integral temperature method
 (ISO/TS 6336-21): gears.rating.scuffing and GearPair.rating(scuffing=...).
 
-No published worked example of either method could be read here, so the formulas are checked by
-other routes: Blok's flash temperature computed from its physics (Hertz band width, rolling
-speeds) against the standard's closed form, the path means against adaptive quadrature, the
-limits (no flash temperature at the pitch point or at rest, safeties falling with the load),
-and the FZG test A/8.3/90 itself, from which both methods take their scuffing temperatures.
+No published worked example of either method could be read here. The pieces of ISO/TR 13989-1/-2
+(the documents ISO/TS 6336-20/-21 come from) that an open implementation quotes with their
+equation and table numbers (hakangunes258/mekanika on GitHub, Services/Iso13989*.cs) are checked
+against those quotes below; the rest is checked by other routes: Blok's flash temperature
+computed from its physics (Hertz band width, rolling speeds) against the standard's closed form,
+the path means against adaptive quadrature, the limits (no flash temperature at the pitch point
+or at rest, safeties falling with the load), and the FZG test A/8.3/90 itself, from which both
+methods take their scuffing temperatures.
 """
 
 from __future__ import annotations
@@ -36,6 +39,42 @@ from gears.rating.scuffing import (
 )
 
 OIL = Oil(fzg_stage=9, temperature=80, viscosity_40=100, viscosity_100=11)
+
+
+def test_angle_factor_iso_tr_13989_2_table_2():
+    # ISO/TR 13989-2:2000 Table 2 (as quoted with Eq. (13) by hakangunes258/mekanika,
+    # Services/Iso13989IntegralTemperature.cs): X_alphabeta = 0.978 at alpha_wt = 20 deg,
+    # beta = 0 and 0.966 at alpha_wt = 20 deg, beta = 20 deg (alpha_n = 20 deg, so alpha_t =
+    # atan(tan 20 / cos 20) = 21.173 deg); the table's three decimals: within 5e-4
+    alpha_t = math.degrees(math.atan(math.tan(math.radians(20)) / math.cos(math.radians(20))))
+    assert float(angle_factor(20, 20, 20, 0)) == pytest.approx(0.978, abs=5e-4)
+    assert float(angle_factor(20, 20, alpha_t, 20)) == pytest.approx(0.966, abs=5e-4)
+
+
+def test_integral_method_iso_tr_13989_2():
+    # ISO/TR 13989-2:2000 as quoted by hakangunes258/mekanika (Services/
+    # Iso13989IntegralTemperature.cs): the bulk temperature theta_M = theta_oil + C_1 X_mp
+    # theta_flaint X_S, Eq. (20) (X_S = 1.2 for spray lubrication), and the friction's sum
+    # velocity v_SigmaC = 2 v tan(alpha_wt) cos(alpha_t), Eq. (2)
+    spray = Oil(fzg_stage=9, temperature=80, viscosity_40=100, viscosity_100=11,
+                lubrication="spray")  # fmt: skip
+    r = _pair().rating(150, 1500, scuffing=spray, roughness=0.5).scuffing
+    assert float(r.theta_M_int) == pytest.approx(80 + 0.7 * 1.2 * float(r.theta_flaint), rel=1e-12)
+    # a profile-shifted pair: mu_mC ~ v_SigmaC^-0.2, so against 2 v sin(alpha_wt) (right only
+    # without shift) the friction differs by (tan(alpha_wt) cos(alpha_t) / sin(alpha_wt))^-0.2
+    pair = _pair()
+    awt = math.radians(pair.working_pressure_angle)
+    at = math.atan(math.tan(math.radians(20)))
+    out = rate_scuffing(20, 50, 3, 30, 150, 1500, x1=0.2, oil=OIL, roughness=0.5)
+    r_oil = pair.rating(150, 1500, scuffing=OIL, roughness=0.5, oil_viscosity=100).scuffing
+    assert float(out.mu_mC) == pytest.approx(float(r_oil.mu_mC), rel=1e-9)
+    w, eta = float(out.w_Bt), float(out.eta_oil)
+    u = 50 / 20
+    rho = u / (1 + u) ** 2 * float(pair.center_distance) * math.sin(awt)
+    v = math.pi * 60 * 1500 / 60000
+    x_r = 2.2 * (0.5 / rho) ** 0.25
+    mu = 0.045 * (w / (2 * v * math.tan(awt) * math.cos(at) * rho)) ** 0.2 * eta**-0.05 * x_r
+    assert float(out.mu_mC) == pytest.approx(mu, rel=1e-9)
 
 
 def test_steel_thermoelastic_factor():
@@ -169,9 +208,10 @@ def test_temperatures_assemble():
     assert float(r.S_B) == pytest.approx(s_b, rel=1e-12)
     assert float(r.theta_int) == pytest.approx(80 + 2.2 * float(r.theta_flaint), rel=1e-12)
     assert float(r.S_intS) == pytest.approx(float(r.theta_intS) / float(r.theta_int), rel=1e-12)
-    # theta_intS = 80 + 0.23 T_1T + 1.5 * 0.2 T_1T (100/nu_40)^0.02 at stage 9 (T_1T 302 N m)
+    # theta_intS = 80 + 0.23 T_1T + 1.5 * 0.2 T_1T (100/nu_40)^0.02 at stage 9 with
+    # T_1T = 3.726 * 9^2 = 301.806 N m (ISO/TR 13989-2:2000 Eq. (94)-(97))
     assert float(integral_scuffing_temperature(9, 100.0)) == pytest.approx(
-        80 + 0.23 * 302.0 + 1.5 * 0.2 * 302.0, rel=1e-12
+        80 + 0.23 * 301.806 + 1.5 * 0.2 * 301.806, rel=1e-12
     )
 
 
