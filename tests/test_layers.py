@@ -46,6 +46,7 @@ LAYERS = {
             "contact.compliance",
             "contact.modification",
             "worm.crossed",
+            "worm.envelope",
             "noncircular.centrode",
             "noncircular.cycloid",
         ],

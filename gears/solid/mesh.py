@@ -48,6 +48,7 @@ from gears.errors import GearError
 __all__ = [
     "gear_solid",
     "helix_twist",
+    "loft_solid",
     "scene",
     "slice_count",
     "solid_levels",
@@ -313,6 +314,39 @@ def gear_solid(
     cap = _cap(rings)
     faces = np.concatenate([cap[:, ::-1], side, cap + (levels - 1) * n_pts])
     return trimesh.Trimesh(v, faces, process=False)
+
+
+def loft_solid(levels):
+    """A watertight solid through planar rings stacked along +z: ``levels`` is an array
+    ``(L, N, 3)`` of ``L >= 2`` closed rings of ``N`` vertices each (the closing vertex not
+    repeated), each ring at one height, the heights increasing, counter-clockwise seen from +z,
+    vertex ``i`` of one ring joined to vertex ``i`` of the next by quads; the end rings are
+    capped (:func:`_cap`). Welded and consistently wound with outward normals, by construction.
+
+    Examples
+    --------
+    >>> sq = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])
+    >>> lv = np.stack([np.column_stack([sq, np.full(4, z)]) for z in (0.0, 1.0, 2.0)])
+    >>> m = loft_solid(lv)
+    >>> m.is_watertight, round(float(m.volume), 12)
+    (True, 8.0)
+    """
+    trimesh = _trimesh()
+    v = np.asarray(levels, dtype=float)
+    if v.ndim != 3 or v.shape[0] < 2 or v.shape[1] < 3 or v.shape[2] != 3:
+        raise GearError(f"levels of shape {v.shape}; valid is (L >= 2, N >= 3, 3)")
+    if not np.all(np.isfinite(v)):
+        raise GearError("levels hold a coordinate that is not finite")
+    n_lv, n = v.shape[:2]
+    i = np.arange(n)
+    j = np.roll(i, -1)
+    k = (np.arange(n_lv - 1) * n)[:, None]
+    a, b, c, d = i + k, j + k, j + k + n, i + k + n
+    side = np.stack([np.stack([a, b, c], -1), np.stack([a, c, d], -1)], -2).reshape(-1, 3)
+    cap = _cap([v[0, :, :2]])
+    top = _cap([v[-1, :, :2]])
+    faces = np.concatenate([cap[:, ::-1], side, top + (n_lv - 1) * n])
+    return trimesh.Trimesh(v.reshape(-1, 3), faces, process=False)
 
 
 def transform(angle: float = 0.0, center=(0.0, 0.0), z: float = 0.0) -> np.ndarray:

@@ -423,9 +423,10 @@ class WormPair:
     def wheel_mesh(
         self, tolerance: float = 0.01, progress: Callable[[int, int], object] | None = None
     ) -> trimesh.Trimesh:
-        """The wheel cut by simulated hobbing with this worm as the hob, a watertight mesh in
-        its own frame (axis +z, mid-plane z = 0), its flanks within ``tolerance`` mm of the
-        hob's envelope (:func:`gears.worm.solid.wheel_solid`); ``progress(done, total)``."""
+        """The wheel this worm cuts as a hob, a watertight mesh in its own frame (axis +z,
+        mid-plane z = 0): its flanks the envelope of the worm's thread in closed form, plane by
+        plane, within ``tolerance`` mm (:func:`gears.worm.solid.wheel_solid`);
+        ``progress(done, total)``."""
         key = ("wheel", check_tolerance(tolerance, module=self.module))
         if key not in self._solids:
             self._solids[key] = wheel_solid(self, key[1], progress=progress)
@@ -446,9 +447,9 @@ class WormPair:
         self, angle: float = 0.0, tolerance: float = 0.02,
         progress: Callable[[int, int], object] | None = None,
     ) -> trimesh.Scene:  # fmt: skip
-        """The worm and the hobbed wheel in mesh at zero backlash (``angle``: the worm's turn,
-        degrees; at the hob's own positions, every ``360 / (N z_1)`` degrees with ``N`` of
-        :func:`gears.worm.solid.hob_positions`, the two have no volume in common)."""
+        """The worm and its wheel in mesh at zero backlash (``angle``: the worm's turn,
+        degrees, the wheel following by ``angle z_1 / z_2``): the flanks touch along their
+        contact lines, with no volume in common beyond the chords of the tolerance."""
         worm_at, wheel_at = self.placements(angle)
         wheel = self.wheel_mesh(tolerance, progress)
         return scene([

@@ -1,5 +1,5 @@
-"""Layer 8, worm solids: the worm as a helicoid solid and the wheel cut by simulated hobbing
-(the worm acting as the hob: an enveloping, throated wheel), placed in mesh.
+"""Layer 8, worm solids: the worm as a helicoid solid and the wheel built on the envelope of its
+thread (the worm acting as the hob: an enveloping, throated wheel), placed in mesh.
 
 Frames (the scene's and :func:`worm_placement`'s): the wheel's axis is +z through the origin;
 the worm's axis runs along +x through ``(0, a, 0)`` (``a`` the centre distance). In its own
@@ -12,28 +12,21 @@ the scene, so the pair is a right-handed frame.
 :func:`gears.solid.mesh.gear_solid` (slices from the tolerance; welded and watertight by
 construction) and trimmed to its threaded length.
 
-**The wheel** is a blank of revolution (the throat, a torus of radius ``r_k`` about the worm's
-axis, up to the outside diameter ``d_e2``, over the face width ``b_2``) from which a hob cuts the
-teeth: the worm with its tips lengthened by the bottom clearance ``c* m`` (so it cuts the
-wheel's root, ``d_f2``), turned by ``phi_1`` while the wheel turns by ``phi_2 = phi_1 z_1 / z_2``
-(Ozols (21.45); a left hand turns the other way). One angular pitch of the wheel suffices: turning
-the wheel by ``2 pi / z_2`` turns the hob by ``2 pi / z_1``, a symmetry of its ``z_1`` threads, so
-the hob's positions over one pitch, repeated ``z_2`` times about the wheel's axis, are all its
-positions. Those positions are united (manifold3d), cut into the sectors of the teeth and turned
-into one sector (each piece widened by a tenth of a pitch, so that the copies overlap instead of
-touching: one tooth space), and the union of the ``z_2`` copies of that space is subtracted from
-the blank.
-
-The hob's positions leave scallops on the flanks: between two positions the tooth moves by
-``s = pi m / N`` along the wheel's reference circle, and a flank of curvature radius
-``rho`` keeps a ridge of height ``s^2 / (8 rho)`` (the chord sag of the generating positions,
-the same law as the rack's simulated cutting). :func:`hob_positions` takes ``N`` from the
-tolerance with ``rho`` the smallest radius of curvature of the mid-plane flank
-(``r_b2 tan alpha`` at the root form circle, at least one module), doubled: off the mid-plane
-the ridges grow (measured against a dense simulation).
-
-At the hob's own positions the worm fills exactly the space it cut: the pair placed at
-``phi_1 = 0`` (a position of the hob) has no volume in common at zero backlash.
+**The wheel** is built directly on its exact surfaces, without booleans. In every plane
+``z = zeta`` of the wheel the worm's thread is a rack rolling on the wheel's pitch circle
+(:mod:`gears.worm.envelope`), so the wheel's section there is known in closed form: one point
+of its flank for each point of the hob's flank (the hob: the worm with its tips lengthened by
+the bottom clearance ``c* m``, so that it cuts the wheel's root ``d_f2``), the root fillets the
+trochoids of the hob's tip corners, the root an arc of the hob's tip line
+``a - sqrt(r_t^2 - zeta^2)`` and the tip an arc of the throat ``a - sqrt(r_k^2 - zeta^2)`` (at
+most ``d_e2 / 2``). Where the fillet cuts the flank (undercut) the two are joined at their
+crossing; where the flank's contact lies above the tip (near the faces) the hob's corner alone
+cuts that side; where a tooth would come to a point below the throat (few teeth, off the
+mid-plane) its tip is lowered to a land of one tolerance. Every plane's section is sampled with
+the same parameters, so the sections stack into a loft of quads with planar caps at the faces
+(:func:`gears.solid.mesh.loft_solid`): welded, watertight and wound outwards by construction.
+The sampling: chords within half the tolerance in every plane, and planes halved until the
+loft between two planes misses the exact section midway by at most the other half.
 """
 
 from __future__ import annotations
@@ -46,10 +39,10 @@ import shapely
 from gears.arguments import check_callback, check_tolerance
 from gears.budget import check_budget
 from gears.errors import GearError
-from gears.solid.mesh import gear_solid, solid_levels, to_manifold
+from gears.solid.mesh import gear_solid, loft_solid, solid_levels, to_manifold
+from gears.worm.envelope import plane_rack, rack_conjugate, rolled
 
 __all__ = [
-    "hob_positions",
     "wheel_blank",
     "wheel_estimate",
     "wheel_solid",
@@ -58,9 +51,6 @@ __all__ = [
     "worm_section",
     "worm_solid",
 ]
-
-#: The most hob positions one pitch of the wheel takes, however fine the tolerance.
-MAX_POSITIONS = 400
 
 
 def _trimesh():
@@ -239,26 +229,6 @@ def wheel_blank(pair, tolerance: float):
     return section.revolve(circular_segments=segments)
 
 
-def hob_positions(pair, tolerance: float) -> int:
-    """Hob positions over one angular pitch of the wheel that keep the flanks' scallops within
-    ``tolerance`` (module docstring): twice ``pi m / sqrt(8 rho tolerance)``. The mid-plane law
-    alone left the flanks 1.3 times the tolerance off a dense simulation 3 mm off the mid-plane
-    (z1 1, z2 10, m 2, tolerance 0.1 mm: 0.131 mm); twice the count gave 0.097 mm."""
-    g = pair.geometry
-    rb2 = float(g.wheel_diameter) / 2.0 * math.cos(math.radians(float(g.axial_pressure_angle)))
-    rf2 = float(g.wheel_root_diameter) / 2.0
-    rho = max(math.sqrt(max(rf2**2 - rb2**2, 0.0)), pair.module)
-    s = math.sqrt(8.0 * rho * tolerance)
-    return int(min(max(math.ceil(2.0 * math.pi * pair.module / s), 2), MAX_POSITIONS))
-
-
-def _hob_matrix(pair, phi1: float) -> np.ndarray:
-    """4x4: the hob's own frame turned by ``phi1`` (rad) about its axis, placed at the centre
-    distance, then the scene turned back by the wheel's ``phi2`` (the hob in the wheel's
-    frame)."""
-    return worm_placement(pair, phi1, -1.0)
-
-
 def worm_placement(pair, phi1: float, wheel_sign: float = 1.0) -> np.ndarray:
     """4x4 placing the worm turned by ``phi1`` radians about its axis in the scene's frame
     (module docstring); with ``wheel_sign = -1`` the same seen from the wheel turned by
@@ -279,87 +249,524 @@ def worm_placement(pair, phi1: float, wheel_sign: float = 1.0) -> np.ndarray:
     return out
 
 
-def _sector(angle0: float, angle1: float, radius: float, height: float):
-    """A wedge about +z from ``angle0`` to ``angle1`` (rad, < pi apart) as a Manifold."""
-    import manifold3d
+# --- the wheel: its flanks as the envelope of the worm's thread (gears.worm.envelope) ----------
 
-    r = 2.0 * radius
-    pts = [(0.0, 0.0)] + [(r * math.cos(t), r * math.sin(t))
-                          for t in np.linspace(angle0, angle1, 5)]  # fmt: skip
-    return manifold3d.Manifold.extrude(
-        manifold3d.CrossSection([np.asarray(pts, float)]), 2.0 * height
-    ).translate((0.0, 0.0, -height))
+
+class _Wheel:
+    """The numbers of one pair that the wheel's construction needs (mm, radians)."""
+
+    def __init__(self, pair) -> None:
+        g = pair.geometry
+        self.m = pair.module
+        self.a = float(g.center_distance)
+        self.r2 = float(g.wheel_diameter) / 2.0
+        self.screw = float(g.lead) / (2.0 * math.pi) * (1.0 if pair.hand == "right" else -1.0)
+        self.rt = _hob_tip(pair)
+        self.rf = float(g.worm_root_diameter) / 2.0
+        self.rk = float(g.throat_radius)
+        self.re2 = float(g.wheel_outside_diameter) / 2.0
+        self.z2 = pair.wheel_teeth
+        self.pitch = 2.0 * math.pi / self.z2
+        self.half_face = pair.face_width / 2.0
+        # the space of tooth 0 lies about this angle (the thread's centre at the pitch line)
+        self.ref = math.pi / 2.0 - self.screw * math.pi / self.r2
+        # the axial section once, as a cubic spline (its error is below 1e-12 mm at this count;
+        # ZI's base cylinder, where the involute starts with h' = 0, stays C1)
+        from scipy.interpolate import CubicSpline
+
+        pad = 0.01 * self.m
+        r = np.linspace(self.rf - pad, self.rt + pad, 8193)
+        self._spline = CubicSpline(r, np.asarray(pair.axial_profile(r), float))
+        self._slope = self._spline.derivative()
+        self._limits: dict[tuple, np.ndarray] = {}
+
+    def half(self, r):
+        return self._spline(r)
+
+    def slope(self, r):
+        return self._slope(r)
+
+    def tip(self, zeta):
+        """The wheel's tip radius in the plane ``zeta``: the throat, at most ``d_e2 / 2``."""
+        zeta = np.asarray(zeta, float)
+        throat = self.a - np.sqrt(np.maximum(self.rk**2 - zeta**2, 0.0))
+        return np.where(np.abs(zeta) < self.rk, np.minimum(throat, self.re2), self.re2)
+
+    def root(self, zeta):
+        """The root radius in the plane ``zeta``: the hob's tip line."""
+        return self.a - np.sqrt(self.rt**2 - np.asarray(zeta, float) ** 2)
+
+    def flank(self, zeta, depth, side):
+        """The wheel's flank conjugate to the hob's at ``depth`` (the worm's own ``X``):
+        ``(x, y, u)`` (:func:`gears.worm.envelope.rack_conjugate`)."""
+        r = np.hypot(depth, zeta)
+        x, y, nx, ny = plane_rack(zeta, depth, side, self.half(r), self.slope(r), self.a,
+                                  self.screw)  # fmt: skip
+        return rack_conjugate(x, y, nx, ny, self.r2)
+
+    def corner_depth(self, zeta):
+        return -np.sqrt(self.rt**2 - np.asarray(zeta, float) ** 2)
+
+    def corner(self, zeta, side):
+        d = self.corner_depth(zeta)
+        r = np.hypot(d, zeta)
+        x, y, _, _ = plane_rack(zeta, d, side, self.half(r), 0.0, self.a, self.screw)
+        return x, y
+
+    def trochoid(self, zeta, t, side):
+        """The root fillet drawn by the hob's tip corner, from the root circle (``t = 0``)."""
+        cx, cy = self.corner(zeta, side)
+        return rolled(cx, cy, -cx + side * np.asarray(t, float), self.r2)
+
+    def upper(self, zeta, side, rows, g):
+        """The upper piece of a side of the tooth space, at the normalised parameters ``g``:
+        over ``rows[..., 1:3]``, the flank's depths (``rows[..., 3] == 0``) or, where the flank
+        stays above the tip and the hob's corner alone cuts that side, the fillet's ``t``
+        continued (``== 1``). ``rows`` broadcasts against ``zeta`` (one row a plane)."""
+        rows = np.asarray(rows, float)
+        b0, b1, kind = rows[..., 1:2], rows[..., 2:3], rows[..., 3:4] > 0.5
+        par = b0 + (b1 - b0) * np.asarray(g, float)
+        fx, fy, _ = self.flank(zeta, np.where(kind, self.corner_depth(zeta), par), side)
+        tx, ty = self.trochoid(zeta, np.where(kind, par, 0.0), side)
+        return np.where(kind, tx, fx), np.where(kind, ty, fy)
+
+    def limits(self, zetas, land: float) -> np.ndarray:
+        """The rows of :func:`_side_limits` of both sides in each plane ``zetas``,
+        ``(planes, 2, 4)``, with the tip lowered to a land of ``land`` where the tooth would be
+        pointed (:func:`_tip_land`); cached by plane."""
+        zetas = np.asarray(zetas, float)
+        new = np.array([z for z in np.unique(zetas) if (float(z), land) not in self._limits])
+        if len(new):
+            lim = np.stack([_limits_batch(self, new, s) for s in (1.0, -1.0)], 1)
+            _tip_land(self, new, lim, land)
+            for z, row in zip(new, lim, strict=True):
+                self._limits[(float(z), land)] = row
+        return np.array([self._limits[(float(z), land)] for z in zetas])
+
+    def angle(self, x, y):
+        """Polar angles about the space of tooth 0, continuous over it."""
+        c, s = math.cos(self.ref), math.sin(self.ref)
+        return self.ref + np.arctan2(c * y - s * x, c * x + s * y)
+
+
+def _exit(radius_of, lo: float, hi: float, target: float) -> float:
+    """The parameter in ``[lo, hi]`` at which ``radius_of`` crosses ``target`` (bisection;
+    below at ``lo``, above at ``hi``)."""
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if radius_of(mid) > target:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
+
+
+def _side_limits(w: _Wheel, zeta: float, side: float) -> tuple[float, float, float, float]:
+    """``(t_star, X_star, X_exit, 0)`` of one side of the tooth space in the plane ``zeta``:
+    the root fillet runs from ``t = 0`` to ``t_star``, the flank from the hob's depth
+    ``X_star`` (its corner's, or where the fillet cuts the flank: undercut) to ``X_exit`` (the
+    tip); or ``(t_x, t_x, t_exit, 1)`` where the flank's contact lies above the tip and the
+    hob's corner alone cuts that side, up to the tip at ``t_exit`` (off the mid-plane, near the
+    faces)."""
+    rho_tip = float(w.tip(zeta))
+    x_t = float(w.corner_depth(zeta))
+    if abs(zeta) < w.rf:  # up to the worm's root cylinder
+        x_hi = -math.sqrt(w.rf**2 - zeta**2)
+    else:  # past the axis's line, over the far side of the worm
+        x_hi = -x_t
+    xs = np.linspace(x_t, x_hi, 801)
+    ex, ey, _ = w.flank(zeta, xs, side)
+    rho = np.hypot(ex, ey)
+    above = np.flatnonzero(rho > rho_tip)
+    cx, cy = w.corner(zeta, side)
+    _, _, u_c = w.flank(zeta, x_t, side)
+    t_c = side * (float(u_c) + float(cx))  # the corner's own contact
+    # the fillet's way from the root: towards the flank while the hob's tip line runs inside
+    # the pitch circle; where the root torus rises above it (near the faces) the corner moves
+    # backwards relative to the wheel
+    way = 1.0 if float(cy) < w.r2 else -1.0
+    if len(above) == 0:
+        raise GearError(
+            f"the worm's flank does not reach the wheel's tip in the plane z = {zeta:.6g} mm "
+            "(a narrower face)"
+        )
+    if above[0] == 0:  # the flank touches above the tip: the corner alone cuts this side
+        t_hi = w.m
+        while _fillet_radius(w, zeta, side, way * t_hi) < rho_tip:
+            t_hi *= 2.0
+        s_exit = _exit(lambda t: _fillet_radius(w, zeta, side, way * t), 0.0, t_hi, rho_tip)
+        # the upper piece shrinks as t_c -> t_exit (continuous with the planes of a flank)
+        s_x = min(max(2.0 * s_exit - way * t_c, 0.5 * s_exit), s_exit)
+        return way * s_x, way * s_x, way * s_exit, 1.0
+    i = int(above[0])
+
+    def rho_e(d):
+        x, y, _ = w.flank(zeta, d, side)
+        return math.hypot(float(x), float(y))
+
+    x_exit = _exit(rho_e, float(xs[i - 1]), float(xs[i]), rho_tip)
+    k = int(np.argmin(rho[:i]))
+    if k == 0 and way * t_c >= 0.0:  # no undercut: the corner's contact joins fillet and flank
+        return t_c, x_t, x_exit, 0.0
+    # undercut, or the corner's contact lies beyond the root's lowest point (off the
+    # mid-plane): the fillet cuts the flank (its upper branch, beyond a cusp at xs[k])
+    t_hi = w.m
+    while _fillet_radius(w, zeta, side, way * t_hi) < rho_tip:
+        t_hi *= 2.0
+    ts = np.linspace(0.0, way * t_hi, 801)
+    tx, ty = w.trochoid(zeta, ts, side)
+    upper = shapely.LineString(np.column_stack([ex[k:i], ey[k:i]]))
+    pts = shapely.get_coordinates(shapely.LineString(np.column_stack([tx, ty])).intersection(upper))
+    if len(pts) == 0:
+        pts = np.array([[ex[k], ey[k]]])
+    # the crossing highest on the flank, refined by Newton's method on (t, X)
+    dist = np.hypot(ex[k:i, None] - pts[:, 0], ey[k:i, None] - pts[:, 1])
+    nearest = np.argmin(dist, axis=0)
+    jp = int(np.argmax(nearest))
+    d = float(xs[k + nearest[jp]])
+    t = float(ts[np.argmin(np.hypot(tx - pts[jp, 0], ty - pts[jp, 1]))])
+    h = 1e-7 * w.m
+    for _ in range(8):
+        f = np.subtract(w.trochoid(zeta, t, side), w.flank(zeta, d, side)[:2])
+        jt = np.subtract(w.trochoid(zeta, t + h, side), w.trochoid(zeta, t, side)) / h
+        jd = -np.subtract(w.flank(zeta, d + h, side)[:2], w.flank(zeta, d, side)[:2]) / h
+        jac = np.column_stack([jt, jd])
+        if abs(np.linalg.det(jac)) < 1e-300:
+            break
+        dt, dd = np.linalg.solve(jac, -f)
+        t, d = t + float(dt), min(max(d + float(dd), x_t), x_exit)
+    return way * max(way * t, 0.0), d, x_exit, 0.0
+
+
+def _exits(radius_of, lo, hi, target, iterations: int = 12):
+    """Vectorised :func:`_exit`: parameters in ``[lo, hi]`` (arrays) at which
+    ``radius_of(params)`` crosses ``target`` (below at ``lo``, above at ``hi``), by the
+    Illinois false position (superlinear on a smooth radius; the bracket always holds)."""
+    lo, hi = np.array(lo, float), np.array(hi, float)
+    f_lo, f_hi = radius_of(lo) - target, radius_of(hi) - target
+    x = lo
+    for _ in range(iterations):
+        den = f_hi - f_lo
+        x = np.where(np.abs(den) > 0.0, lo - f_lo * (hi - lo) / np.where(den == 0, 1.0, den),
+                     0.5 * (lo + hi))  # fmt: skip
+        x = np.clip(x, np.minimum(lo, hi), np.maximum(lo, hi))
+        f = radius_of(x) - target
+        up = f > 0.0
+        hi, f_hi, f_lo = np.where(up, x, hi), np.where(up, f, f_hi), np.where(up, f_lo * 0.5, f_lo)
+        lo, f_lo, f_hi = np.where(up, lo, x), np.where(up, f_lo, f), np.where(up, f_hi, f_hi * 0.5)
+        if np.all(np.abs(f) < 1e-12 * (1.0 + np.abs(target))):
+            break
+    return x
+
+
+def _limits_batch(w: _Wheel, zetas: np.ndarray, side: float) -> np.ndarray:
+    """:func:`_side_limits` of one side over many planes at once, ``(planes, 4)``: the
+    planes of the common case (no undercut, a flank reaching the tip) vectorised, the others
+    one by one."""
+    z = np.asarray(zetas, float)
+    rho_tip = w.tip(z)
+    x_t = w.corner_depth(z)
+    x_hi = np.where(np.abs(z) < w.rf, -np.sqrt(np.maximum(w.rf**2 - z**2, 0.0)), -x_t)
+    g = np.linspace(0.0, 1.0, 401)
+    xs = x_t[:, None] + (x_hi - x_t)[:, None] * g
+    ex, ey, _ = w.flank(z[:, None], xs, side)
+    rho = np.hypot(ex, ey)
+    above = rho > rho_tip[:, None]
+    first = np.argmax(above, axis=1)
+    cx, cy = w.corner(z, side)
+    _, _, u_c = w.flank(z, x_t, side)
+    t_c = side * (u_c + cx)
+    way = np.where(cy < w.r2, 1.0, -1.0)
+    masked = np.where(np.arange(len(g)) < first[:, None], rho, np.inf)
+    k = np.argmin(masked, axis=1)
+    common = np.any(above, axis=1) & (first > 0) & (k == 0) & (way * t_c >= 0.0)
+    out = np.empty((len(z), 4))
+    if np.any(common):
+        c = np.flatnonzero(common)
+        zc, fc = z[c], first[c]
+
+        def radius(d):
+            x, y, _ = w.flank(zc, d, side)
+            return np.hypot(x, y)
+
+        x_exit = _exits(radius, xs[c, fc - 1], xs[c, fc], rho_tip[c])
+        out[c] = np.column_stack([t_c[c], x_t[c], x_exit, np.zeros(len(c))])
+    for i in np.flatnonzero(~common):
+        out[i] = _side_limits(w, float(z[i]), side)
+    return out
+
+
+def _fillet_radius(w: _Wheel, zeta: float, side: float, t: float) -> float:
+    return math.hypot(*(float(v) for v in w.trochoid(zeta, t, side)))
+
+
+def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> None:
+    """Where the tooth between space 0's left side and space 1's right side would be thinner
+    than ``land`` at the tip (a pointed tooth, off the mid-plane of a wheel of few teeth), lower
+    the tip of that plane to the radius of a land ``land`` wide: the ends of both sides' upper
+    pieces move there (``lim``, ``(planes, 2, 4)``, in place)."""
+    z = np.asarray(zetas, float)[:, None]
+    g = np.linspace(0.0, 1.0, 401)
+    curves = []
+    for k, side in enumerate((1.0, -1.0)):
+        x, y = w.upper(z, side, lim[:, k], g)
+        curves.append((np.hypot(x, y), w.angle(x, y)))
+    (rho_r, a_r), (rho_l, a_l) = curves
+    at = np.full(len(z), np.nan)
+    for i in range(len(z)):
+        lo = max(rho_r[i, 0], rho_l[i, 0])
+        rho = np.linspace(lo, float(w.tip(z[i, 0])), 401)
+        # the upper branch (beyond a cusp) is where the radius grows: interpolate on it
+        kr, kl = int(np.argmin(rho_r[i])), int(np.argmin(rho_l[i]))
+        thick = (np.interp(rho, rho_r[i, kr:], a_r[i, kr:]) + w.pitch
+                 - np.interp(rho, rho_l[i, kl:], a_l[i, kl:])) * rho  # fmt: skip
+        if thick[-1] >= land:
+            continue
+        if thick[0] < land:
+            raise GearError(
+                f"the wheel's teeth are pointed down to their root in the plane z = "
+                f"{z[i, 0]:.6g} mm (see check(): fewer teeth need a larger profile shift or a "
+                "narrower face)"
+            )
+        j = int(np.flatnonzero(thick < land)[0])
+        frac = (thick[j - 1] - land) / (thick[j - 1] - thick[j])
+        at[i] = rho[j - 1] + (rho[j] - rho[j - 1]) * frac
+    pointed = np.flatnonzero(np.isfinite(at))
+    if len(pointed) == 0:
+        return
+    zp = z[pointed]
+    for k, side in enumerate((1.0, -1.0)):
+        rows = lim[pointed, k].copy()
+
+        def radius(b, rows=rows, side=side):
+            r = rows.copy()
+            r[:, 2] = b
+            x, y = w.upper(zp, side, r, np.ones((1, 1)))
+            return np.hypot(x[:, 0], y[:, 0])
+
+        lim[pointed, k, 2] = _exits(radius, rows[:, 1], rows[:, 2], at[pointed])
+
+
+class _Plan:
+    """The limits of the tooth space in each plane (``(planes, side, row)``, side 0 the right
+    side of space 0, 1 the left) and the sampling shared by every plane: normalised parameters
+    of the fillet and of the upper piece, and the counts of the root and tip arcs' inner
+    vertices."""
+
+    def __init__(self, w: _Wheel, zetas, land: float, fillet=(0.0, 1.0), flank=(0.0, 1.0),
+                 root_n: int = 1, tip_n: int = 1) -> None:  # fmt: skip
+        self.w, self.zetas, self.land = w, np.asarray(zetas, float), land
+        self.limits = w.limits(self.zetas, land)
+        self.fillet, self.flank = np.asarray(fillet, float), np.asarray(flank, float)
+        self.root_n, self.tip_n = root_n, tip_n
+
+    def at(self, zetas) -> _Plan:
+        """The same sampling in other planes."""
+        return _Plan(self.w, zetas, self.land, self.fillet, self.flank, self.root_n, self.tip_n)
+
+    def fillets(self, g=None):
+        """The root fillets, ``(planes, side, samples, 2)``, from the root."""
+        g = self.fillet if g is None else g
+        z = self.zetas[:, None]
+        return np.stack([np.stack(self.w.trochoid(z, self.limits[:, k, :1] * g, side), -1)
+                         for k, side in enumerate((1.0, -1.0))], 1)  # fmt: skip
+
+    def flanks(self, g=None):
+        """The upper pieces (flanks), ``(planes, side, samples, 2)``, up to the tip."""
+        g = self.flank if g is None else g
+        z = self.zetas[:, None]
+        return np.stack([np.stack(self.w.upper(z, side, self.limits[:, k], g), -1)
+                         for k, side in enumerate((1.0, -1.0))], 1)  # fmt: skip
+
+    def arcs(self):
+        """The root and tip arcs in each plane: ``((start, end), (start, end))`` angles and
+        the tip's radius (the throat's, or a pointed tooth's land)."""
+        fil, fla = self.fillets(np.array([0.0])), self.flanks(np.array([1.0]))
+        w = self.w
+        root = w.angle(fil[:, 0, 0, 0], fil[:, 0, 0, 1]), w.angle(fil[:, 1, 0, 0], fil[:, 1, 0, 1])
+        tip = (w.angle(fla[:, 1, 0, 0], fla[:, 1, 0, 1]),
+               w.angle(fla[:, 0, 0, 0], fla[:, 0, 0, 1]) + w.pitch)  # fmt: skip
+        return root, tip, np.hypot(fla[:, 0, 0, 0], fla[:, 0, 0, 1])
+
+    def rings(self) -> np.ndarray:
+        """Every plane's section, ``(planes, N, 2)``, counter-clockwise: tooth space 0 (the
+        right side down, the root, the left side up), the tip, turned ``z_2`` times."""
+        w = self.w
+        fil, fla = self.fillets(), self.flanks()
+        (r0, r1), (t0, t1), rho_tip = self.arcs()
+
+        def arc(a0, a1, rho, n):
+            ang = a0[:, None] + (a1 - a0)[:, None] * np.linspace(0.0, 1.0, n + 2)[1:-1]
+            return np.stack([rho[:, None] * np.cos(ang), rho[:, None] * np.sin(ang)], -1)
+
+        root = arc(r0, r1, w.root(self.zetas), self.root_n)
+        tip = arc(t0, t1, rho_tip, self.tip_n)
+        space = np.concatenate([
+            fla[:, 0, ::-1], fil[:, 0, -2::-1], root, fil[:, 1, :-1], fla[:, 1], tip,
+        ], axis=1)  # fmt: skip
+        turns = np.arange(w.z2) * w.pitch
+        c, s = np.cos(turns)[:, None], np.sin(turns)[:, None]
+        x = c * space[:, None, :, 0] - s * space[:, None, :, 1]
+        y = s * space[:, None, :, 0] + c * space[:, None, :, 1]
+        return np.stack([x, y], -1).reshape(len(self.zetas), -1, 2)
+
+
+def _chord_sag(pts, mid) -> np.ndarray:
+    """Distances of the midpoints ``mid`` (..., K-1, 2) from the chords of ``pts`` (..., K, 2)."""
+    a, b = pts[..., :-1, :], pts[..., 1:, :]
+    d = b - a
+    length = np.maximum(np.hypot(d[..., 0], d[..., 1]), 1e-300)
+    e = mid - a
+    return np.abs(d[..., 0] * e[..., 1] - d[..., 1] * e[..., 0]) / length
+
+
+def _refine(curve, tolerance: float, g=None) -> np.ndarray:
+    """Normalised parameters from 0 to 1 (starting from ``g``), halved where a chord of
+    ``curve(g)`` (``(..., samples, 2)``) misses the curve at its middle by more than
+    ``tolerance`` in any plane."""
+    g = np.linspace(0.0, 1.0, 5) if g is None else np.asarray(g, float)
+    for _ in range(30):
+        mid = (g[:-1] + g[1:]) / 2.0
+        pts = curve(np.concatenate([g, mid]))
+        sag = _chord_sag(pts[..., : len(g), :], pts[..., len(g) :, :])
+        bad = sag.reshape(-1, len(mid)).max(axis=0) > tolerance
+        if not np.any(bad):
+            break
+        g = np.sort(np.concatenate([g, mid[bad]]))
+    return g
+
+
+def _arc_count(span: float, radius: float, tolerance: float) -> int:
+    step = 2.0 * math.acos(max(1.0 - tolerance / max(radius, 1e-300), -1.0))
+    return max(math.ceil(span / max(step, 1e-12)) - 1, 1)
+
+
+def _sample(plan: _Plan, tolerance: float) -> _Plan:
+    """``plan`` with the sampling that keeps every chord of its sections within
+    ``tolerance`` in each of its planes (starting from its own)."""
+    fillet = _refine(plan.fillets, tolerance, plan.fillet)
+    flank = _refine(plan.flanks, tolerance, plan.flank)
+    (r0, r1), (t0, t1), rho_tip = plan.arcs()
+    w = plan.w
+    root_n = _arc_count(float(np.max(r1 - r0)), float(np.min(w.root(plan.zetas))), tolerance)
+    tip_n = _arc_count(float(np.max(t1 - t0)), float(np.max(rho_tip)), tolerance)
+    return _Plan(w, plan.zetas, plan.land, fillet, flank, max(root_n, plan.root_n),
+                 max(tip_n, plan.tip_n))  # fmt: skip
+
+
+def _ring_gap(mid, lower, upper) -> np.ndarray:
+    """Per plane, the largest distance of a vertex of the mid-planes' sections ``mid``
+    ``(planes, N, 2)`` from the sections interpolated linearly between their neighbours (the
+    quads' deviation): each vertex against the interpolated ring's segments near it."""
+    ring = (lower + upper) / 2.0
+    a = ring
+    b = np.roll(ring, -1, axis=1)
+    best = np.full(mid.shape[:2], np.inf)
+    for shift in (-2, -1, 0, 1):
+        pa, pb = np.roll(a, -shift, axis=1), np.roll(b, -shift, axis=1)
+        d = pb - pa
+        t = np.einsum("...i,...i->...", mid - pa, d) / np.maximum(
+            np.einsum("...i,...i->...", d, d), 1e-300
+        )
+        foot = pa + np.clip(t, 0.0, 1.0)[..., None] * d
+        best = np.minimum(best, np.hypot(*(mid - foot).transpose(2, 0, 1)))
+    return best.max(axis=1)
+
+
+def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
+    """Planes ``z = zeta`` from face to face, halved where the sections interpolated between
+    two planes miss the mid-plane's by more than ``tolerance``, with their sampling."""
+    b = w.half_face
+    zs = list(np.linspace(-b, b, 5))
+    if w.rk < b:  # where the throat meets the outside cylinder the tip has an edge
+        zs += [-w.rk, w.rk]
+    zs = np.unique(np.round(zs, 12))
+    plan = _sample(_Plan(w, zs, tolerance), tolerance)
+    done = 0
+    for _ in range(4):
+        rings = dict(zip(plan.zetas.tolist(), plan.rings(), strict=True))
+        for _ in range(14):
+            zs = np.array(sorted(rings))
+            mids = (zs[:-1] + zs[1:]) / 2.0
+            mid_rings = plan.at(mids).rings()
+            low = np.array([rings[z] for z in zs[:-1]])
+            up = np.array([rings[z] for z in zs[1:]])
+            bad = _ring_gap(mid_rings, low, up) > tolerance
+            done += 1
+            if progress is not None:
+                progress(min(done, 15), 16)
+            if not np.any(bad):
+                break
+            rings.update(zip(mids[bad].tolist(), mid_rings[bad], strict=True))
+        fine = _sample(plan.at(zs), tolerance)
+        same = (len(fine.fillet) == len(plan.fillet) and len(fine.flank) == len(plan.flank)
+                and fine.root_n == plan.root_n and fine.tip_n == plan.tip_n)  # fmt: skip
+        plan = fine
+        if same:
+            break
+    return plan
 
 
 def wheel_estimate(pair, tolerance: float) -> float:
-    """Vertices of the hobbed wheel at ``tolerance``: the hob's vertices over one axial pitch
-    of its length, times the hob positions and the wheel's teeth (measured: the wheel's tooth
-    spaces keep about one vertex of every hob position's pitch of thread they cut)."""
-    hob = worm_estimate(pair, tolerance, hob=True)
-    per_pitch = hob * float(pair.geometry.axial_pitch) / _hob_length(pair)
-    return pair.wheel_teeth * per_pitch * hob_positions(pair, tolerance)
+    """Vertices of the wheel at ``tolerance``, estimated before any work: its teeth times the
+    vertices of one tooth space (the flanks, fillets and arcs at their chord sag
+    ``s^2 / (8 rho)``, ``rho`` about one module) times its planes (the throat's sag over the
+    face width)."""
+    m, t = pair.module, float(tolerance) / 2.0  # the sampling's share of the tolerance
+    chords = math.ceil(2.5 * m / math.sqrt(8.0 * 0.5 * m * t)) + 2
+    space = 4 * chords + 2 * math.ceil(math.pi * m / math.sqrt(8.0 * m * t))
+    rk = float(pair.geometry.throat_radius)
+    planes = math.ceil(pair.face_width / math.sqrt(8.0 * rk * t)) + 5
+    return float(pair.wheel_teeth * space * planes)
 
 
-def wheel_solid(pair, tolerance: float = 0.01, positions: int | None = None, progress=None):
-    """The wheel cut by simulated hobbing (module docstring) as a watertight
-    ``trimesh.Trimesh`` in its own frame (axis +z, mid-plane z = 0). ``positions`` overrides
-    :func:`hob_positions`; ``progress(done, total)`` is called as the work proceeds.
+def wheel_solid(pair, tolerance: float = 0.01, progress=None):
+    """The wheel as a watertight, welded ``trimesh.Trimesh`` in its own frame (axis +z,
+    mid-plane z = 0): its flanks the exact envelope of the worm's thread (the hob: the worm's
+    tips lengthened by ``c* m``, :mod:`gears.worm.envelope`), every vertex on the conjugate
+    surface, the root fillets drawn by the hob's tip corners, the root a torus about the
+    worm's axis, the tips the throat (at most ``d_e2``), the faces planes at ``+-b_2 / 2``.
 
-    The discrete positions can leave slivers of the blank that no position quite removes
-    (where the hob's tips only graze the rim); they are not part of the wheel, and only the
-    largest connected body is returned.
+    Sampling: in every plane the chords of the flanks, fillets and arcs stay within
+    ``tolerance / 2`` of them; the planes are halved until the sections interpolated between
+    two neighbours miss the exact section between them by at most ``tolerance / 2``.
+    ``progress(done, total)`` is called as the work proceeds.
+
+    Raises
+    ------
+    GearError
+        For a bad tolerance or one over the mesh budget (naming the tolerance that fits), a
+        face width the hob cannot cut over (the flank does not reach across the tooth at the
+        faces), or a section that is not a simple polygon (pointed teeth).
     """
-    import manifold3d
-
     _trimesh()
     tol = check_tolerance(tolerance, module=pair.module)
     progress = check_callback("progress", progress)
-    n = hob_positions(pair, tol) if positions is None else int(positions)
     z2 = pair.wheel_teeth
     check_budget(
-        "mesh", f"a hobbed wheel of {z2} teeth ({n} hob positions a pitch)",
-        lambda t: wheel_estimate(pair, t), tol, hint="a wheel of fewer teeth",
+        "mesh", f"a wheel of {z2} teeth", lambda t: wheel_estimate(pair, t), tol,
+        hint="a wheel of fewer teeth",
     )  # fmt: skip
-    steps = n + 3
-
-    def tick(i):
-        if progress is not None:
-            progress(i, steps)
-
-    hob = to_manifold(worm_solid(pair, tol, hob=True))
-    blank = wheel_blank(pair, tol)
-    re2 = float(pair.geometry.wheel_outside_diameter) / 2.0
-    # the half of the blank on the worm's side: the hob reaches nothing else
-    region = blank ^ manifold3d.Manifold.cube((2.0 * re2, re2, pair.face_width + 2.0)).translate(
-        (-re2, 0.0, -pair.face_width / 2.0 - 1.0)
-    )
-    pitch = 2.0 * math.pi / z2
-    sign = 1.0 if pair.hand == "right" else -1.0
-    cuts = []
-    for i in range(n):
-        phi1 = sign * (pitch * i / n) * z2 / pair.starts
-        cuts.append(hob.transform(_hob_matrix(pair, phi1)[:3, :]) ^ region)
-        tick(i + 1)
-    swept = manifold3d.Manifold.batch_boolean(cuts, manifold3d.OpType.Add)
-    swept.num_vert()  # evaluate now: manifold3d's lazy tree would merge the steps below into one
-    # one tooth space: every sector's piece of the sweep, turned into sector 0 (widened by a
-    # tenth of a pitch, so that neighbouring copies overlap instead of touching)
-    pad = 0.1 * pitch
-    pieces = []
-    for k in range(-(z2 // 2), z2 // 2 + 1):
-        lo, hi = k * pitch - pitch / 2.0 - pad, k * pitch + pitch / 2.0 + pad
-        piece = swept ^ _sector(lo, hi, re2, pair.face_width)
-        if not piece.is_empty():
-            pieces.append(piece.rotate((0.0, 0.0, -math.degrees(k * pitch))))
-    space = manifold3d.Manifold.batch_boolean(pieces, manifold3d.OpType.Add)
-    space.num_vert()
-    tick(n + 1)
-    copies = [space.rotate((0.0, 0.0, math.degrees(j * pitch))) for j in range(z2)]
-    wheel = blank - manifold3d.Manifold.batch_boolean(copies, manifold3d.OpType.Add)
-    wheel.num_vert()
-    tick(n + 2)
-    bodies = wheel.decompose()
-    wheel = max(bodies, key=lambda b: b.volume()) if len(bodies) > 1 else wheel
-    out = wheel.to_mesh64()
-    tick(steps)
-    return _mesh(out)
+    w = _Wheel(pair)
+    if w.half_face >= w.rt:
+        raise GearError(
+            f"face_width = {pair.face_width:g} mm; the hob (tip radius {w.rt:.6g} mm) cuts "
+            f"teeth only over face widths < {2 * w.rt:.6g} mm"
+        )
+    # half the tolerance to the chords in each plane, half to the quads between planes: a
+    # point of the flank is off the mesh by at most the sum
+    plan = _planes(w, tol / 2.0, progress)
+    rings = plan.rings()
+    for zeta, ring in zip(plan.zetas, rings, strict=True):
+        poly = shapely.Polygon(ring)
+        if not poly.is_valid or poly.area <= 0.0:
+            raise GearError(
+                f"the wheel's section at z = {zeta:.6g} mm is not a simple polygon (its "
+                "teeth are pointed or cut by their neighbours' spaces: see check())"
+            )
+    levels = np.concatenate([rings, np.broadcast_to(plan.zetas[:, None, None],
+                                                    (*rings.shape[:2], 1))], -1)  # fmt: skip
+    out = loft_solid(levels)
+    if progress is not None:
+        progress(16, 16)
+    return out
