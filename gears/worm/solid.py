@@ -415,15 +415,16 @@ def _side_limits(w: _Wheel, zeta: float, side: float) -> tuple[float, float, flo
         t_hi *= 2.0
     ts = np.linspace(0.0, way * t_hi, 801)
     tx, ty = w.trochoid(zeta, ts, side)
-    upper = shapely.LineString(np.column_stack([ex[k:i], ey[k:i]]))
+    lo = max(min(k, i - 1), 0)  # at least two samples, the first above the tip included
+    upper = shapely.LineString(np.column_stack([ex[lo : i + 1], ey[lo : i + 1]]))
     pts = shapely.get_coordinates(shapely.LineString(np.column_stack([tx, ty])).intersection(upper))
     if len(pts) == 0:
         pts = np.array([[ex[k], ey[k]]])
     # the crossing highest on the flank, refined by Newton's method on (t, X)
-    dist = np.hypot(ex[k:i, None] - pts[:, 0], ey[k:i, None] - pts[:, 1])
+    dist = np.hypot(ex[lo : i + 1, None] - pts[:, 0], ey[lo : i + 1, None] - pts[:, 1])
     nearest = np.argmin(dist, axis=0)
     jp = int(np.argmax(nearest))
-    d = float(xs[k + nearest[jp]])
+    d = float(xs[lo + nearest[jp]])
     t = float(ts[np.argmin(np.hypot(tx - pts[jp, 0], ty - pts[jp, 1]))])
     h = 1e-7 * w.m
     for _ in range(8):
