@@ -59,6 +59,7 @@ def test_failing_check_exits_1(capsys):
         (["worm", 2, 40, "--flank", "ZK", "--tool-radius", 0.5], "--tool-radius"),
         (["worm", 2, 40, "--pressure-angle", 60], "--pressure-angle"),
         (["worm", 2, 40, "--tolerance", 0.1], "--tolerance applies with --scene"),
+        (["worm", 2, 40, "--frames", 3], "--frames counts the frames of --animate"),
     ],
 )
 def test_bad_input_exits_2_naming_the_option(capsys, argv, match):
@@ -86,3 +87,13 @@ def test_every_input_gets_exit_0_1_or_2(z1, z2, m, q, x2, flank, mu):
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
         code = main(argv)
     assert code in (0, 1, 2)
+
+
+def test_scene_and_animation_are_written(capsys, tmp_path):
+    glb, gif = tmp_path / "pair.glb", tmp_path / "pair.gif"
+    code, out, err = _run(capsys, "worm", 1, 20, "--module", 2, "--flank", "ZA", "--scene", glb,
+                          "--animate", gif, "--frames", 2, "--tolerance", 0.3)  # fmt: skip
+    assert code == 0, err
+    assert glb.stat().st_size > 0 and gif.stat().st_size > 0
+    text = " ".join(out.split())  # lines wrapped to the terminal's width
+    assert f"wrote {glb}" in text and f"wrote {gif} (2 frames" in text

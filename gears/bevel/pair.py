@@ -50,6 +50,7 @@ from gears.pair import GearPair
 from gears.rack import BasicRack
 from gears.report import Finding, Report
 from gears.solid.mesh import COLOURS, scene
+from gears.solid.render import ANIMATION_BUDGET_3D, DRAWN_PER_VERTEX
 
 if TYPE_CHECKING:
     import trimesh
@@ -79,14 +80,6 @@ def _number(name: str, value, low=None, high=None, low_open=True) -> float:
 def _placed(mesh, matrix) -> np.ndarray:
     """The mesh's vertices moved by a 4x4 placement."""
     return mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
-
-
-#: Triangle vertices a 3D animation draws per vertex of its solids and frame (about half the
-#: faces face the camera, two faces a vertex, three vertices a face: measured 2.9 on the pairs).
-DRAWN_PER_VERTEX = 3.0
-#: The work budget of a 3D animation, in triangle vertices drawn over all frames: Pillow fills
-#: about 3 us a vertex on one free core (10 us under a load of 6), so 15 to 50 s at most.
-ANIMATION_BUDGET_3D = 5_000_000
 
 
 @dataclass(frozen=True, init=False)

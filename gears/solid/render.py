@@ -21,10 +21,26 @@ from gears.arguments import check_fps, check_frames
 from gears.errors import GearError
 from gears.files import check_output, writing
 
-__all__ = ["MAX_FACES", "Camera", "render_image", "scene_parts", "write_animation_3d"]
+__all__ = [
+    "ANIMATION_BUDGET_3D",
+    "DRAWN_PER_VERTEX",
+    "MAX_FACES",
+    "Camera",
+    "render_image",
+    "scene_parts",
+    "write_animation_3d",
+]
 
 #: Most triangles one animation draws in all (frames x faces): about a minute of matplotlib.
 MAX_FACES = 40_000_000
+
+
+#: Triangle vertices a 3D animation draws per vertex of its solids and frame (about half the
+#: faces face the camera, two faces a vertex, three vertices a face: measured 2.9 on the pairs).
+DRAWN_PER_VERTEX = 3.0
+#: The work budget of a 3D animation, in triangle vertices drawn over all frames: Pillow fills
+#: about 3 us a vertex on one free core (10 us under a load of 6), so 15 to 50 s at most.
+ANIMATION_BUDGET_3D = 5_000_000
 
 
 class Camera:

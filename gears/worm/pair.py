@@ -7,6 +7,8 @@ ISO/TS 14521 load capacity of worm gears is not modelled (docs/worm.md says what
 
 from __future__ import annotations
 
+import os
+import pathlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -17,6 +19,8 @@ import numpy as np
 from gears.arguments import (
     check_angle,
     check_choice,
+    check_fps,
+    check_frames,
     check_integer,
     check_length,
     check_module,
@@ -26,6 +30,7 @@ from gears.arguments import (
     check_teeth,
     check_tolerance,
 )
+from gears.budget import check_budget
 from gears.errors import GearError
 from gears.forces import PairForces, worm_pair_forces
 from gears.meshing import check_friction
@@ -456,6 +461,48 @@ class WormPair:
             ("worm", self.worm_mesh(tolerance), worm_at, COLOURS["gear1"]),
             ("wheel", wheel, wheel_at, COLOURS["gear2"]),
         ])  # fmt: skip
+
+    def animate(
+        self, path: str | os.PathLike[str], frames: int = 24, fps: float = 12.0,
+        turn: float | None = None, tolerance: float = 0.1, elevation: float = 25.0,
+        azimuth: float = -60.0, size: int = 400,
+        progress: Callable[[int, int], object] | None = None,
+    ) -> pathlib.Path:  # fmt: skip
+        """Write a GIF (or MP4 with ffmpeg) of the pair turning: the worm by ``turn``
+        degrees (default ``360 / z_1``, which turns the wheel by one pitch), the wheel
+        following, seen from ``elevation`` and ``azimuth`` degrees, ``size`` pixels square
+        (:func:`gears.solid.render.write_animation_3d`; ``progress(i, n)`` after each frame).
+        The solids are built once (:meth:`worm_mesh`, :meth:`wheel_mesh`) and placed per frame
+        by :meth:`placements`; the work is held to the 3D animation budget."""
+        from gears.solid.render import (
+            ANIMATION_BUDGET_3D,
+            DRAWN_PER_VERTEX,
+            Camera,
+            write_animation_3d,
+        )
+        from gears.worm.solid import wheel_estimate, worm_estimate
+
+        n = check_frames(frames)
+        fps = check_fps(fps)
+        turn = 360.0 / self.starts if turn is None else check_angle("turn", turn)
+        tol = check_tolerance(tolerance, module=self.module)
+        check_budget(
+            "animation", f"{n} frames of the worm pair {self.starts}/{self.wheel_teeth}",
+            lambda t: n * DRAWN_PER_VERTEX * (worm_estimate(self, t) + wheel_estimate(self, t)),
+            tol, hint="fewer frames", budget=ANIMATION_BUDGET_3D,
+        )  # fmt: skip
+        worm, wheel = self.worm_mesh(tol), self.wheel_mesh(tol)
+        c1, c2 = COLOURS["gear1"], COLOURS["gear2"]
+
+        def placed(mesh, matrix):
+            return mesh.vertices @ matrix[:3, :3].T + matrix[:3, 3]
+
+        def frame(i: int) -> list:
+            at1, at2 = self.placements(i * turn / n)
+            return [(placed(worm, at1), worm.faces, c1), (placed(wheel, at2), wheel.faces, c2)]
+
+        return write_animation_3d(path, frame, n, Camera(elevation, azimuth), fps=fps, size=size,
+                                  progress=progress)  # fmt: skip
 
     def describe(self) -> str:
         """The geometry of the worm and the wheel as a table (mm, degrees; DIN 3975 symbols)."""

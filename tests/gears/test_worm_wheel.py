@@ -204,3 +204,22 @@ def test_envelope_formulas_are_finite(zeta, depth, side, half, slope, pitch_radi
     px, py, u = rack_conjugate(x, y, nx, ny, pitch_radius)
     rx, ry = rolled(x, y, depth, pitch_radius)
     assert all(np.all(np.isfinite(v)) for v in (x, y, nx, ny, px, py, u, rx, ry))
+
+
+def test_animation_writes_its_frames(tmp_path):
+    from PIL import Image
+
+    w = WormPair(1, 20, 2.0, flank="ZA")
+    out = w.animate(tmp_path / "pair.gif", frames=3, tolerance=0.3, size=120)
+    with Image.open(out) as im:
+        assert im.n_frames == 3 and im.size == (120, 120)
+
+
+@given(st.sampled_from([0, -1, 1.5, "3", None, 10**9]), st.sampled_from([0.0, -1.0, float("nan")]))
+@settings(max_examples=10, deadline=None, derandomize=True, database=None)
+def test_animation_refuses_bad_frames_and_fps_before_any_work(frames, fps):
+    w = WormPair(1, 20, 2.0)
+    t0 = time.perf_counter()
+    with pytest.raises(GearError, match=r"frames|fps"):
+        w.animate("pair.gif", frames=frames, fps=fps)
+    assert time.perf_counter() - t0 < 2.0

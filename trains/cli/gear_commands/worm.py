@@ -10,8 +10,8 @@ q = d_m1 / m_x, default 10) or by --worm-diameter d_m1. --pressure-angle is take
 the flank form names: axial for ZA, normal for ZN, ZI and ZK. --shift is the wheel's profile
 shift x_2. The exit status is 1 when a check fails. Load capacity (ISO/TS 14521) is not rated.
 
---scene FILE also writes the worm and its wheel, cut by simulated hobbing with the worm as the
-hob, in mesh (this takes seconds to minutes: the wheel is hobbed by 3D booleans).
+--scene FILE also writes the worm and its wheel (the envelope of the worm's thread, the worm
+acting as the hob) in mesh at zero backlash; --animate FILE writes the pair turning.
 
 Examples:
     geartrain worm 2 40 --module 5 --q 10 --friction 0.05
@@ -22,7 +22,15 @@ from __future__ import annotations
 
 import argparse
 
-from trains.cli._common import CHECK_FAILED, OK, progress_bar, scene_argument, write_scene
+from trains.cli._common import (
+    CHECK_FAILED,
+    OK,
+    drawing_arguments,
+    progress_bar,
+    refuse_undrawn,
+    write_animation,
+    write_scene,
+)
 from trains.cli._types import bounded, finite, integer, positive
 
 HELP = "check a worm pair (STARTS TEETH): geometry, checks, efficiency both ways, self-locking"
@@ -124,15 +132,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     _scene_arguments(parser)
 
 
-#: the default --tolerance of --scene, mm (the wheel's hobbing takes seconds to minutes)
+#: the default --tolerance of --scene, mm
 SCENE_TOLERANCE = 0.05
+
+#: the default --frames of --animate (the worm's turn that moves the wheel by one pitch)
+FRAMES = 24
 
 
 def _scene_arguments(parser: argparse.ArgumentParser) -> None:
-    scene_argument(parser, "the worm and the hobbed wheel in mesh")
-    parser.add_argument(
-        "--tolerance", type=positive("--tolerance", "mm"), default=None,
-        help=f"largest deviation of the 3D threads and teeth, mm (default {SCENE_TOLERANCE:g})",
+    drawing_arguments(
+        parser, "the worm and its wheel in mesh", "the pair turning (the wheel by one pitch)",
+        FRAMES, SCENE_TOLERANCE,
     )  # fmt: skip
 
 
@@ -157,14 +167,12 @@ def run(args: argparse.Namespace) -> int:
     print(pair.describe())
     print(report)
     print(pair.describe_efficiency(args.friction, args.speed))
-    if args.tolerance is not None and args.scene is None:
-        from trains.errors import TrainError
-
-        raise TrainError("--tolerance applies with --scene only")
-    with progress_bar("hobbing the wheel", unit="position") as progress:  # seconds to minutes
+    refuse_undrawn(args)
+    with progress_bar("building the wheel", unit="step") as progress:
         write_scene(
             args, lambda tol: pair.scene(tolerance=tol, progress=progress), SCENE_TOLERANCE,
-            lambda sc, tol: f"worm and hobbed wheel at zero backlash, "
+            lambda sc, tol: f"worm and wheel at zero backlash, "
             f"{sum(len(g.faces) for g in sc.geometry.values())} triangles, tolerance {tol:g} mm",
         )  # fmt: skip
+    write_animation(args, pair.animate, FRAMES, ": the wheel turning by one pitch")
     return OK if report.ok else CHECK_FAILED
