@@ -209,3 +209,18 @@ def test_property_stage_efficiency_finite(scheme_stage, torque, speed, module, w
 def test_property_bad_objective_named(name):
     with pytest.raises(TrainError, match="objective = "):
         synthesize_gearbox(12, 2, z_max=40, objective=name, **BOX)
+
+
+def test_cli_objective_mesh_efficiency(capsys):
+    # the CLI prints what synthesize_gearbox ranks with the same options
+    from trains.cli.app import main
+
+    argv = ["search", "gearbox", "--ratio", "12", "--stages", "2", "--z-max", "80", "--torque",
+            "50", "--speed", "1500", "--face-width", "10:30:10", "--objective",
+            "mesh_efficiency", "--top", "2"]  # fmt: skip
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    want = synthesize_gearbox(12, 2, z_max=80, torque=50, speed=1500, face_width=[10, 20, 30],
+                              objective="mesh_efficiency", top=2, progress=False)  # fmt: skip
+    flat = " ".join(out.split())  # the CLI wraps its lines
+    assert " ".join(want.table().split()) in flat and "mesh efficiency" in flat
