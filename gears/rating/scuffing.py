@@ -21,20 +21,26 @@ rho_1C = r_b1 tan alpha_wt (rho_1 = rho_1C (1 + Gamma)): Gamma_A at the start of
 (:func:`load_sharing`), the transverse unit load w_Bt = K_A K_gamma K_v K_Hbeta K_Halpha F_t / b,
 the pitch-line speed v and the centre distance a.
 
-The documents' text was not at hand when this module was written: the formulas are the methods
-as generally known, checked by the tests for consistency with Blok's flash temperature and with
-the FZG test the scuffing temperatures come from (tests/gears/test_rating_scuffing.py).
+The documents' text was not at hand when this module was written, nor a published worked
+example. Its formulas are checked against an open implementation of ISO/TR 13989-1/-2:2000 that
+quotes them with equation and table numbers (hakangunes258/mekanika on GitHub): X_alphabeta
+reproduces ISO/TR 13989-2 Table 2, and the approach factor X_J with C_eff (ISO/TR 13989-1
+Eq. (45)-(48), (B.1)), the integral method's friction, bulk temperature (with X_S) and scuffing
+integral temperature (T_1T = 3.726 S_FZG^2) follow the quotes; and by physics (Blok's flash
+temperature) and the FZG test (tests/gears/test_rating_scuffing.py). Where the quotes differ
+from this module, the quotes themselves are unsure and docs/rating.md says so: the flash
+method's friction here is the 0.12 (w_Bt Ra / (eta v rho))^0.25 form (the quoted ISO/TR 13989-1
+Eq. (25) is 0.060 (w_Bt / (v rho))^0.2 eta^-0.05 X_R X_L with an uncertain X_R) and the spur
+X_Gamma rises from 1/3 to 2/3 in double contact (the quoted one from (Q - 2)/15 to 1).
 
 Choices made here where the documents leave one or where their text was not at hand (each says
-so where it is used): the approach factor X_J is 1 (the driven gear's approach zone is not made
-hotter) and X_Gamma is that of unmodified flanks (tip relief is not credited): both err towards
-the cool side only where the standard would heat the approach zone of gears without relief; the
-oil's viscosity is taken at the oil temperature (no iteration on the bulk temperature); the
-integral method's mean flash temperature is the mean of the local flash temperature along the
-path of contact, integrated numerically (Gauss-Legendre on the segments between A, B, C, D and
-E), where ISO/TS 6336-21 approximates that mean by closed forms (the contact ratio factor X_eps,
-the approach factor X_Q and the tip relief factor X_Ca); for two materials the thermal contact
-coefficient B_M is their mean.
+so where it is used): X_Gamma is that of unmodified flanks (a tip relief C_a enters X_J only);
+the oil's viscosity is taken at the oil temperature (no iteration on the bulk temperature); the
+integral method's mean flash temperature is the mean of the local flash temperature (without
+the flash method's X_J) along the path of contact, integrated numerically (Gauss-Legendre on the
+segments between A, B, C, D and E), where ISO/TS 6336-21 approximates that mean by closed forms
+(the contact ratio factor X_eps, the approach factor X_Q and the tip relief factor X_Ca); for
+two materials the thermal contact coefficient B_M is their mean.
 """
 
 from __future__ import annotations
@@ -61,6 +67,7 @@ __all__ = [
     "Oil",
     "ScuffingRatings",
     "angle_factor",
+    "approach_factor",
     "flash_friction",
     "flash_temperature",
     "fzg_torque",
@@ -70,6 +77,7 @@ __all__ = [
     "integral_scuffing_temperature",
     "load_sharing",
     "oil_dynamic_viscosity",
+    "optimal_tip_relief",
     "rate_scuffing",
     "scuffing_block",
     "scuffing_temperature",
@@ -304,17 +312,52 @@ def helical_load_factor(eps_gamma):
     return np.where(e <= 2.0, 1.0, np.where(e < 3.5, mid, 1.3))
 
 
-def flash_temperature(friction, thermoelastic, angle, gamma, u, sharing, w_bt, speed, center):
+def optimal_tip_relief(application, F_t, face_width, alpha_t, c_gamma):
+    """Effective tip relief C_eff = K_A F_t / (b cos alpha_t c_gamma) (um; F_t N, b mm, alpha_t
+    deg, the mesh stiffness c_gamma N/(mm um)): the relief that just takes the tooth's
+    deflection under the load (ISO/TR 13989-1:2000 Eq. (B.1)). Arrays broadcast.
+
+    >>> round(float(optimal_tip_relief(1.0, 4000.0, 20.0, 20.0, 20.0)), 3)
+    10.642
+    """
+    at = np.radians(np.asarray(alpha_t, float))
+    load = np.asarray(application, float) * np.asarray(F_t, float)
+    return load / (np.asarray(face_width, float) * np.cos(at) * np.asarray(c_gamma, float))
+
+
+def approach_factor(gamma, gamma_a, gamma_e, c_eff, relief=0.0, driver=1):
+    """Approach factor X_J at Gamma (ISO/TR 13989-1:2000 Eq. (45)-(48)): the approach zone of
+    the driven gear's tip, where the unrelieved tip meets the driving flank with a shock, runs
+    hotter. Gear 1 driving (``driver`` 1): X_J = 1 + max(C_eff - C_a2, 0)/50
+    (-Gamma/(Gamma_E - Gamma_A))^3 for Gamma < 0, else 1; gear 2 driving (``driver`` 2):
+    1 + max(C_eff - C_a1, 0)/50 (Gamma/(Gamma_E - Gamma_A))^3 for Gamma > 0, else 1;
+    ``relief`` the driven gear's tip relief C_a (um), ``c_eff`` from
+    :func:`optimal_tip_relief`. Arrays broadcast.
+
+    >>> round(float(approach_factor(-0.5, -0.5, 0.5, 20.0)), 4)   # at A, no relief
+    1.05
+    """
+    g = np.asarray(gamma, float)
+    side = np.where(np.asarray(driver) == 2, 1.0, -1.0)
+    reach = np.clip(side * g / (np.asarray(gamma_e, float) - gamma_a), 0.0, None)
+    excess = np.maximum(np.asarray(c_eff, float) - np.asarray(relief, float), 0.0)
+    return 1.0 + excess / 50.0 * reach**3
+
+
+def flash_temperature(friction, thermoelastic, angle, gamma, u, sharing, w_bt, speed, center,
+                      approach=1.0):  # fmt: skip
     """The local flash temperature theta_fl = mu X_M X_J X_G (X_Gamma w_Bt)^0.75 v^0.5 /
-    a^0.25 (K; X_J = 1, X_G = X_alphabeta X_BE(Gamma)); ``speed`` the pitch-line speed in
-    m/s, ``center`` the centre distance in mm (arrays broadcast).
+    a^0.25 (K; X_J ``approach`` (:func:`approach_factor`), X_G = X_alphabeta X_BE(Gamma));
+    ``speed`` the pitch-line speed in m/s, ``center`` the centre distance in mm (arrays
+    broadcast).
 
     >>> round(float(flash_temperature(0.08, 50.0, 0.9775, 0.5, 2.0, 1/3, 500.0, 10.0, 150.0)), 1)
     42.4
     """
     x_g = angle * geometry_factor(gamma, u)
     load = (np.asarray(sharing, float) * w_bt) ** 0.75
-    return friction * thermoelastic * x_g * load * np.sqrt(speed) / np.abs(center) ** 0.25
+    heat = friction * thermoelastic * np.asarray(approach, float) * x_g * load
+    return heat * np.sqrt(speed) / np.abs(center) ** 0.25
 
 
 def scuffing_temperature(stage, welding=1.0, lubricant=1.0):
@@ -406,13 +449,16 @@ def _path(gamma_a, gamma_b, gamma_d, gamma_e):
 
 def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_wt, center,
                    da1, da2, face_width, F_t, speed, load_factor, roughness, oil: Oil,
-                   thermoelastic, welding=1.0, meshes=1) -> dict:  # fmt: skip
+                   thermoelastic, welding=1.0, meshes=1, application=1.0, c_gamma=np.inf,
+                   relief_1=0.0, relief_2=0.0, driver=1) -> dict:  # fmt: skip
     """Both scuffing methods over arrays of pairs (no checks; :func:`rate_scuffing` checks):
     the pairs' teeth, module (mm), pressure and helix angles (deg), ``internal``, the working
     pressure angle (deg), centre distance and tip diameters (mm), face width (mm), the nominal
     load F_t (N) and pitch-line speed (m/s), ``load_factor`` K_A K_gamma K_v K_Hbeta K_Halpha,
     the mean flank roughness Ra (um), the ``oil``, X_M, the welding factor X_W and the number of
-    meshes of the gear (X_mp = (1 + meshes)/2). Returns a dict of the fields of
+    meshes of the gear (X_mp = (1 + meshes)/2); for the approach factor X_J the application
+    factor K_A, the mesh stiffness c_gamma (N/(mm um); infinite: X_J = 1), the tip reliefs
+    C_a1, C_a2 (um) and the driving gear (1 or 2). Returns a dict of the fields of
     :class:`ScuffingRatings` but ``valid`` and ``reason``."""
     z1 = np.asarray(z1, float)
     s = np.where(np.asarray(internal, bool), -1.0, 1.0)
@@ -454,14 +500,21 @@ def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_
                          gamma_e[ex], eps_alpha[ex], eps_beta[ex])  # fmt: skip
     unit = flash_temperature(1.0, np.asarray(thermoelastic)[ex], x_ab[ex], pts, u[ex], share,
                              w_bt[ex], v[ex], a[ex])  # fmt: skip
+    c_eff = optimal_tip_relief(application, F_t, face_width, np.degrees(at), c_gamma)
+    driver = np.asarray(driver)
+    relief = np.where(driver == 2, relief_1, relief_2)
+    x_j = approach_factor(pts, gamma_a[ex], gamma_e[ex], np.asarray(c_eff)[ex],
+                          np.asarray(relief)[ex], driver[ex])  # fmt: skip
     n_nodes = weights.shape[-1]
-    mean = np.sum(unit[..., :n_nodes] * weights, axis=-1)
+    mean = np.sum(unit[..., :n_nodes] * weights, axis=-1)  # the integral method: no X_J
+    unit = unit * x_j
+    mean_j = np.sum(unit[..., :n_nodes] * weights, axis=-1)
     i = np.argmax(unit, axis=-1)
     peak = np.take_along_axis(unit, i[..., None], axis=-1)[..., 0]
     g_peak = np.take_along_axis(pts, i[..., None], axis=-1)[..., 0]
     x_mp = 0.5 * (1.0 + np.asarray(meshes, float))
     theta_oil = float(oil.temperature)
-    theta_flmax, theta_flm = mu_m * peak, mu_m * mean
+    theta_flmax, theta_flm = mu_m * peak, mu_m * mean_j
     theta_m = theta_oil + 0.47 * LUBRICATION[oil.lubrication] * x_mp * theta_flm
     theta_b = theta_m + theta_flmax
     theta_s = scuffing_temperature(oil.fzg_stage, welding, x_l)
@@ -480,7 +533,7 @@ def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_
     }  # fmt: skip
 
 
-_LOADS = ("K_A", "K_gamma", "K_v", "K_Hbeta", "K_Halpha", "F_t", "v")
+_LOADS = ("K_A", "K_gamma", "K_v", "K_Hbeta", "K_Halpha", "F_t", "v", "c_gamma_alpha")
 _NOT_FINITE = 9  # gears.rating.iso6336.REASONS: "a stress or safety is not a finite number"
 
 
@@ -502,9 +555,14 @@ def _results(out: dict, valid, reason, shape) -> ScuffingRatings:
                            reason=reason[()] if reason.ndim == 0 else reason)  # fmt: skip
 
 
-def _checked(oil, welding, meshes, thermal_contact):
+def _checked(oil, welding, meshes, thermal_contact, tip_relief=0.0, driver=1):
     if not isinstance(oil, Oil):
         raise GearError(f"oil = {oil!r}; give a gears.rating.scuffing.Oil(fzg_stage=..., ...)")
+    if isinstance(driver, bool) or driver not in (1, 2):
+        raise GearError(f"driver = {driver!r}; valid are 1 (gear 1 drives) and 2")
+    c1, c2 = _pair_of("tip_relief", tip_relief)
+    _number("tip_relief", c1, 0.0, 1e3, low_open=False)
+    _number("tip_relief", c2, 0.0, 1e3, low_open=False)
     x_w = _number("welding", welding, 0.0, 10.0)
     n_p = _number("meshes", meshes, 1.0, 100.0, low_open=False, integer=True)
     b1, b2 = _pair_of("thermal_contact", thermal_contact)
@@ -516,7 +574,8 @@ def _checked(oil, welding, meshes, thermal_contact):
 def rate_scuffing(
     z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: ArrayLike, torque: ArrayLike,
     speed: ArrayLike, *, oil: Oil, welding: ArrayLike = 1.0, meshes: ArrayLike = 1,
-    thermal_contact: Any = STEEL_THERMAL_CONTACT, errors: str = "raise", **rating: Any,
+    thermal_contact: Any = STEEL_THERMAL_CONTACT, tip_relief: Any = 0.0, driver: int = 1,
+    errors: str = "raise", **rating: Any,
 ) -> ScuffingRatings:  # fmt: skip
     """Scuffing safety of many pairs at once by the flash temperature method (ISO/TS 6336-20)
     and the integral temperature method (ISO/TS 6336-21); arrays broadcast.
@@ -535,6 +594,11 @@ def rate_scuffing(
         Meshes of the hotter gear (a planet meshing sun and ring: 2): X_mp = (1 + meshes)/2.
     thermal_contact : float or pair
         Thermal contact coefficient B_M of the flanks, N/(mm s^0.5 K) (steel: 13.795).
+    tip_relief : float or pair
+        Tip relief C_a1, C_a2 of the flanks, um (0: unmodified). It enters the approach factor
+        X_J (:func:`approach_factor`), not X_Gamma.
+    driver : {1, 2}
+        The driving gear: the driven gear's tip starts contact and heats the approach zone.
     errors : {"raise", "mask"}
         As for :func:`gears.rating.iso6336.rate_pairs`.
     **rating
@@ -552,9 +616,9 @@ def rate_scuffing(
     >>> oil = Oil(fzg_stage=9, temperature=80, viscosity_40=100, viscosity_100=11)
     >>> r = rate_scuffing(17, [40, 60], 4, 40, 600, 3000, oil=oil, roughness=0.6)
     >>> [round(float(s), 2) for s in r.S_B], [round(float(s), 2) for s in r.S_intS]
-    ([0.73, 0.69], [1.13, 1.2])
+    ([0.68, 0.65], [1.13, 1.2])
     """
-    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact)
+    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, tip_relief, driver)
     for key in ("fields", "geometry"):
         if key in rating:
             raise GearError(f"{key}= is not an argument of rate_scuffing")
@@ -583,10 +647,12 @@ def rate_scuffing(
               geo.working_pressure_angle, geo.center_distance, da1, da2, face_width, values.F_t,
               values.v, load, g["roughness"]]  # fmt: skip
     inputs = [np.asarray(v, bool if i == 5 else float) for i, v in enumerate(inputs)]
-    x_m, x_w, n_p = np.asarray(x_m, float), np.asarray(x_w, float), np.asarray(n_p, float)
-    shape = np.broadcast_shapes(*(v.shape for v in (*inputs, x_m, x_w, n_p)),
+    c1, c2 = _pair_of("tip_relief", tip_relief)
+    extra = [np.asarray(v, float) for v in (x_m, x_w, n_p, values.K_A, values.c_gamma_alpha,
+                                            c1, c2, driver)]  # fmt: skip
+    shape = np.broadcast_shapes(*(v.shape for v in (*inputs, *extra)),
                                 np.shape(values.valid))  # fmt: skip
-    out = _in_blocks(inputs, oil, x_m, x_w, n_p, shape)
+    out = _in_blocks(inputs, oil, extra, shape)
     result = _results(out, values.valid, values.reason, shape)
     if errors == "raise" and not np.all(result.valid):
         from gears.rating.iso6336 import REASONS
@@ -600,11 +666,10 @@ def rate_scuffing(
 _BLOCK = 16384
 
 
-def _in_blocks(inputs, oil, x_m, x_w, n_p, shape):
+def _in_blocks(inputs, oil, extra, shape):
     """:func:`scuffing_block` over the broadcast ``shape`` in blocks of :data:`_BLOCK` pairs
     (the points along the path stay within a few tens of MB)."""
     n = math.prod(shape)
-    extra = (x_m, x_w, n_p)
     if n <= _BLOCK:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return scuffing_block(*inputs[:15], oil, *extra)
@@ -620,11 +685,13 @@ def _in_blocks(inputs, oil, x_m, x_w, n_p, shape):
 
 def pair_scuffing(pair: Any, values: Any, oil: Oil, face_width: float, roughness: float,
                   materials: tuple, welding: float = 1.0, meshes: int = 1,
-                  thermal_contact: Any = STEEL_THERMAL_CONTACT) -> ScuffingRatings:  # fmt: skip
+                  thermal_contact: Any = STEEL_THERMAL_CONTACT, tip_relief: Any = 0.0,
+                  driver: int = 1) -> ScuffingRatings:  # fmt: skip
     """The scuffing rating of one :class:`gears.GearPair` from its ISO 6336 rating ``values``
     (a :class:`gears.rating.iso6336.PairRatings`): :meth:`gears.GearPair.rating` with
-    ``scuffing=``."""
-    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact)
+    ``scuffing=`` (``tip_relief`` and ``driver`` as for :func:`rate_scuffing`)."""
+    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, tip_relief, driver)
+    c1, c2 = _pair_of("tip_relief", tip_relief)
     g1, g2 = pair.mounted
     m1, m2 = materials
     x_m = thermoelastic_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus, m2.poisson,
@@ -634,7 +701,8 @@ def pair_scuffing(pair: Any, values: Any, oil: Oil, face_width: float, roughness
         out = scuffing_block(g1.teeth, g2.teeth, g1.module, g1.pressure_angle, g1.helix_angle,
                              g2.internal, pair.working_pressure_angle, pair.center_distance,
                              g1.tip_diameter, g2.tip_diameter, face_width, values.F_t, values.v,
-                             load, roughness, oil, x_m, x_w, n_p)  # fmt: skip
+                             load, roughness, oil, x_m, x_w, n_p, values.K_A,
+                             values.c_gamma_alpha, c1, c2, driver)  # fmt: skip
     result = _results(out, values.valid, values.reason, ())
     if not result.valid:
         raise GearError(

@@ -28,10 +28,12 @@ from gears.rating.scuffing import (
     FZG_TORQUES,
     Oil,
     angle_factor,
+    approach_factor,
     flash_temperature,
     geometry_factor,
     integral_scuffing_temperature,
     load_sharing,
+    optimal_tip_relief,
     rate_scuffing,
     scuffing_block,
     scuffing_temperature,
@@ -172,24 +174,31 @@ def test_path_means_by_quadrature(internal, helix):
     at = math.degrees(math.atan(math.tan(math.radians(20)) / math.cos(math.radians(helix))))
     x_ab = float(angle_factor(pair.working_pressure_angle, 20, at, helix))
     eb = q["eps_beta"]
+    # gear 1 drives, no tip relief: X_J from C_eff = K_A F_t / (b cos alpha_t c_gamma)
+    c_eff = f["K_A"] * q["F_t"] / (30 * math.cos(math.radians(at)) * f["c_gamma_alpha"])
 
-    def local(gamma, mu):
+    def local(gamma, mu, x_j):
         x = load_sharing(gamma, ga, ge - pitch, ga + pitch, ge, q["eps_alpha"], eb)
+        j = float(approach_factor(gamma, ga, ge, c_eff)) if x_j else 1.0
         return float(flash_temperature(mu, float(sc.X_M), x_ab, gamma, u, x, w, q["v"],
-                                       pair.center_distance))  # fmt: skip
+                                       pair.center_distance, j))  # fmt: skip
 
     breaks = sorted({ga, max(ga, min(ge, ge - pitch)), 0.0, min(ge, ga + pitch), ge})
-    total = sum(quad(local, lo, hi, args=(float(sc.mu_m),), epsabs=1e-12)[0]
-                for lo, hi in itertools.pairwise(breaks))  # fmt: skip
-    assert float(sc.theta_flm) == pytest.approx(total / (ge - ga), rel=1e-7)
+
+    def mean(mu, x_j):
+        total = sum(quad(local, lo, hi, args=(mu, x_j), epsabs=1e-12)[0]
+                    for lo, hi in itertools.pairwise(breaks))  # fmt: skip
+        return total / (ge - ga)
+
+    assert float(sc.theta_flm) == pytest.approx(mean(float(sc.mu_m), True), rel=1e-7)
     assert f["K_A"] == 1.0
-    # the integral method's mean flash temperature is the same mean with its own friction
-    # and K_Bgamma^0.75
+    # the integral method's mean flash temperature is the same mean (without the flash
+    # method's X_J) with its own friction and K_Bgamma^0.75
     kb = float(sc.K_Bgamma)
-    ratio = float(sc.theta_flaint) / float(sc.theta_flm)
-    assert ratio == pytest.approx(float(sc.mu_mC) * kb**0.75 / float(sc.mu_m), rel=1e-12)
+    mu_c = float(sc.mu_mC) * kb**0.75
+    assert float(sc.theta_flaint) == pytest.approx(mean(mu_c, False), rel=1e-7)
     # the largest flash temperature is no smaller than the local one anywhere on the path
-    dense = max(local(g, float(sc.mu_m)) for g in np.linspace(ga, ge, 2001))
+    dense = max(local(g, float(sc.mu_m), True) for g in np.linspace(ga, ge, 2001))
     assert float(sc.theta_flmax) >= dense * (1 - 1e-3)
     assert float(sc.theta_flmax) <= dense * (1 + 1e-9) or float(sc.theta_flmax) == pytest.approx(
         dense, rel=1e-3
@@ -282,6 +291,61 @@ def test_bad_input():
     with pytest.raises(GearError, match="welding"):
         _pair().rating(150, 1500, scuffing=OIL, welding_factor=-1)
     assert float(scuffing_temperature(12)) == pytest.approx(404.0)
+    with pytest.raises(GearError, match="driver"):
+        rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, driver=3)
+    with pytest.raises(GearError, match="tip_relief"):
+        rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, tip_relief=(0, -1))
+
+
+def test_approach_factor_iso_tr_13989_1():
+    # ISO/TR 13989-1:2000 Eq. (45)-(48) with C_eff of Eq. (B.1), as quoted by
+    # hakangunes258/mekanika (Services/Iso13989FlashTemperature.cs): gear 1 driving,
+    # X_J = 1 + (C_eff - C_a2)/50 (-Gamma/(Gamma_E - Gamma_A))^3 for Gamma < 0, 1 for
+    # Gamma >= 0, never below 1; gear 2 driving the mirror image with C_a1
+    ga, ge, c_eff = -0.6, 0.4, 18.0
+    g = np.array([ga, -0.3, 0.0, 0.2, ge])
+    want = 1 + c_eff / 50 * np.clip(-g / (ge - ga), 0, None) ** 3
+    assert np.allclose(approach_factor(g, ga, ge, c_eff), want, rtol=1e-12)
+    assert np.allclose(
+        approach_factor(g, ga, ge, c_eff, relief=8.0),
+        1 + 10.0 / 50 * np.clip(-g / (ge - ga), 0, None) ** 3,
+        rtol=1e-12,
+    )
+    assert np.allclose(approach_factor(g, ga, ge, c_eff, relief=30.0), 1.0)  # fmt: skip
+    want_2 = 1 + c_eff / 50 * np.clip(g / (ge - ga), 0, None) ** 3
+    assert np.allclose(approach_factor(g, ga, ge, c_eff, driver=2), want_2, rtol=1e-12)
+    # C_eff = K_A F_t / (b cos alpha_t c_gamma): 1.25 * 4000 / (20 cos 20 * 20) um
+    assert float(optimal_tip_relief(1.25, 4000, 20, 20, 20)) == pytest.approx(
+        1.25 * 4000 / (20 * math.cos(math.radians(20)) * 20), rel=1e-12
+    )
+
+
+def test_tip_relief_cools_the_approach_zone():
+    # the flash temperature peaks at the start of contact (Gamma_A) for this pair; a tip
+    # relief on the driven gear of at least C_eff takes X_J back to 1 there, and the peak
+    # then equals the one with gear 2 driving and a full relief on gear 1 (X_J = 1 both)
+    base = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6)
+    relieved = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6,
+                             tip_relief=(0, 500))  # fmt: skip
+    mirror = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6,
+                           tip_relief=(500, 0), driver=2)  # fmt: skip
+    assert float(base.gamma_flmax) == pytest.approx(float(base.gamma_A), abs=1e-12)
+    assert float(relieved.theta_flmax) < float(base.theta_flmax)
+    assert float(relieved.S_B) > float(base.S_B)
+    assert float(relieved.theta_flmax) == pytest.approx(float(mirror.theta_flmax), rel=1e-12)
+    # the integral method has its own approach treatment: X_J leaves it alone
+    assert float(relieved.S_intS) == pytest.approx(float(base.S_intS), rel=1e-12)
+
+
+@settings(max_examples=25, deadline=None)
+@given(relief=st.tuples(st.floats(0, 1e3), st.floats(0, 1e3)), driver=st.sampled_from([1, 2]),
+       torque=st.floats(1e-6, 1e5), z1=st.integers(6, 60))  # fmt: skip
+def test_property_tip_relief_finite(relief, driver, torque, z1):
+    r = rate_scuffing(z1, 50, 3, 30, torque, 1500, oil=OIL, tip_relief=relief, driver=driver,
+                      errors="mask")  # fmt: skip
+    assert np.all(np.isfinite(np.asarray(r.S_B))) and np.all(np.isfinite(np.asarray(r.S_intS)))
+    if r.valid:
+        assert float(r.theta_flmax) > 0 or torque < 1e-3
 
 
 @settings(max_examples=40, deadline=None)
