@@ -71,6 +71,9 @@ RATING_OPTIONS = (
     "application_factor", "quality", "roughness", "oil_viscosity", "tip_relief", "sigma_Hlim",
     "sigma_Flim", "contacts", "idler", "misalignment", "root", "root_roughness",
 )  # fmt: skip
+#: the options GearPair.rating takes as one number each (a search applies them to every pair)
+_ONE_NUMBER = ("application_factor", "quality", "roughness", "oil_viscosity", "tip_relief",
+               "misalignment", "root_roughness")  # fmt: skip
 _FACTOR_NAMES = tuple(f[0] for f in FACTORS)
 _SAFETIES = ("S_H1", "S_H2", "S_F1", "S_F2")
 
@@ -248,6 +251,8 @@ def load_case(
                 )
             continue
         if key in RATING_OPTIONS:
+            if key in _ONE_NUMBER and np.ndim(value) != 0:
+                raise error(f"{key} = {value!r}; valid is one number (the same for every pair)")
             kw[key] = value
         elif key in _FACTOR_NAMES:
             factors[key] = value

@@ -217,6 +217,11 @@ def test_estimate_counts_the_candidates():
         ({"material": "brass"}, "brass"),
         ({"objective": "-S_X"}, "'-S_X' is not a column"),
         ({"smallest_width": "yes"}, "smallest_width"),
+        # GearPair.rating takes these as one number each; a pair of them broadcast against the
+        # candidates and raised numpy's ValueError before (found by the gearbox-loss work)
+        ({"roughness": (0.8, 1.2)}, r"roughness = \(0.8, 1.2\); valid is one number"),
+        ({"tip_relief": [0.01, 0.02]}, r"tip_relief = \[0.01, 0.02\]; valid is one number"),
+        ({"root_roughness": (1, 2)}, r"root_roughness = \(1, 2\); valid is one number"),
     ],
 )
 def test_bad_load_input_is_refused(kwargs, match):
