@@ -79,6 +79,30 @@ def test_integral_method_iso_tr_13989_2():
     assert float(out.mu_mC) == pytest.approx(mu, rel=1e-9)
 
 
+@pytest.mark.parametrize("u", [1.0, 2.5, 4.0])
+def test_flash_temperature_against_the_general_form(u):
+    # ISO/TR 13989-1:2000 Eq. (5), as quoted by hakangunes258/mekanika (Services/
+    # Iso13989FlashTemperature.cs): theta_fl = 2.52 mu (X_M/50) X_J (X_Gamma w_Bt)^0.75
+    # (n_1/60)^0.5 |rho_1^0.5 - (rho_2/u)^0.5| / rho_rel^0.25 (mm, rpm), for a spur pair the same
+    # flash temperature as the adapted Eq. (A.5) of flash_temperature: the same shape along the
+    # path (their ratio constant within 1e-9) and the same level within the rounding of the
+    # constants 2.52, 1.22 and 0.51 (2.5 % here, so within 3 %)
+    z1, m, awt = 20, 3.0, math.radians(20)
+    a = m * z1 * (1 + u) / 2
+    v, w = 10.0, 300.0
+    n1 = v * 60000 / (math.pi * m * z1)
+    x_ab = float(angle_factor(20, 20, 20, 0))
+    ratios = []
+    for g in (-0.5, -0.2, 0.3, 0.6):
+        adapted = float(flash_temperature(0.1, 50.0, x_ab, g, u, 1.0, w, v, a))
+        r1, r2 = (1 + g) / (1 + u) * a * math.sin(awt), (u - g) / (1 + u) * a * math.sin(awt)
+        rel = r1 * r2 / (r1 + r2)
+        general = 2.52 * 0.1 * w**0.75 * math.sqrt(n1 / 60) * abs(r1**0.5 - (r2 / u) ** 0.5)
+        ratios.append(adapted / (general / rel**0.25))
+    assert np.allclose(ratios, ratios[0], rtol=1e-9)
+    assert ratios[0] == pytest.approx(1.0, rel=0.03)
+
+
 def test_steel_thermoelastic_factor():
     # ISO/TS 6336-20: X_M = 50 K N^-3/4 s^1/2 m^-1/2 mm for steel (E 206 000 MPa, nu 0.3,
     # B_M 13.795 N/(mm s^0.5 K)); within the rounding of B_M
