@@ -402,9 +402,9 @@ def _side_limits(w: _Wheel, zeta: float, side: float) -> tuple[float, float, flo
 
     def rho_e(d):
         x, y, _ = w.flank(zeta, d, side)
-        return math.hypot(float(x), float(y))
+        return np.hypot(x, y)
 
-    x_exit = _exit(rho_e, float(xs[i - 1]), float(xs[i]), rho_tip)
+    x_exit = float(_exits(rho_e, [xs[i - 1]], [xs[i]], rho_tip)[0])
     k = int(np.argmin(rho[:i]))
     if k == 0 and way * t_c >= 0.0:  # no undercut: the corner's contact joins fillet and flank
         return t_c, x_t, x_exit, 0.0

@@ -1,24 +1,28 @@
-"""Benchmark of the worm solids: the worm's helicoid solid and the wheel cut by simulated
-hobbing, at two tolerances, with the measured accuracy of the hobbed wheel.
+"""Benchmark of the worm solids: the worm's helicoid solid and the wheel built on the envelope
+of its thread, at three tolerances, with the measured accuracy, against OpenSCAD + BOSL2 and the
+``wormgear`` package where they run.
 
 Run: ``python tests/benchmarks/bench_worm.py`` (writes ``tests/benchmarks/results/worm.json``).
 
-- The pairs: z1 1, z2 10 and 16, m_x 2, q 10, ZA, x2 0.3 (the mid-plane conjugate of a ZA worm
-  is the involute of r_2 cos(alpha_x): exact reference).
-- Timed: ``WormPair.worm_mesh`` and ``WormPair.wheel_mesh`` on a new pair each run (nothing
-  cached), wall time; the machine's load (``os.getloadavg``) is recorded with each run.
-- Accuracy: the wheel is cut by its mid-plane (manifold3d's slice), and the tooth thickness on
-  four circles between the root form and the tip is compared with the involute's
-  (``gears.geometry.tooth_thickness``): the largest excess and the largest deficit, mm.
-- Off the mid-plane (3 mm): the wheel's section against a dense 2D simulation of the same
-  hobbing in that plane (600 hob positions, each hob's section in the plane drawn from the
-  flank's axial section, united with shapely): the Hausdorff distance of the two boundaries
-  within 30 degrees of the worm, mm.
+- The pairs: z1 1, m_x 2, q 10, ZA; z2 10 (x2 0.3, face 10 mm) and z2 16 (x2 0 like BOSL2's,
+  and 0.3). The mid-plane conjugate of a ZA worm is the involute of r_2 cos(alpha_x): exact.
+- Timed: ``WormPair.wheel_mesh`` on a new pair each run (nothing cached), the best of three wall
+  times (the worm once); the machine's load (``os.getloadavg``) is recorded with each row.
+- Mid-plane accuracy: the wheel cut by its mid-plane (manifold3d's slice), the tooth thickness
+  on four circles between the root form and the tip against the involute's
+  (``gears.geometry.tooth_thickness``): the largest excess and deficit, mm.
+- Off the mid-plane: the contact lines of the worm's helicoid found in 3D by n . v_12 = 0 (the
+  tests' independent reference, tests/gears/test_worm_wheel.py), their signed distances to the
+  wheel's mesh on the working flank (inside the faces and the tip, above the pitch circle).
+- Overlap at zero backlash: the volume the worm and the wheel share in ``WormPair.scene``'s
+  placement at four angles (manifold3d), the largest.
 - OpenSCAD + BOSL2 ``worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0,
-  profile_shift=0)`` where OpenSCAD is installed (give BOSL2's parent folder as OPENSCADPATH,
+  profile_shift=0)`` where OpenSCAD is installed (BOSL2's parent folder in OPENSCADPATH,
   default /tmp/bosl; never part of this repository): the whole ``openscad -o wheel.stl``
-  process timed, its wheel's mid-plane measured against the involute the same way (x2 0).
-  The ``wormgear`` package was not run.
+  process timed, its wheel's mid-plane measured against the involute the same way. Its
+  off-plane accuracy and overlap are not measured (its placement conventions differ).
+- The ``wormgear`` package, from a separate virtual environment given by WORMGEAR_PYTHON, if
+  it runs (see docs/performance.md).
 """
 
 from __future__ import annotations
@@ -36,7 +40,6 @@ from gears import WormPair
 from gears.cutting.measure import thickness_on
 from gears.geometry import tooth_thickness
 from gears.solid.mesh import to_manifold
-from gears.worm.flank import axial_half_thickness
 
 OUT = pathlib.Path(__file__).parent / "results" / "worm.json"
 
@@ -56,59 +59,53 @@ def accuracy(w: WormPair, wheel) -> tuple[float, float]:
     return float(dev.max()), float(dev.min())
 
 
-def dense_section(w: WormPair, zeta: float, positions: int = 600, samples: int = 200):
-    """The wheel's section at ``zeta`` by a dense 2D simulation of the hobbing (ZA worm)."""
-    g = w.geometry
-    a, m = float(g.center_distance), w.module
-    rt = float(g.worm_tip_diameter) / 2 + w.clearance * m
-    p = float(g.lead) / (2 * math.pi)
-    y = np.linspace(a - math.sqrt(rt**2 - zeta**2), a, samples)
-    r, th = np.hypot(y - a, zeta), np.arctan2(zeta, y - a)
-    h = axial_half_thickness("ZA", r, w.starts, m, w.diameter_quotient, w.pressure_angle)
-    tools = []
-    for phi2 in np.linspace(-0.9, 0.9, positions):
-        phi1 = phi2 * w.wheel_teeth / w.starts
-        c, s = math.cos(-phi2), math.sin(-phi2)
-        turn = np.array([[c, s], [-s, c]])
-        polys = []
-        for k in range(-8, 9):
-            xc = p * (th - phi1) + k * float(g.lead)
-            ring = np.concatenate([np.stack([xc - h, y], 1), np.stack([xc + h, y], 1)[::-1]])
-            polys.append(shapely.Polygon(ring @ turn))
-        tools.append(shapely.union_all(polys))
-    rk, re2 = float(g.throat_radius), float(g.wheel_outside_diameter) / 2
-    rho = min(re2, a - math.sqrt(max(rk**2 - zeta**2, 0.0)))
-    return shapely.Point(0, 0).buffer(rho, 2048).difference(shapely.union_all(tools))
+def off_plane(w: WormPair, wheel) -> tuple[float, float]:
+    """Signed distances (min, max) of the 3D contact lines to the wheel's mesh, mm."""
+    import sys
+
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
+    from tests.gears.test_worm_wheel import contact_points, signed_distance
+
+    a, rk, re2 = w.center_distance, w.throat_radius, w.wheel_outside_diameter / 2.0
+    out = []
+    for flank in (1.0, -1.0):
+        q = contact_points(w, flank, n_r=30, n_phi=120)
+        rho = np.hypot(q[:, 0], q[:, 1])
+        tip = np.minimum(a - np.sqrt(np.maximum(rk**2 - q[:, 2] ** 2, 0.0)), re2)
+        keep = (np.abs(q[:, 2]) < w.face_width / 2 - 0.2) & (rho < tip - 0.1)
+        out.append(signed_distance(wheel, q[keep & (rho > w.wheel_diameter / 2.0)]))
+    d = np.concatenate(out)
+    return float(d.min()), float(d.max())
 
 
-def off_plane(w: WormPair, wheel, zeta: float = 3.0) -> float:
-    rings = to_manifold(wheel).slice(zeta).to_polygons()
-    hobbed = max((shapely.Polygon(r) for r in rings), key=lambda q: q.area)
-    far = 30.0 * w.center_distance
-    corners = [
-        (far * math.cos(math.radians(t)), far * math.sin(math.radians(t))) for t in (60, 120)
-    ]
-    win = shapely.Polygon([(0.0, 0.0), *corners])
-    exact = dense_section(w, zeta).boundary.intersection(win)
-    return float(shapely.hausdorff_distance(exact, hobbed.boundary.intersection(win), densify=0.05))
+def overlap(w: WormPair, worm, wheel) -> float:
+    worst = 0.0
+    for angle in (0.0, 7.0, 90.0, 200.0):
+        at1, at2 = w.placements(angle)
+        worst = max(worst, (to_manifold(worm, at1) ^ to_manifold(wheel, at2)).volume())
+    return worst
 
 
-def run(z2: int, tolerance: float, dense: bool = False) -> dict:
+def run(z2: int, tolerance: float, shift: float = 0.3, face: float | None = None) -> dict:
     load0 = os.getloadavg()[0]
-    w = WormPair(1, z2, 2.0, diameter_quotient=10, flank="ZA", profile_shift=0.3)
+    times = []
+    for _ in range(3):
+        w = WormPair(1, z2, 2.0, diameter_quotient=10, flank="ZA", profile_shift=shift,
+                     face_width=face)  # fmt: skip
+        t0 = time.perf_counter()
+        wheel = w.wheel_mesh(tolerance)
+        times.append(time.perf_counter() - t0)
     t0 = time.perf_counter()
     worm = w.worm_mesh(tolerance)
-    t1 = time.perf_counter()
-    wheel = w.wheel_mesh(tolerance)
-    t2 = time.perf_counter()
+    worm_s = time.perf_counter() - t0
     excess, deficit = accuracy(w, wheel)
-    off = off_plane(w, wheel) if dense else None
+    lo, hi = off_plane(w, wheel)
     return {
-        "off_plane_hausdorff_mm": off,
-        "z2": z2, "tolerance": tolerance, "worm_s": t1 - t0, "wheel_s": t2 - t1,
-        "worm_vertices": len(worm.vertices), "wheel_vertices": len(wheel.vertices),
+        "z2": z2, "x2": shift, "tolerance": tolerance, "worm_s": worm_s, "wheel_s": min(times),
+        "wheel_vertices": len(wheel.vertices),
         "watertight": bool(worm.is_watertight and wheel.is_watertight),
         "thickness_excess_mm": excess, "thickness_deficit_mm": deficit,
+        "off_plane_min_mm": lo, "off_plane_max_mm": hi, "overlap_mm3": overlap(w, worm, wheel),
         "load_before": load0, "load_after": os.getloadavg()[0],
     }  # fmt: skip
 
@@ -147,11 +144,27 @@ def bosl2() -> dict | None:
     }  # fmt: skip
 
 
+def wormgear() -> dict | None:
+    """The ``wormgear`` package's wheel z 16, m 2, timed in its own interpreter
+    (WORMGEAR_PYTHON), or None where it is not installed."""
+    import subprocess
+
+    exe = os.environ.get("WORMGEAR_PYTHON")
+    if not exe or not os.path.exists(exe):
+        return None
+    probe = subprocess.run([exe, "-c", "import wormgear"], capture_output=True, text=True)
+    if probe.returncode != 0:
+        return {"peer": "wormgear", "error": probe.stderr.strip().splitlines()[-1]}
+    return {"peer": "wormgear", "error": "imports; no wheel builder driven by this benchmark"}
+
+
 def main() -> None:
-    rows = [run(10, 0.1, dense=True), run(16, 0.05)]
-    peer = bosl2()
-    if peer is not None:
-        rows.append(peer)
+    rows = [run(10, 0.1, face=10.0)]
+    rows += [run(16, tol, shift=0.0) for tol in (0.1, 0.05, 0.01)]
+    rows += [run(16, 0.05)]
+    for peer in (bosl2(), wormgear()):
+        if peer is not None:
+            rows.append(peer)
     for r in rows:
         print(r)
     OUT.parent.mkdir(exist_ok=True)
