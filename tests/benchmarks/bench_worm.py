@@ -144,18 +144,47 @@ def bosl2() -> dict | None:
     }  # fmt: skip
 
 
+WORMGEAR = """
+import sys, time
+from wormgear.calculator.core import design_from_module
+from wormgear.core.wheel import WheelGeometry
+from build123d import export_stl
+d = design_from_module(2.0, 16, worm_pitch_diameter=20.0, clearance_factor=0.2, profile="ZA")
+t0 = time.perf_counter()
+part = WheelGeometry(d.wheel, d.worm, d.assembly, throated=True).build()
+seconds = time.perf_counter() - t0
+export_stl(part, sys.argv[1], tolerance=0.01, angular_tolerance=0.1)
+print(seconds)
+"""
+
+
 def wormgear() -> dict | None:
-    """The ``wormgear`` package's wheel z 16, m 2, timed in its own interpreter
-    (WORMGEAR_PYTHON), or None where it is not installed."""
+    """The ``wormgear`` package's throated wheel z 16, m 2, worm diameter 20 (its
+    ``WheelGeometry(throated=True)``, build123d), timed in its own interpreter
+    (WORMGEAR_PYTHON), centred and measured like ours; None where it is not installed."""
     import subprocess
+    import tempfile
+
+    import trimesh
 
     exe = os.environ.get("WORMGEAR_PYTHON")
     if not exe or not os.path.exists(exe):
         return None
-    probe = subprocess.run([exe, "-c", "import wormgear"], capture_output=True, text=True)
-    if probe.returncode != 0:
-        return {"peer": "wormgear", "error": probe.stderr.strip().splitlines()[-1]}
-    return {"peer": "wormgear", "error": "imports; no wheel builder driven by this benchmark"}
+    with tempfile.TemporaryDirectory() as tmp:
+        stl = os.path.join(tmp, "wheel.stl")
+        load0 = os.getloadavg()[0]
+        done = subprocess.run([exe, "-c", WORMGEAR, stl], capture_output=True, text=True)
+        if done.returncode != 0:
+            return {"peer": "wormgear", "error": done.stderr.strip().splitlines()[-1]}
+        wheel = trimesh.load(stl)
+    wheel.apply_translation(-wheel.bounds.mean(axis=0))
+    excess, deficit = accuracy(WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA"), wheel)
+    return {
+        "peer": "wormgear WheelGeometry(throated=True)", "z2": 16,
+        "wheel_s": float(done.stdout.split()[-1]), "wheel_vertices": len(wheel.vertices),
+        "watertight": bool(wheel.is_watertight), "thickness_excess_mm": excess,
+        "thickness_deficit_mm": deficit, "load_before": load0,
+    }  # fmt: skip
 
 
 def main() -> None:
