@@ -558,7 +558,7 @@ def _results(out: dict, valid, reason, shape) -> ScuffingRatings:
 def _checked(oil, welding, meshes, thermal_contact, tip_relief=0.0, driver=1):
     if not isinstance(oil, Oil):
         raise GearError(f"oil = {oil!r}; give a gears.rating.scuffing.Oil(fzg_stage=..., ...)")
-    if isinstance(driver, bool) or driver not in (1, 2):
+    if isinstance(driver, bool) or not isinstance(driver, int | np.integer) or driver not in (1, 2):
         raise GearError(f"driver = {driver!r}; valid are 1 (gear 1 drives) and 2")
     c1, c2 = _pair_of("tip_relief", tip_relief)
     _number("tip_relief", c1, 0.0, 1e3, low_open=False)

@@ -317,6 +317,8 @@ def test_bad_input():
     assert float(scuffing_temperature(12)) == pytest.approx(404.0)
     with pytest.raises(GearError, match="driver"):
         rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, driver=3)
+    with pytest.raises(GearError, match="driver"):
+        rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, driver=np.array([1, 2]))
     with pytest.raises(GearError, match="tip_relief"):
         rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, tip_relief=(0, -1))
 
