@@ -434,11 +434,11 @@ def rate_pair(
         c1, c2 = contacts
         meshes = max(int(c1), int(c2), 2 if any(idler) else 1)  # X_mp of the busiest gear
         scuff = pair_scuffing(pair, values, scuffing, b, roughness, (m1, m2), welding_factor,
-                              meshes)  # fmt: skip
+                              meshes, tip_relief)  # fmt: skip
         settings |= {
             "oil": scuffing,
             "welding_factor": welding_factor,
-            "scuffing": (scuffing, b, roughness, (m1, m2), welding_factor, meshes),
+            "scuffing": (scuffing, b, roughness, (m1, m2), welding_factor, meshes, tip_relief),
         }
     return Rating(pair, values, settings, (routes[0], routes[1]), kept, scuff)
 

@@ -555,14 +555,18 @@ def _results(out: dict, valid, reason, shape) -> ScuffingRatings:
                            reason=reason[()] if reason.ndim == 0 else reason)  # fmt: skip
 
 
-def _checked(oil, welding, meshes, thermal_contact, tip_relief=0.0, driver=1):
+def _relief_um(tip_relief):
+    """The tip relief C_a of both gears, um, from the rating's ``tip_relief`` (mm; None: 0)."""
+    if tip_relief is None:
+        return 0.0
+    return 1000.0 * _number("tip_relief", tip_relief, 0.0, 10.0, low_open=False)
+
+
+def _checked(oil, welding, meshes, thermal_contact, driver=1):
     if not isinstance(oil, Oil):
         raise GearError(f"oil = {oil!r}; give a gears.rating.scuffing.Oil(fzg_stage=..., ...)")
     if isinstance(driver, bool) or not isinstance(driver, int | np.integer) or driver not in (1, 2):
         raise GearError(f"driver = {driver!r}; valid are 1 (gear 1 drives) and 2")
-    c1, c2 = _pair_of("tip_relief", tip_relief)
-    _number("tip_relief", c1, 0.0, 1e3, low_open=False)
-    _number("tip_relief", c2, 0.0, 1e3, low_open=False)
     x_w = _number("welding", welding, 0.0, 10.0)
     n_p = _number("meshes", meshes, 1.0, 100.0, low_open=False, integer=True)
     b1, b2 = _pair_of("thermal_contact", thermal_contact)
@@ -574,8 +578,8 @@ def _checked(oil, welding, meshes, thermal_contact, tip_relief=0.0, driver=1):
 def rate_scuffing(
     z1: ArrayLike, z2: ArrayLike, module: ArrayLike, face_width: ArrayLike, torque: ArrayLike,
     speed: ArrayLike, *, oil: Oil, welding: ArrayLike = 1.0, meshes: ArrayLike = 1,
-    thermal_contact: Any = STEEL_THERMAL_CONTACT, tip_relief: Any = 0.0, driver: int = 1,
-    errors: str = "raise", **rating: Any,
+    thermal_contact: Any = STEEL_THERMAL_CONTACT, driver: int = 1, errors: str = "raise",
+    **rating: Any,
 ) -> ScuffingRatings:  # fmt: skip
     """Scuffing safety of many pairs at once by the flash temperature method (ISO/TS 6336-20)
     and the integral temperature method (ISO/TS 6336-21); arrays broadcast.
@@ -594,9 +598,6 @@ def rate_scuffing(
         Meshes of the hotter gear (a planet meshing sun and ring: 2): X_mp = (1 + meshes)/2.
     thermal_contact : float or pair
         Thermal contact coefficient B_M of the flanks, N/(mm s^0.5 K) (steel: 13.795).
-    tip_relief : float or pair
-        Tip relief C_a1, C_a2 of the flanks, um (0: unmodified). It enters the approach factor
-        X_J (:func:`approach_factor`), not X_Gamma.
     driver : {1, 2}
         The driving gear: the driven gear's tip starts contact and heats the approach zone.
     errors : {"raise", "mask"}
@@ -605,7 +606,9 @@ def rate_scuffing(
         Every other argument of :func:`gears.rating.iso6336.rate_pairs` (shifts, angles,
         ``internal``, ``material``, ``application_factor``, ``quality``, ``roughness`` (the
         flanks' Ra, um), ``factors``, ...): the load factors K_A, K_gamma, K_v, K_Hbeta and
-        K_Halpha come from that rating; ``oil_viscosity`` defaults to the oil's nu_40.
+        K_Halpha come from that rating; ``oil_viscosity`` defaults to the oil's nu_40;
+        ``tip_relief`` (C_a in mm, of both gears; none given: unmodified flanks here) enters the
+        approach factor X_J (:func:`approach_factor`) too, not X_Gamma.
 
     Returns
     -------
@@ -618,7 +621,7 @@ def rate_scuffing(
     >>> [round(float(s), 2) for s in r.S_B], [round(float(s), 2) for s in r.S_intS]
     ([0.68, 0.65], [1.13, 1.2])
     """
-    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, tip_relief, driver)
+    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, driver)
     for key in ("fields", "geometry"):
         if key in rating:
             raise GearError(f"{key}= is not an argument of rate_scuffing")
@@ -647,9 +650,9 @@ def rate_scuffing(
               geo.working_pressure_angle, geo.center_distance, da1, da2, face_width, values.F_t,
               values.v, load, g["roughness"]]  # fmt: skip
     inputs = [np.asarray(v, bool if i == 5 else float) for i, v in enumerate(inputs)]
-    c1, c2 = _pair_of("tip_relief", tip_relief)
+    c_a = 1000.0 * np.asarray(0.0 if rating.get("tip_relief") is None else rating["tip_relief"])
     extra = [np.asarray(v, float) for v in (x_m, x_w, n_p, values.K_A, values.c_gamma_alpha,
-                                            c1, c2, driver)]  # fmt: skip
+                                            c_a, c_a, driver)]  # fmt: skip
     shape = np.broadcast_shapes(*(v.shape for v in (*inputs, *extra)),
                                 np.shape(values.valid))  # fmt: skip
     out = _in_blocks(inputs, oil, extra, shape)
@@ -685,13 +688,14 @@ def _in_blocks(inputs, oil, extra, shape):
 
 def pair_scuffing(pair: Any, values: Any, oil: Oil, face_width: float, roughness: float,
                   materials: tuple, welding: float = 1.0, meshes: int = 1,
-                  thermal_contact: Any = STEEL_THERMAL_CONTACT, tip_relief: Any = 0.0,
+                  tip_relief: Any = None, thermal_contact: Any = STEEL_THERMAL_CONTACT,
                   driver: int = 1) -> ScuffingRatings:  # fmt: skip
     """The scuffing rating of one :class:`gears.GearPair` from its ISO 6336 rating ``values``
     (a :class:`gears.rating.iso6336.PairRatings`): :meth:`gears.GearPair.rating` with
-    ``scuffing=`` (``tip_relief`` and ``driver`` as for :func:`rate_scuffing`)."""
-    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, tip_relief, driver)
-    c1, c2 = _pair_of("tip_relief", tip_relief)
+    ``scuffing=`` (``tip_relief`` the rating's C_a in mm or None, ``driver`` as for
+    :func:`rate_scuffing`)."""
+    x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, driver)
+    c1 = c2 = _relief_um(tip_relief)
     g1, g2 = pair.mounted
     m1, m2 = materials
     x_m = thermoelastic_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus, m2.poisson,

@@ -24,6 +24,7 @@ from scipy.integrate import quad
 
 from gears import Gear, GearPair
 from gears.errors import GearError
+from gears.rating.iso6336 import rate_pairs
 from gears.rating.scuffing import (
     FZG_TORQUES,
     Oil,
@@ -320,7 +321,7 @@ def test_bad_input():
     with pytest.raises(GearError, match="driver"):
         rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, driver=np.array([1, 2]))
     with pytest.raises(GearError, match="tip_relief"):
-        rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, tip_relief=(0, -1))
+        rate_scuffing(20, 50, 3, 30, 150, 1500, oil=OIL, tip_relief=-1)
 
 
 def test_approach_factor_iso_tr_13989_1():
@@ -346,32 +347,44 @@ def test_approach_factor_iso_tr_13989_1():
     )
 
 
-def test_tip_relief_cools_the_approach_zone():
-    # the flash temperature peaks at the start of contact (Gamma_A) for this pair; a tip
-    # relief on the driven gear of at least C_eff takes X_J back to 1 there, and the peak
-    # then equals the one with gear 2 driving and a full relief on gear 1 (X_J = 1 both)
-    base = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6)
-    relieved = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6,
-                             tip_relief=(0, 500))  # fmt: skip
-    mirror = rate_scuffing(17, 40, 4, 40, 600, 3000, oil=OIL, roughness=0.6,
-                           tip_relief=(500, 0), driver=2)  # fmt: skip
-    assert float(base.gamma_flmax) == pytest.approx(float(base.gamma_A), abs=1e-12)
-    assert float(relieved.theta_flmax) < float(base.theta_flmax)
-    assert float(relieved.S_B) > float(base.S_B)
-    assert float(relieved.theta_flmax) == pytest.approx(float(mirror.theta_flmax), rel=1e-12)
-    # the integral method has its own approach treatment: X_J leaves it alone
-    assert float(relieved.S_intS) == pytest.approx(float(base.S_intS), rel=1e-12)
+def test_tip_relief_and_the_driver():
+    # this pair's flash temperature peaks at the start of contact, Gamma_A, where gear 2's tip
+    # meets gear 1's flank. Gear 1 driving, unrelieved (tip_relief 0): X_J(Gamma_A) =
+    # 1 + C_eff/50 (-Gamma_A/(Gamma_E - Gamma_A))^3 heats it; gear 2 driving, X_J is 1 at A
+    # (its approach zone is at E), so the two peaks differ by exactly that factor
+    # (ISO/TR 13989-1 Eq. (45)-(48), (B.1)); the integral method does not see the driver
+    args = (17, 40, 4, 40, 600, 3000)
+    one = rate_scuffing(*args, oil=OIL, roughness=0.6, tip_relief=0.0)
+    two = rate_scuffing(*args, oil=OIL, roughness=0.6, tip_relief=0.0, driver=2)
+    f = rate_pairs(*args, tip_relief=0.0, oil_viscosity=100, fields=("K_A", "F_t", "c_gamma_alpha"))
+    c_eff = float(optimal_tip_relief(f.K_A, f.F_t, 40, 20, f.c_gamma_alpha))
+    ga, ge = float(one.gamma_A), float(one.gamma_E)
+    assert float(one.gamma_flmax) == pytest.approx(ga, abs=1e-12)
+    assert float(two.gamma_flmax) == pytest.approx(ga, abs=1e-12)
+    x_j = 1 + c_eff / 50 * (-ga / (ge - ga)) ** 3
+    assert float(one.theta_flmax) / float(two.theta_flmax) == pytest.approx(x_j, rel=1e-9)
+    assert float(one.S_intS) == pytest.approx(float(two.S_intS), rel=1e-12)
+    # a tip relief of at least C_eff (50 um > C_eff) on both gears: X_J = 1 whoever drives
+    assert c_eff < 50
+    r1 = rate_scuffing(*args, oil=OIL, roughness=0.6, tip_relief=0.05)
+    r2 = rate_scuffing(*args, oil=OIL, roughness=0.6, tip_relief=0.05, driver=2)
+    assert float(r1.theta_flmax) == pytest.approx(float(r2.theta_flmax), rel=1e-12)
+    # GearPair.rating passes its tip_relief on to X_J (gear 1 driving)
+    pair = GearPair(Gear(17, 4, face_width=40), Gear(40, 4, face_width=40))
+    r = pair.rating(600, 3000, roughness=0.6, oil_viscosity=100, tip_relief=0.0, scuffing=OIL)
+    assert float(r.scuffing.theta_flmax) == pytest.approx(float(one.theta_flmax), rel=1e-9)
 
 
 @settings(max_examples=25, deadline=None)
-@given(relief=st.tuples(st.floats(0, 1e3), st.floats(0, 1e3)), driver=st.sampled_from([1, 2]),
+@given(relief=st.none() | st.floats(0, 0.1), driver=st.sampled_from([1, 2]),
        torque=st.floats(1e-6, 1e5), z1=st.integers(6, 60))  # fmt: skip
 def test_property_tip_relief_finite(relief, driver, torque, z1):
-    r = rate_scuffing(z1, 50, 3, 30, torque, 1500, oil=OIL, tip_relief=relief, driver=driver,
-                      errors="mask")  # fmt: skip
+    try:
+        r = rate_scuffing(z1, 50, 3, 30, torque, 1500, oil=OIL, tip_relief=relief,
+                          driver=driver, errors="mask")  # fmt: skip
+    except GearError:
+        return
     assert np.all(np.isfinite(np.asarray(r.S_B))) and np.all(np.isfinite(np.asarray(r.S_intS)))
-    if r.valid:
-        assert float(r.theta_flmax) > 0 or torque < 1e-3
 
 
 @settings(max_examples=40, deadline=None)
