@@ -211,6 +211,8 @@ class RackTool:
         s = -1.0 if gear.internal else 1.0
         h = gear.rack.tool_addendum * mn
         rho = gear.rack.tool_tip_radius * mn
+        if rho < 1e-9 * mn:  # a round this small is a sharp corner (its normals would underflow)
+            rho = 0.0
         delta = backlash / (4.0 * math.cos(at))
         v_c = -s * (h - rho)
         # tangency in the normal section, then stretched by 1/cos(beta) along the pitch line
