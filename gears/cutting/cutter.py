@@ -4,7 +4,7 @@ A shaper cutter is an involute gear of ``z0`` teeth with a long addendum (``h_a0
 default, the rack tool's), tip rounds of radius ``rho_a0`` tangent to its flanks and its tip
 circle, and a profile shift ``x0``. Work and cutter turn as a gear pair at zero backlash
 (Ozols §21-6, the Fellows method; Joldasbekov §2.8: "an involute generating contour also
-generates an involute"), on the cutting centre distance
+generates an involute"), on the cutting centre distance::
 
     inv alpha_w0 = 2 tan alpha_n (x + x0) / (z +- z0) + inv alpha_t,
     a0 = m_t |z +- z0| / 2 * cos alpha_t / cos alpha_w0          (+ external, - internal work)

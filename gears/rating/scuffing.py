@@ -236,8 +236,8 @@ def angle_factor(alpha_wt, alpha_n, alpha_t, beta):
 
 
 def geometry_factor(gamma, u):
-    """Geometry factor X_BE(Gamma) = 0.51 |u + 1|^0.5 |sqrt(1 + Gamma) - sqrt(1 - Gamma/u)| /
-    ((1 + Gamma)^0.25 |u - Gamma|^0.25) at the point Gamma of the path of contact (u = z2/z1,
+    """Geometry factor ``X_BE(Gamma) = 0.51 |u + 1|^0.5 |sqrt(1 + Gamma) - sqrt(1 - Gamma/u)|
+    / ((1 + Gamma)^0.25 |u - Gamma|^0.25)`` at the point Gamma of the path of contact (u = z2/z1,
     negative for an internal pair); X_G = X_alphabeta X_BE. Zero at the pitch point.
 
     >>> float(geometry_factor(0.0, 2.0))
