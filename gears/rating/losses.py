@@ -165,9 +165,11 @@ def friction_coefficient(load_per_width, sum_velocity, curvature_radius, viscosi
     for name, value in checked:
         _positive(name, value)
     w = np.asarray(load_per_width, float)
+    with np.errstate(over="ignore"):  # a speed near float's smallest: mu = inf, refused after
+        ratio = w / (np.asarray(sum_velocity, float) * np.asarray(curvature_radius, float))
     return (
         0.048
-        * (w / (np.asarray(sum_velocity, float) * np.asarray(curvature_radius, float))) ** 0.2
+        * ratio**0.2
         * np.asarray(viscosity, float) ** -0.05
         * np.asarray(roughness, float) ** 0.25
         * np.asarray(lubricant_factor, float)
