@@ -210,7 +210,8 @@ def test_search_keeps_the_gears_other_modifications():
     pair = GearPair(Gear(20, 3, face_width=30, modification=root), Gear(50, 3, face_width=30))
     s = best_modification(pair, 300.0, tip_reliefs=np.linspace(0, 0.04, 21), positions=16)
     m1, _ = s.modifications
-    assert m1.root_relief == 0.01 and m1.root_relief_length == 2.0 and m1.crowning == 0.0
+    kept = (m1.root_relief, m1.root_relief_length, m1.crowning)
+    assert kept == pytest.approx((0.01, 2.0, 0.0), abs=1e-15)
     applied = s.apply(pair).contact(300.0, positions=16, slices=1)
     assert applied.peak_to_peak == pytest.approx(s.best_peak_to_peak, rel=1e-9)
 
