@@ -36,7 +36,7 @@ from typing import Any, TypeAlias
 import numpy as np
 import shapely
 
-__all__ = ["Circle", "bounds", "html_table", "message_svg", "svg"]
+__all__ = ["Circle", "bounds", "factor_text", "html_table", "message_svg", "svg"]
 
 #: Style of a failing row of an HTML table (a red text, readable in light and dark themes).
 FAIL_STYLE = "color:#c62828;font-weight:bold"
@@ -183,6 +183,20 @@ def message_svg(text: str, width: int = 360, columns: int = 56) -> str:
         f'<rect width="{width}" height="{height}" fill="#fff3e0" stroke="#e65100"/>\n'
         f'<text font-family="sans-serif" font-size="12" fill="#bf360c">{body}</text>\n</svg>\n'
     )
+
+
+def factor_text(value) -> str:
+    """A factor or quantity of a rating as text: 5 significant digits, 4 in exponent notation
+    beyond 1e5 or below 1e-3; a pair ``(gear 1, gear 2)`` as ``"a / b"``.
+
+    >>> factor_text((1.23456789, 0.0001234)), factor_text(2.5e6)
+    ('1.2346 / 0.0001234', '2.5e+06')
+    """
+    if isinstance(value, tuple):
+        return " / ".join(factor_text(v) for v in value)
+    if abs(value) >= 1e5 or (value != 0 and abs(value) < 1e-3):
+        return f"{value:.4g}"
+    return f"{value:.5g}"
 
 
 def html_table(

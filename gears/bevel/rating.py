@@ -33,7 +33,7 @@ import numpy as np
 
 from gears.arguments import check_real
 from gears.bevel.iso10300 import face_load_factors, method_b1, mounting_factor
-from gears.display import html_table
+from gears.display import factor_text, html_table
 from gears.errors import GearError
 from gears.rating.life import bending_life_factor, pitting_life_factor
 from gears.rating.materials import material as as_material
@@ -211,11 +211,12 @@ class BevelRating:
             lines.append(f"{name + ' [MPa]':26s} {a:10.2f} {b:10.2f}")
         lines += ["", f"{'factor':13s} {'value':>19s}  {'from':19s} what"]
         for symbol, _, what, where in BEVEL_FACTORS:
-            lines.append(f"{symbol:13s} {_fmt(self.factors[symbol]):>19s}  {where:19s} {what}")
+            value = factor_text(self.factors[symbol])
+            lines.append(f"{symbol:13s} {value:>19s}  {where:19s} {what}")
         lines.append("")
         for symbol, _, what, unit in BEVEL_QUANTITIES:
             label = f"{what} [{unit}]" if unit else what
-            lines.append(f"{symbol:13s} {_fmt(self.quantities[symbol]):>19s}  {label}")
+            lines.append(f"{symbol:13s} {factor_text(self.quantities[symbol]):>19s}  {label}")
         return "\n".join(lines)
 
     def __repr__(self) -> str:
@@ -234,8 +235,8 @@ class BevelRating:
             both = value if isinstance(value, tuple) else (value, value)
             rows.append((f"{name} [MPa]", *(f"{v:.2f}" for v in both)))
             marks.append(False)
-        factors = [(s, _fmt(self.factors[s]), w, what) for s, _, what, w in BEVEL_FACTORS]
-        quantities = [(s, _fmt(self.quantities[s]), f"{what} [{unit}]" if unit else what)
+        factors = [(s, factor_text(self.factors[s]), w, what) for s, _, what, w in BEVEL_FACTORS]
+        quantities = [(s, factor_text(self.quantities[s]), f"{what} [{unit}]" if unit else what)
                       for s, _, what, unit in BEVEL_QUANTITIES]  # fmt: skip
         return "\n".join([
             html_table(["", "pinion", "wheel"], rows, failing=marks,
@@ -243,14 +244,6 @@ class BevelRating:
             html_table(["factor", "value (pinion / wheel)", "from", "what"], factors),
             html_table(["quantity", "value (pinion / wheel)", "what"], quantities),
         ])  # fmt: skip
-
-
-def _fmt(value) -> str:
-    if isinstance(value, tuple):
-        return " / ".join(_fmt(v) for v in value)
-    if abs(value) >= 1e5 or (value != 0 and abs(value) < 1e-3):
-        return f"{value:.4g}"
-    return f"{value:.5g}"
 
 
 def _positive(name: str, value) -> float:

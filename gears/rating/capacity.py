@@ -13,7 +13,7 @@ import functools
 import math
 from dataclasses import dataclass, field
 
-from gears.display import html_table
+from gears.display import factor_text, html_table
 from gears.errors import GearError
 from gears.rating._arrays import number, one_number
 from gears.rating._arrays import pair_of as _pair_of
@@ -273,11 +273,12 @@ class Rating:
         lines.append("")
         lines.append(f"{'factor':13s} {'value':>19s}  {'clause':16s} what")
         for symbol, _, what, clause in FACTORS:
-            lines.append(f"{symbol:13s} {_fmt(self.factors[symbol]):>19s}  {clause:16s} {what}")
+            value = factor_text(self.factors[symbol])
+            lines.append(f"{symbol:13s} {value:>19s}  {clause:16s} {what}")
         lines.append("")
         for symbol, _, what, unit in QUANTITIES:
             label = f"{what} [{unit}]" if unit else what
-            lines.append(f"{symbol:13s} {_fmt(self.quantities[symbol]):>19s}  {label}")
+            lines.append(f"{symbol:13s} {factor_text(self.quantities[symbol]):>19s}  {label}")
         return "\n".join(lines)
 
     def __repr__(self) -> str:
@@ -310,8 +311,9 @@ class Rating:
             both = value if isinstance(value, tuple) else (value, value)
             rows.append((f"{name} [MPa]", *(f"{v:.2f}" for v in both)))
             marks.append(False)
-        factors = [(s, _fmt(self.factors[s]), clause, what) for s, _, what, clause in FACTORS]
-        quantities = [(s, _fmt(self.quantities[s]), f"{what} [{unit}]" if unit else what)
+        factors = [(s, factor_text(self.factors[s]), clause, what)
+                   for s, _, what, clause in FACTORS]  # fmt: skip
+        quantities = [(s, factor_text(self.quantities[s]), f"{what} [{unit}]" if unit else what)
                       for s, _, what, unit in QUANTITIES]  # fmt: skip
         return "\n".join([
             html_table(["", "gear 1", "gear 2"], rows, failing=marks,
@@ -319,14 +321,6 @@ class Rating:
             html_table(["factor", "value (gear 1 / gear 2)", "clause", "what"], factors),
             html_table(["quantity", "value (gear 1 / gear 2)", "what"], quantities),
         ])  # fmt: skip
-
-
-def _fmt(value) -> str:
-    if isinstance(value, tuple):
-        return " / ".join(_fmt(v) for v in value)
-    if abs(value) >= 1e5 or (value != 0 and abs(value) < 1e-3):
-        return f"{value:.4g}"
-    return f"{value:.5g}"
 
 
 def load_diameters(pair) -> tuple[float, float]:
