@@ -68,3 +68,48 @@ def hausdorff(a, b) -> float:
 def line_hausdorff():
     """:func:`hausdorff`, for the tests that compare two outlines' exteriors."""
     return hausdorff
+
+
+def stage_products(target, z_max, modules, widths, torque, speed):
+    """The brute force behind the gearbox searches' tests: every product of two single simple
+    stages (``trains.synthesize``, each with its exact target ratio, 3 planets, suns from 17
+    teeth), in both orders, each stage sized at its place for ``torque`` (N m) and ``speed``
+    (rpm) on ``modules`` x ``widths``. Yields ``(a, i, d1, b, j, d2)``: the candidates, their
+    rows and the sizing tables of stage 1 and 2, for every pair both of whose stages found a
+    module; the tests apply their own checks and objectives."""
+    import itertools
+    from fractions import Fraction
+
+    from gears.rating.sizing import load_case
+    from trains import synthesize
+    from trains.design.sizing import size_stages
+
+    modules, widths = list(modules), list(widths)
+    ratios = {Fraction(z1 + z3, z1) for z1 in range(17, z_max + 1)
+              for z3 in range(z1 + 1, z_max + 1)}  # fmt: skip
+    load = load_case(torque, speed)
+    for r1 in sorted(ratios):
+        r2 = target / r1
+        if r2 not in ratios:
+            continue
+        s1 = synthesize(r1, 3, z_max=z_max, limit=10**6)
+        s2 = synthesize(r2, 3, z_max=z_max, limit=10**6)
+        if not (s1 and s2):
+            continue
+        sized = []
+        for place, stages in ((1, s1), (r1, s2)):
+            z = np.array([c.teeth for c in stages])
+            num = np.array([c.ratio.numerator for c in stages])
+            den = np.array([c.ratio.denominator for c in stages])
+            sized.append(size_stages(load, "simple", *z.T, 3, num, den, torque * float(place),
+                                     speed / float(place), modules, widths))  # fmt: skip
+        d1, d2 = sized
+        for (i, a), (j, b) in itertools.product(enumerate(s1), enumerate(s2)):
+            if d1["module_index"][i] >= 0 and d2["module_index"][j] >= 0:
+                yield a, i, d1, b, j, d2
+
+
+@pytest.fixture
+def gearbox_stage_products():
+    """:func:`stage_products`, for the brute forces of the gearbox searches."""
+    return stage_products

@@ -20,7 +20,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears.rating.sizing import ISO54, load_case
-from trains import Planetary, TrainError, synthesize, synthesize_gearbox
+from trains import Planetary, TrainError, synthesize_gearbox
 from trains.capacity import LOAD_SHARING
 from trains.design.sizing import ring_tip_alteration, size_stages, stage_meshes
 from trains.planetary.schemes import stage_ratio
@@ -35,6 +35,7 @@ STAGES = [
     ("double-planet", (20, 17, 18, 74), 3),
 ]
 BOX = dict(torque=50, speed=1500, face_width=[10, 15, 20, 25, 30], progress=False)
+LOAD = dict(torque=50.0, speed=1500.0)  # the brute forces' load, BOX's
 
 
 def _planetary(scheme, teeth, k, module):
@@ -144,55 +145,34 @@ def _ok(c):
     return _checked(c.scheme, c.teeth, c.n_planets)
 
 
-def _brute_force_best(target, z_max, modules, widths, objective):
+def _brute_force_best(products, target, z_max, modules, widths, objective):
     """Every product of two single simple stages (synthesize, each with its exact target), in
-    both orders, each stage sized at its place; the best by the objective."""
-    found = _brute_force_products(target, z_max, tuple(modules), tuple(widths))
+    both orders, each stage sized at its place (tests/conftest.py ``stage_products``); the best
+    by the objective."""
+    found = _brute_force_products(products, target, z_max, tuple(modules), tuple(widths))
     return min((value[objective], *rest) for value, *rest in found)
 
 
 @functools.cache
-def _brute_force_products(target, z_max, modules, widths):
+def _brute_force_products(products, target, z_max, modules, widths):
     """(objective -> value, teeth of stage 1, of stage 2, module 1, module 2) of every feasible
-    product: the enumeration does not depend on the objective, so the volume and mass tests
-    share one (cached) brute force, and each takes its own minimum."""
-    modules, widths = list(modules), list(widths)
-    ratios = {Fraction(z1 + z3, z1) for z1 in range(17, z_max + 1)
-              for z3 in range(z1 + 1, z_max + 1)}  # fmt: skip
-    load = load_case(BOX["torque"], BOX["speed"])
+    product that passes Planetary.check(): the enumeration does not depend on the objective, so
+    the volume and mass tests share one (cached) brute force, and each takes its own minimum."""
     found = []
-    for r1 in sorted(ratios):
-        r2 = target / r1
-        if r2 not in ratios:
+    for a, i, d1, b, j, d2 in products(target, z_max, modules, widths, **LOAD):
+        if not (_ok(a) and _ok(b)):
             continue
-        s1 = synthesize(r1, 3, z_max=z_max, limit=10**6)
-        s2 = synthesize(r2, 3, z_max=z_max, limit=10**6)
-        if not (s1 and s2):
-            continue
-        sized = []
-        for place, stages in ((1, s1), (r1, s2)):
-            z = np.array([c.teeth for c in stages])
-            num = np.array([c.ratio.numerator for c in stages])
-            den = np.array([c.ratio.denominator for c in stages])
-            sized.append(size_stages(load, "simple", *z.T, 3, num, den, 50 * float(place),
-                                     1500 / float(place), modules, widths))  # fmt: skip
-        for (i, a), (j, b) in itertools.product(enumerate(s1), enumerate(s2)):
-            d1, d2 = sized[0], sized[1]
-            if d1["module_index"][i] < 0 or d2["module_index"][j] < 0:
-                continue
-            if not (_ok(a) and _ok(b)):
-                continue
-            value = {"volume": d1["volume"][i] + d2["volume"][j],
-                     "mass": d1["mass"][i] + d2["mass"][j],
-                     "ring": max(d1["ring"][i], d2["ring"][j])}  # fmt: skip
-            found.append((value, a.teeth, b.teeth, d1["module"][i], d2["module"][j]))
+        value = {"volume": d1["volume"][i] + d2["volume"][j],
+                 "mass": d1["mass"][i] + d2["mass"][j],
+                 "ring": max(d1["ring"][i], d2["ring"][j])}  # fmt: skip
+        found.append((value, a.teeth, b.teeth, d1["module"][i], d2["module"][j]))
     return found
 
 
 @pytest.mark.parametrize("objective", ["volume", "mass"])
-def test_best_design_equals_the_brute_force_product(objective):
+def test_best_design_equals_the_brute_force_product(objective, gearbox_stage_products):
     modules, widths = [1.0, 1.25, 1.5, 2.0, 2.5, 3.0], [10.0, 15.0, 20.0, 25.0]
-    best = _brute_force_best(Fraction(12), 90, modules, widths, objective)
+    best = _brute_force_best(gearbox_stage_products, Fraction(12), 90, modules, widths, objective)
     got = synthesize_gearbox(12, 2, z_max=90, module=modules, objective=objective, top=1,
                              **dict(BOX, face_width=widths))[0]  # fmt: skip
     value = got.volume if objective == "volume" else got.mass

@@ -11,7 +11,6 @@ products of single stages from ``synthesize`` (each with its own exact target), 
 from __future__ import annotations
 
 import functools
-import itertools
 import math
 from fractions import Fraction
 
@@ -21,8 +20,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears.rating.sizing import load_case
-from trains import Planetary, TrainError, synthesize, synthesize_gearbox
-from trains.design.sizing import size_stages, stage_efficiency
+from trains import Planetary, TrainError, synthesize_gearbox
+from trains.design.sizing import stage_efficiency
 from trains.planetary.schemes import stage_ratio
 from trains.power import planetary_efficiency, power_flow
 
@@ -119,42 +118,22 @@ def _check_ok(teeth, module):
     return _planetary("simple", teeth, 3, module).check().ok
 
 
-def _brute_force(target, z_max, modules, widths):
+def _brute_force(products, target, z_max, modules, widths):
     """Every product of two single simple stages (synthesize, each with its exact target), in
-    both orders, each stage sized at its place; (-efficiency, volume, teeth 1, teeth 2)."""
-    ratios = {Fraction(z1 + z3, z1) for z1 in range(17, z_max + 1)
-              for z3 in range(z1 + 1, z_max + 1)}  # fmt: skip
-    load = load_case(BOX["torque"], BOX["speed"])
+    both orders, each stage sized at its place (tests/conftest.py ``stage_products``);
+    (-efficiency, volume, teeth 1, teeth 2) of the best that passes Planetary.check()."""
     found = []
-    for r1 in sorted(ratios):
-        r2 = target / r1
-        if r2 not in ratios:
+    for a, i, d1, b, j, d2 in products(target, z_max, modules, widths, 50.0, 1500.0):
+        if not (_check_ok(a.teeth, d1["module"][i]) and _check_ok(b.teeth, d2["module"][j])):
             continue
-        s1 = synthesize(r1, 3, z_max=z_max, limit=10**6)
-        s2 = synthesize(r2, 3, z_max=z_max, limit=10**6)
-        if not (s1 and s2):
-            continue
-        sized = []
-        for place, stages in ((1, s1), (r1, s2)):
-            z = np.array([c.teeth for c in stages])
-            num = np.array([c.ratio.numerator for c in stages])
-            den = np.array([c.ratio.denominator for c in stages])
-            sized.append(size_stages(load, "simple", *z.T, 3, num, den, 50 * float(place),
-                                     1500 / float(place), modules, widths))  # fmt: skip
-        d1, d2 = sized
-        for (i, a), (j, b) in itertools.product(enumerate(s1), enumerate(s2)):
-            if d1["module_index"][i] < 0 or d2["module_index"][j] < 0:
-                continue
-            if not (_check_ok(a.teeth, d1["module"][i]) and _check_ok(b.teeth, d2["module"][j])):
-                continue
-            eta = d1["efficiency"][i] * d2["efficiency"][j]
-            found.append((-eta, d1["volume"][i] + d2["volume"][j], a.teeth, b.teeth))
+        eta = d1["efficiency"][i] * d2["efficiency"][j]
+        found.append((-eta, d1["volume"][i] + d2["volume"][j], a.teeth, b.teeth))
     return min(found)
 
 
-def test_best_by_mesh_efficiency_equals_the_brute_force_product():
+def test_best_by_mesh_efficiency_equals_the_brute_force_product(gearbox_stage_products):
     modules, widths = [1.0, 1.25, 1.5, 2.0, 2.5, 3.0], [10.0, 15.0, 20.0, 25.0]
-    best = _brute_force(Fraction(12), 70, modules, widths)
+    best = _brute_force(gearbox_stage_products, Fraction(12), 70, modules, widths)
     got = synthesize_gearbox(12, 2, z_max=70, module=modules, objective="mesh_efficiency", top=1,
                              **dict(BOX, face_width=widths))[0]  # fmt: skip
     assert got.mesh_efficiency == pytest.approx(-best[0], rel=1e-12)
