@@ -36,7 +36,7 @@ from typing import Any, TypeAlias
 import numpy as np
 import shapely
 
-__all__ = ["Circle", "bounds", "factor_text", "html_table", "message_svg", "svg"]
+__all__ = ["Circle", "bounds", "factor_lines", "factor_text", "html_table", "message_svg", "svg"]
 
 #: Style of a failing row of an HTML table (a red text, readable in light and dark themes).
 FAIL_STYLE = "color:#c62828;font-weight:bold"
@@ -197,6 +197,29 @@ def factor_text(value) -> str:
     if abs(value) >= 1e5 or (value != 0 and abs(value) < 1e-3):
         return f"{value:.4g}"
     return f"{value:.5g}"
+
+
+def factor_lines(factors: Iterable, quantities: Iterable, source: str, width: int) -> list[str]:
+    """The factor and quantity sections of a rating's text: ``factors`` as ``(symbol, value,
+    source, what)`` under a ``source`` column ``width`` wide, then ``quantities`` as ``(symbol,
+    value, label)``, values by :func:`factor_text`.
+
+    >>> lines = factor_lines([("K_A", 1.25, "ISO 6336-1", "application")],
+    ...                      [("m_n", 2.0, "module [mm]")], "clause", 10)
+    >>> for line in lines[1:]:
+    ...     print(line)
+    factor                      value  clause     what
+    K_A                          1.25  ISO 6336-1 application
+    <BLANKLINE>
+    m_n                             2  module [mm]
+    """
+    lines = ["", f"{'factor':13s} {'value':>19s}  {source:{width}s} what"]
+    for symbol, value, where, what in factors:
+        lines.append(f"{symbol:13s} {factor_text(value):>19s}  {where:{width}s} {what}")
+    lines.append("")
+    for symbol, value, label in quantities:
+        lines.append(f"{symbol:13s} {factor_text(value):>19s}  {label}")
+    return lines
 
 
 def html_table(

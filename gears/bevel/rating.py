@@ -33,7 +33,7 @@ import numpy as np
 
 from gears.arguments import check_real
 from gears.bevel.iso10300 import face_load_factors, method_b1, mounting_factor
-from gears.display import factor_text, html_table
+from gears.display import factor_lines, factor_text, html_table
 from gears.errors import GearError
 from gears.rating.life import bending_life_factor, pitting_life_factor
 from gears.rating.materials import material as as_material
@@ -209,14 +209,11 @@ class BevelRating:
         for name, value in self.stresses.items():
             a, b = value if isinstance(value, tuple) else (value, value)
             lines.append(f"{name + ' [MPa]':26s} {a:10.2f} {b:10.2f}")
-        lines += ["", f"{'factor':13s} {'value':>19s}  {'from':19s} what"]
-        for symbol, _, what, where in BEVEL_FACTORS:
-            value = factor_text(self.factors[symbol])
-            lines.append(f"{symbol:13s} {value:>19s}  {where:19s} {what}")
-        lines.append("")
-        for symbol, _, what, unit in BEVEL_QUANTITIES:
-            label = f"{what} [{unit}]" if unit else what
-            lines.append(f"{symbol:13s} {factor_text(self.quantities[symbol]):>19s}  {label}")
+        lines += factor_lines(
+            [(s, self.factors[s], where, what) for s, _, what, where in BEVEL_FACTORS],
+            [(s, self.quantities[s], f"{what} [{unit}]" if unit else what)
+             for s, _, what, unit in BEVEL_QUANTITIES], "from", 19,
+        )  # fmt: skip
         return "\n".join(lines)
 
     def __repr__(self) -> str:

@@ -13,7 +13,7 @@ import functools
 import math
 from dataclasses import dataclass, field
 
-from gears.display import factor_text, html_table
+from gears.display import factor_lines, factor_text, html_table
 from gears.errors import GearError
 from gears.rating._arrays import number, one_number
 from gears.rating._arrays import pair_of as _pair_of
@@ -270,15 +270,11 @@ class Rating:
                 lines.append(f"{name + ' [MPa]':26s} {value[0]:10.2f} {value[1]:10.2f}")
             else:
                 lines.append(f"{name + ' [MPa]':26s} {value:10.2f}")
-        lines.append("")
-        lines.append(f"{'factor':13s} {'value':>19s}  {'clause':16s} what")
-        for symbol, _, what, clause in FACTORS:
-            value = factor_text(self.factors[symbol])
-            lines.append(f"{symbol:13s} {value:>19s}  {clause:16s} {what}")
-        lines.append("")
-        for symbol, _, what, unit in QUANTITIES:
-            label = f"{what} [{unit}]" if unit else what
-            lines.append(f"{symbol:13s} {factor_text(self.quantities[symbol]):>19s}  {label}")
+        lines += factor_lines(
+            [(s, self.factors[s], clause, what) for s, _, what, clause in FACTORS],
+            [(s, self.quantities[s], f"{what} [{unit}]" if unit else what)
+             for s, _, what, unit in QUANTITIES], "clause", 16,
+        )  # fmt: skip
         return "\n".join(lines)
 
     def __repr__(self) -> str:
