@@ -255,7 +255,9 @@ def check_spectrum(spectrum: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     if bad.any():
         i, j = (int(k) for k in np.argwhere(bad)[0])
         what = ("torque", "speed", "hours")[j]
-        raise GearError(f"spectrum bin {i}: {what} = {arr[i, j]!r}; valid is a finite number > 0")
+        raise GearError(
+            f"spectrum bin {i}: {what} = {float(arr[i, j])!r}; valid is a finite number > 0"
+        )
     return arr[:, 0].copy(), arr[:, 1].copy(), arr[:, 2].copy()
 
 

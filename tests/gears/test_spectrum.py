@@ -119,7 +119,7 @@ def test_spectrum_report_and_display():
     [
         ([], "bins"),
         ([(100.0, 1000.0)], "bins"),
-        ([(100.0, 1000.0, -1.0)], "hours"),
+        ([(100.0, 1000.0, -1.0)], r"spectrum bin 0: hours = -1\.0; valid"),  # a plain number
         ([(100.0, math.nan, 1.0)], "speed"),
         ("abc", "spectrum"),
     ],
