@@ -318,6 +318,13 @@ class _Wheel:
         cx, cy = self.corner(zeta, side)
         return rolled(cx, cy, -cx + side * np.asarray(t, float), self.r2)
 
+    def fillet_reach(self, zeta, rho):
+        """The fillet's ``|t|`` at the radius ``rho``: its point is the corner moved to
+        ``(side t, r_root)`` and turned (:func:`gears.worm.envelope.rolled`), so its radius is
+        ``hypot(t, r_root)``, one point at each radius from the root up."""
+        rho = np.asarray(rho, float)
+        return np.sqrt(np.maximum(rho * rho - self.root(zeta) ** 2, 0.0))
+
     def upper(self, zeta, side, rows, g):
         """The upper piece of a side of the tooth space, at the normalised parameters ``g``:
         over ``rows[..., 1:3]``, the flank's depths (``rows[..., 3] == 0``) or, where the flank
@@ -331,7 +338,7 @@ class _Wheel:
         return np.where(kind, tx, fx), np.where(kind, ty, fy)
 
     def limits(self, zetas, land: float) -> np.ndarray:
-        """The rows of :func:`_side_limits` of both sides in each plane ``zetas``,
+        """The rows of :func:`_limits_batch` of both sides in each plane ``zetas``,
         ``(planes, 2, 4)``, with the tip lowered to a land of ``land`` where the tooth would be
         pointed (:func:`_tip_land`); cached by plane."""
         zetas = np.asarray(zetas, float)
@@ -349,100 +356,10 @@ class _Wheel:
         return self.ref + np.arctan2(c * y - s * x, c * x + s * y)
 
 
-def _exit(radius_of, lo: float, hi: float, target: float) -> float:
-    """The parameter in ``[lo, hi]`` at which ``radius_of`` crosses ``target`` (bisection;
-    below at ``lo``, above at ``hi``)."""
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        if radius_of(mid) > target:
-            hi = mid
-        else:
-            lo = mid
-    return 0.5 * (lo + hi)
-
-
-def _side_limits(w: _Wheel, zeta: float, side: float) -> tuple[float, float, float, float]:
-    """``(t_star, X_star, X_exit, 0)`` of one side of the tooth space in the plane ``zeta``:
-    the root fillet runs from ``t = 0`` to ``t_star``, the flank from the hob's depth
-    ``X_star`` (its corner's, or where the fillet cuts the flank: undercut) to ``X_exit`` (the
-    tip); or ``(t_x, t_x, t_exit, 1)`` where the flank's contact lies above the tip and the
-    hob's corner alone cuts that side, up to the tip at ``t_exit`` (off the mid-plane, near the
-    faces)."""
-    rho_tip = float(w.tip(zeta))
-    x_t = float(w.corner_depth(zeta))
-    if abs(zeta) < w.rf:  # up to the worm's root cylinder
-        x_hi = -math.sqrt(w.rf**2 - zeta**2)
-    else:  # past the axis's line, over the far side of the worm
-        x_hi = -x_t
-    xs = np.linspace(x_t, x_hi, 801)
-    ex, ey, _ = w.flank(zeta, xs, side)
-    rho = np.hypot(ex, ey)
-    above = np.flatnonzero(rho > rho_tip)
-    cx, cy = w.corner(zeta, side)
-    _, _, u_c = w.flank(zeta, x_t, side)
-    t_c = side * (float(u_c) + float(cx))  # the corner's own contact
-    # the fillet's way from the root: towards the flank while the hob's tip line runs inside
-    # the pitch circle; where the root torus rises above it (near the faces) the corner moves
-    # backwards relative to the wheel
-    way = 1.0 if float(cy) < w.r2 else -1.0
-    if len(above) == 0:
-        raise GearError(
-            f"the worm's flank does not reach the wheel's tip in the plane z = {zeta:.6g} mm "
-            "(a narrower face)"
-        )
-    if above[0] == 0:  # the flank touches above the tip: the corner alone cuts this side
-        t_hi = w.m
-        while _fillet_radius(w, zeta, side, way * t_hi) < rho_tip:
-            t_hi *= 2.0
-        s_exit = _exit(lambda t: _fillet_radius(w, zeta, side, way * t), 0.0, t_hi, rho_tip)
-        # the upper piece shrinks as t_c -> t_exit (continuous with the planes of a flank)
-        s_x = min(max(2.0 * s_exit - way * t_c, 0.5 * s_exit), s_exit)
-        return way * s_x, way * s_x, way * s_exit, 1.0
-    i = int(above[0])
-
-    def rho_e(d):
-        x, y, _ = w.flank(zeta, d, side)
-        return np.hypot(x, y)
-
-    x_exit = float(_exits(rho_e, [xs[i - 1]], [xs[i]], rho_tip)[0])
-    k = int(np.argmin(rho[:i]))
-    if k == 0 and way * t_c >= 0.0:  # no undercut: the corner's contact joins fillet and flank
-        return t_c, x_t, x_exit, 0.0
-    # undercut, or the corner's contact lies beyond the root's lowest point (off the
-    # mid-plane): the fillet cuts the flank (its upper branch, beyond a cusp at xs[k])
-    t_hi = w.m
-    while _fillet_radius(w, zeta, side, way * t_hi) < rho_tip:
-        t_hi *= 2.0
-    ts = np.linspace(0.0, way * t_hi, 801)
-    tx, ty = w.trochoid(zeta, ts, side)
-    lo = max(min(k, i - 1), 0)  # at least two samples, the first above the tip included
-    upper = shapely.LineString(np.column_stack([ex[lo : i + 1], ey[lo : i + 1]]))
-    pts = shapely.get_coordinates(shapely.LineString(np.column_stack([tx, ty])).intersection(upper))
-    if len(pts) == 0:
-        pts = np.array([[ex[k], ey[k]]])
-    # the crossing highest on the flank, refined by Newton's method on (t, X)
-    dist = np.hypot(ex[lo : i + 1, None] - pts[:, 0], ey[lo : i + 1, None] - pts[:, 1])
-    nearest = np.argmin(dist, axis=0)
-    jp = int(np.argmax(nearest))
-    d = float(xs[lo + nearest[jp]])
-    t = float(ts[np.argmin(np.hypot(tx - pts[jp, 0], ty - pts[jp, 1]))])
-    h = 1e-7 * w.m
-    for _ in range(8):
-        f = np.subtract(w.trochoid(zeta, t, side), w.flank(zeta, d, side)[:2])
-        jt = np.subtract(w.trochoid(zeta, t + h, side), w.trochoid(zeta, t, side)) / h
-        jd = -np.subtract(w.flank(zeta, d + h, side)[:2], w.flank(zeta, d, side)[:2]) / h
-        jac = np.column_stack([jt, jd])
-        if abs(np.linalg.det(jac)) < 1e-300:
-            break
-        dt, dd = np.linalg.solve(jac, -f)
-        t, d = t + float(dt), min(max(d + float(dd), x_t), x_exit)
-    return way * max(way * t, 0.0), d, x_exit, 0.0
-
-
 def _exits(radius_of, lo, hi, target, iterations: int = 12):
-    """Vectorised :func:`_exit`: parameters in ``[lo, hi]`` (arrays) at which
-    ``radius_of(params)`` crosses ``target`` (below at ``lo``, above at ``hi``), by the
-    Illinois false position (superlinear on a smooth radius; the bracket always holds)."""
+    """Parameters in ``[lo, hi]`` (arrays) at which ``radius_of(params)`` crosses ``target``
+    (below at ``lo``, above at ``hi``), by the Illinois false position (superlinear on a smooth
+    function; the bracket always holds)."""
     lo, hi = np.array(lo, float), np.array(hi, float)
     f_lo, f_hi = radius_of(lo) - target, radius_of(hi) - target
     x = lo
@@ -460,45 +377,103 @@ def _exits(radius_of, lo, hi, target, iterations: int = 12):
     return x
 
 
+def _turn(ax, ay, bx, by):
+    """The angle from the direction ``(a_x, a_y)`` to ``(b_x, b_y)``, in ``(-pi, pi]``."""
+    return np.arctan2(ax * by - ay * bx, ax * bx + ay * by)
+
+
 def _limits_batch(w: _Wheel, zetas: np.ndarray, side: float) -> np.ndarray:
-    """:func:`_side_limits` of one side over many planes at once, ``(planes, 4)``: the
-    planes of the common case (no undercut, a flank reaching the tip) vectorised, the others
-    one by one."""
+    """The limits of one side of the tooth space in each plane ``zetas``, ``(planes, 4)``:
+    ``(t_star, X_star, X_exit, 0)``: the root fillet runs from ``t = 0`` to ``t_star``, the flank
+    from the hob's depth ``X_star`` (its corner's, or where the fillet cuts the flank: undercut)
+    to ``X_exit`` (the tip); or ``(t_x, t_x, t_exit, 1)`` where the flank's contact lies above
+    the tip and the hob's corner alone cuts that side, up to the tip at ``t_exit`` (off the
+    mid-plane, near the faces). Every plane at once (the flank sampled at 401 depths between
+    the hob's corner and the worm's root, then its crossings refined)."""
     z = np.asarray(zetas, float)
     rho_tip = w.tip(z)
     x_t = w.corner_depth(z)
+    # up to the worm's root cylinder; past the axis's line, over the far side of the worm
     x_hi = np.where(np.abs(z) < w.rf, -np.sqrt(np.maximum(w.rf**2 - z**2, 0.0)), -x_t)
     g = np.linspace(0.0, 1.0, 401)
     xs = x_t[:, None] + (x_hi - x_t)[:, None] * g
     ex, ey, _ = w.flank(z[:, None], xs, side)
     rho = np.hypot(ex, ey)
     above = rho > rho_tip[:, None]
+    short = ~np.any(above, axis=1)
+    if np.any(short):
+        raise GearError(
+            f"the worm's flank does not reach the wheel's tip in the plane z = "
+            f"{z[np.argmax(short)]:.6g} mm (a narrower face)"
+        )
     first = np.argmax(above, axis=1)
     cx, cy = w.corner(z, side)
     _, _, u_c = w.flank(z, x_t, side)
-    t_c = side * (u_c + cx)
+    t_c = side * (u_c + cx)  # the corner's own contact
+    # the fillet's way from the root: towards the flank while the hob's tip line runs inside
+    # the pitch circle; where the root torus rises above it (near the faces) the corner moves
+    # backwards relative to the wheel
     way = np.where(cy < w.r2, 1.0, -1.0)
-    masked = np.where(np.arange(len(g)) < first[:, None], rho, np.inf)
-    k = np.argmin(masked, axis=1)
-    common = np.any(above, axis=1) & (first > 0) & (k == 0) & (way * t_c >= 0.0)
-    out = np.empty((len(z), 4))
-    if np.any(common):
-        c = np.flatnonzero(common)
-        zc, fc = z[c], first[c]
+    idx = np.arange(len(g))
+    k = np.argmin(np.where(idx < first[:, None], rho, np.inf), axis=1)
+    out = np.zeros((len(z), 4))
+    # the flank touches above the tip: the corner alone cuts this side, up to the tip; the
+    # upper piece shrinks as t_c -> t_exit (continuous with the planes of a flank)
+    alone = first == 0
+    s_exit = w.fillet_reach(z, rho_tip)
+    s_x = np.minimum(np.maximum(2.0 * s_exit - way * t_c, 0.5 * s_exit), s_exit)
+    out[alone] = np.column_stack([way * s_x, way * s_x, way * s_exit, np.ones(len(z))])[alone]
+    c = np.flatnonzero(~alone)
+    fc = first[c]
 
-        def radius(d):
-            x, y, _ = w.flank(zc, d, side)
-            return np.hypot(x, y)
+    def radius(d):
+        x, y, _ = w.flank(z[c], d, side)
+        return np.hypot(x, y)
 
-        x_exit = _exits(radius, xs[c, fc - 1], xs[c, fc], rho_tip[c])
-        out[c] = np.column_stack([t_c[c], x_t[c], x_exit, np.zeros(len(c))])
-    for i in np.flatnonzero(~common):
-        out[i] = _side_limits(w, float(z[i]), side)
+    x_exit = _exits(radius, xs[c, fc - 1], xs[c, fc], rho_tip[c])
+    # no undercut: the corner's contact joins fillet and flank
+    out[c] = np.column_stack([t_c[c], x_t[c], x_exit, np.zeros(len(c))])
+    cut = (k[c] > 0) | (way[c] * t_c[c] < 0.0)
+    if np.any(cut):
+        u = c[cut]
+        out[u, 1], out[u, 0] = _undercut(w, z[u], side, xs[u], ex[u], ey[u], rho[u], k[u],
+                                          first[u], way[u], x_exit[cut])  # fmt: skip
     return out
 
 
-def _fillet_radius(w: _Wheel, zeta: float, side: float, t: float) -> float:
-    return math.hypot(*(float(v) for v in w.trochoid(zeta, t, side)))
+def _undercut(w: _Wheel, z, side, xs, ex, ey, rho, k, first, way, x_exit):
+    """Where the fillet cuts the flank (undercut, or the corner's contact beyond the root's
+    lowest point off the mid-plane): the flank's depth and the fillet's ``t`` at the crossing
+    highest on the flank's upper branch (beyond its cusp at ``xs[k]``, up to the tip at
+    ``xs[first]``). The fillet has one point at each radius (:meth:`_Wheel.fillet_reach`), so a
+    crossing is where the flank's point turns from one side of the fillet's point at its
+    radius to the other: bracketed on the samples, then found by false position."""
+    zc = z[:, None]
+    t = way[:, None] * w.fillet_reach(zc, rho)
+    tx, ty = w.trochoid(zc, t, side)
+    turn = _turn(tx, ty, ex, ey)
+    idx = np.arange(xs.shape[1])
+    lo = np.maximum(np.minimum(k, first - 1), 0)
+    ok = (idx >= lo[:, None]) & (idx <= first[:, None]) & (rho >= w.root(zc))
+    ok &= np.abs(turn) < 1.0  # away from the wrap of the angle at pi
+    change = ok[:, :-1] & ok[:, 1:] & ((turn[:, :-1] <= 0.0) != (turn[:, 1:] <= 0.0))
+    rows = np.arange(len(z))
+    j = np.where(np.any(change, axis=1), change.shape[1] - 1 - np.argmax(change[:, ::-1], 1), -1)
+    d = xs[rows, np.maximum(k, 0)]  # no crossing: the cusp
+    has = j >= 0
+    if np.any(has):
+        h, jh = rows[has], j[has]
+        sign = np.where(turn[h, jh] <= 0.0, 1.0, -1.0)
+
+        def gap(dd):
+            fx, fy, _ = w.flank(z[h], dd, side)
+            ft = way[h] * w.fillet_reach(z[h], np.hypot(fx, fy))
+            return sign * _turn(*w.trochoid(z[h], ft, side), fx, fy)
+
+        d[h] = _exits(gap, xs[h, jh], xs[h, jh + 1], 0.0)
+    d = np.minimum(np.maximum(d, xs[:, 0]), x_exit)
+    fx, fy, _ = w.flank(z, d, side)
+    return d, way * w.fillet_reach(z, np.hypot(fx, fy))
 
 
 def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> None:
