@@ -664,8 +664,11 @@ def _ring_gap(mid, lower, upper) -> np.ndarray:
 
 
 def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
-    """Planes ``z = zeta`` from face to face, halved where the sections interpolated between
-    two planes miss the mid-plane's by more than ``tolerance``, with their sampling."""
+    """Planes ``z = zeta`` from face to face, split where the sections interpolated between
+    two planes miss the mid-plane's by more than ``tolerance``, with their sampling. The miss
+    of a linear interpolation falls with the square of the spacing, so an interval missing by
+    ``e`` is split at once into the power of two nearest above ``sqrt(e / tolerance)`` (at most
+    8) parts; the new planes and the next mid-planes are evaluated together."""
     b = w.half_face
     zs = list(np.linspace(-b, b, 5))
     if w.rk < b:  # where the throat meets the outside cylinder the tip has an edge
@@ -675,19 +678,29 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
     done = 0
     for _ in range(4):
         rings = dict(zip(plan.zetas.tolist(), plan.rings(), strict=True))
+        pending = np.empty(0)
         for _ in range(14):
-            zs = np.array(sorted(rings))
+            zs = np.unique(np.concatenate([list(rings), pending]))
             mids = (zs[:-1] + zs[1:]) / 2.0
-            mid_rings = plan.at(mids).rings()
+            batch = plan.at(np.concatenate([pending, mids])).rings()
+            rings.update(zip(pending.tolist(), batch[: len(pending)], strict=True))
+            mid_rings = batch[len(pending) :]
             low = np.array([rings[z] for z in zs[:-1]])
             up = np.array([rings[z] for z in zs[1:]])
-            bad = _ring_gap(mid_rings, low, up) > tolerance
+            gap = _ring_gap(mid_rings, low, up)
+            bad = gap > tolerance
             done += 1
             if progress is not None:
                 progress(min(done, 15), 16)
             if not np.any(bad):
                 break
             rings.update(zip(mids[bad].tolist(), mid_rings[bad], strict=True))
+            parts = 2 ** np.clip(np.ceil(np.log2(np.sqrt(gap[bad] / tolerance))), 1, 3)
+            pending = np.concatenate([
+                zs[:-1][i] + (zs[i + 1] - zs[i]) * np.arange(1, n) / n
+                for i, n in zip(np.flatnonzero(bad), parts.astype(int), strict=True)
+            ])  # fmt: skip
+            pending = pending[~np.isin(pending, mids[bad])]
         fine = _sample(plan.at(zs), tolerance)
         same = (len(fine.fillet) == len(plan.fillet) and len(fine.flank) == len(plan.flank)
                 and fine.root_n == plan.root_n and fine.tip_n == plan.tip_n)  # fmt: skip
