@@ -25,6 +25,7 @@ import numpy as np
 from gears.arguments import check_real, check_teeth
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse, pressure_angle_at
+from gears.namespace import SCALAR, of
 
 __all__ = [
     "CROSSING",
@@ -56,7 +57,7 @@ CROSSING = 1e-12
 
 
 def _out(a):
-    if type(a) is np.float64:  # one number already
+    if type(a) is np.float64 or type(a) is float:  # one number already
         return a
     a = np.asarray(a)
     return a[()] if a.ndim == 0 else a
@@ -71,19 +72,24 @@ def _sign(internal):
 
 def transverse_pressure_angle(pressure_angle=20.0, helix_angle=0.0):
     """alpha_t in radians: tan alpha_t = tan alpha_n / cos beta (ISO 21771 eq. 9)."""
-    an, b = np.radians(pressure_angle), np.radians(helix_angle)
-    return _out(np.arctan(np.tan(an) / np.cos(b)))
+    xp = of(pressure_angle, helix_angle)
+    an, b = xp.radians(pressure_angle), xp.radians(helix_angle)
+    return _out(xp.arctan(xp.tan(an) / xp.cos(b)))
 
 
 def reference_diameter(z, module, helix_angle=0.0):
     """d = z m_n / cos beta (ISO 21771; Ozols 21.4 for spur gears)."""
-    return _out(np.asarray(z) * np.asarray(module) / np.cos(np.radians(helix_angle)))
+    xp = of(z, module, helix_angle)
+    if xp is np:
+        z, module = np.asarray(z), np.asarray(module)
+    return _out(z * module / xp.cos(xp.radians(helix_angle)))
 
 
 def base_diameter(z, module, pressure_angle=20.0, helix_angle=0.0):
     """d_b = d cos alpha_t (Ozols 21.8)."""
     d = reference_diameter(z, module, helix_angle)
-    return _out(d * np.cos(transverse_pressure_angle(pressure_angle, helix_angle)))
+    alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
+    return _out(d * of(d, alpha_t).cos(alpha_t))
 
 
 def tip_diameter(
@@ -97,8 +103,10 @@ def tip_diameter(
     """
     d = reference_diameter(z, module, helix_angle)
     s = _sign(internal)
-    h = np.asarray(addendum) + np.asarray(profile_shift) + np.asarray(tip_alteration)
-    return _out(d + 2.0 * s * np.asarray(module) * h)
+    if of(module, addendum, profile_shift, tip_alteration) is np:
+        module, addendum = np.asarray(module), np.asarray(addendum)
+        profile_shift, tip_alteration = np.asarray(profile_shift), np.asarray(tip_alteration)
+    return _out(d + 2.0 * s * module * (addendum + profile_shift + tip_alteration))
 
 
 def root_diameter(z, module, profile_shift=0.0, helix_angle=0.0, dedendum=1.25, internal=False):
@@ -109,7 +117,9 @@ def root_diameter(z, module, profile_shift=0.0, helix_angle=0.0, dedendum=1.25, 
     """
     d = reference_diameter(z, module, helix_angle)
     s = _sign(internal)
-    return _out(d - 2.0 * s * np.asarray(module) * (np.asarray(dedendum) - profile_shift))
+    if of(module, dedendum) is np:
+        module, dedendum = np.asarray(module), np.asarray(dedendum)
+    return _out(d - 2.0 * s * module * (dedendum - profile_shift))
 
 
 def half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, internal):
@@ -118,8 +128,11 @@ def half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, inter
     s_t = m_t (pi/2 + 2 x tan alpha_n), external and internal alike (DIN 3960: a positive shift
     thickens a ring's teeth too). ``internal`` is kept for the callers' symmetry.
     """
-    tan_an = np.tan(np.radians(pressure_angle))
-    return (np.pi / 2 + 2.0 * np.asarray(profile_shift) * tan_an) / np.asarray(z)
+    xp = of(z, profile_shift, pressure_angle)
+    if xp is np:
+        z, profile_shift = np.asarray(z), np.asarray(profile_shift)
+    tan_an = xp.tan(xp.radians(pressure_angle))
+    return (xp.pi / 2 + 2.0 * profile_shift * tan_an) / z
 
 
 def tooth_thickness(
@@ -144,9 +157,11 @@ def tooth_thickness(
     """
     alpha_t = transverse_pressure_angle(pressure_angle, helix_angle)
     db = base_diameter(z, module, pressure_angle, helix_angle)
-    d = np.asarray(diameter, float)
-    inside = ~(d >= db)  # NaN too
-    if np.any(inside):
+    one = of(diameter, db, z, module, profile_shift, pressure_angle, helix_angle) is SCALAR
+    d = diameter if one else np.asarray(diameter, float)
+    inside = not d >= db if one else ~(d >= db)  # NaN too
+    if inside if one else np.any(inside):
+        d, inside = np.asarray(d, float), np.asarray(inside)
         bad = float(np.ravel(np.broadcast_to(d, inside.shape))[np.argmax(np.ravel(inside))])
         raise GearError(
             f"diameter = {bad:g} mm lies inside the base circle (d_b = "
@@ -157,15 +172,19 @@ def tooth_thickness(
     psi = half_angle_at_reference(z, profile_shift, pressure_angle, helix_angle, internal)
     s = _sign(internal)
     thickness = d * (psi + s * (inv(alpha_t) - inv(alpha_y)))
-    pointed = ~(thickness >= -1e-9 * d)  # rounding at the pointed diameter itself is no tooth
-    if not signed and np.any(pointed):
+    if signed:
+        return _out(thickness)
+    # rounding at the pointed diameter itself is no tooth
+    pointed = not thickness >= -1e-9 * d if one else ~(thickness >= -1e-9 * d)
+    if pointed if one else np.any(pointed):
+        d, pointed = np.asarray(d, float), np.asarray(pointed)
         bad = float(np.ravel(np.broadcast_to(d, pointed.shape))[np.argmax(np.ravel(pointed))])
         where = "beyond" if not np.any(internal) else "inside"
         raise GearError(
             f"diameter = {bad:g} mm lies {where} the diameter where the tooth comes to a point "
             "(pointed_tip_diameter): no tooth thickness exists there"
         )
-    return _out(thickness if signed else np.maximum(thickness, 0.0))
+    return _out(of(thickness).maximum(thickness, 0.0))
 
 
 def pointed_tip_diameter(z, module, profile_shift=0.0, pressure_angle=20.0, helix_angle=0.0):

@@ -94,6 +94,18 @@ def _horner(coefficients: np.ndarray, s: np.ndarray) -> np.ndarray:
     return acc
 
 
+def _inv_one(x: float) -> float:
+    """:func:`inv` of one angle, on Python floats: the same series and formula as arrays."""
+    if not abs(x) < _HALF_PI:  # NaN fails too
+        raise GearError(f"alpha = {x:g} rad; valid is |alpha| < pi/2 (involute function)")
+    if abs(x) >= _SERIES_SWITCH:
+        return math.tan(x) - x
+    x2, acc = x * x, 0.0
+    for c in _TAN_DESCENDING:
+        acc = acc * x2 + c
+    return x * x2 * acc
+
+
 def inv(alpha):
     """Involute function ``tan(alpha) - alpha`` (radians), free of cancellation near 0.
 
@@ -111,17 +123,11 @@ def inv(alpha):
     >>> round(float(inv(np.radians(20.0))), 12)
     0.014904383867
     """
+    if type(alpha) is float:  # one angle of one pair (gears.namespace.SCALAR): a Python float
+        return _inv_one(alpha)
     a = np.asarray(alpha, dtype=float)
     if a.ndim == 0:  # one angle: the same formulas on Python floats (a tenth of the cost)
-        x = float(a)
-        if not abs(x) < _HALF_PI:  # NaN fails too
-            raise GearError(f"alpha = {x:g} rad; valid is |alpha| < pi/2 (involute function)")
-        if abs(x) >= _SERIES_SWITCH:
-            return np.float64(math.tan(x) - x)
-        x2, acc = x * x, 0.0
-        for c in _TAN_DESCENDING:
-            acc = acc * x2 + c
-        return np.float64(x * x2 * acc)
+        return np.float64(_inv_one(float(a)))
     if not np.all(np.abs(a) < _HALF_PI):  # NaN fails too
         bad = np.ravel(a)[np.argmax(~np.ravel(np.abs(a) < _HALF_PI))]
         raise GearError(f"alpha = {float(bad):g} rad; valid is |alpha| < pi/2 (involute function)")
@@ -234,6 +240,10 @@ def pressure_angle_at(base_radius, radius):
     >>> round(float(np.degrees(pressure_angle_at(1.0, 1.0 / np.cos(np.radians(20))))), 12)
     20.0
     """
+    if type(base_radius) is float and type(radius) is float and radius > 0:
+        ratio = base_radius / radius  # one pair on Python floats (gears.namespace.SCALAR)
+        if ratio <= 1.0 + 1e-14:
+            return math.acos(min(ratio, 1.0))
     if type(base_radius) is np.float64 and type(radius) is np.float64 and radius > 0:
         ratio = base_radius / radius  # one number: no arrays (rating one pair)
         if ratio <= 1.0 + 1e-14:

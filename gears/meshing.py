@@ -29,6 +29,7 @@ from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse
+from gears.namespace import of
 
 __all__ = [
     "InternalInterference",
@@ -273,9 +274,10 @@ def _pair_geometry_block(z1, z2, m, x1, x2, pressure_angle, helix_angle, addendu
 
 def line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma):
     """(u_A, u_E, u_N2) on the line of action, measured from N1 (see the module docstring)."""
+    xp = of(ra1, ra2, rb1, rb2, tan_wt, sigma)
     u_n2 = rb1 * tan_wt + sigma * rb2 * tan_wt
-    u_e = np.sqrt(np.maximum(ra1 * ra1 - rb1 * rb1, 0.0))
-    u_a = u_n2 - sigma * np.sqrt(np.maximum(ra2 * ra2 - rb2 * rb2, 0.0))
+    u_e = xp.sqrt(xp.maximum(ra1 * ra1 - rb1 * rb1, 0.0))
+    u_a = u_n2 - sigma * xp.sqrt(xp.maximum(ra2 * ra2 - rb2 * rb2, 0.0))
     return u_a, u_e, u_n2
 
 
@@ -302,8 +304,9 @@ def contact_ratio(ra1, ra2, rb1, rb2, tan_wt, sigma, base_pitch):
     tips do not reach each other's flanks or a tip lies inside its base circle (arrays)."""
     u_a, u_e, _ = line_positions(ra1, ra2, rb1, rb2, tan_wt, sigma)
     valid = (ra1 >= rb1) & (ra2 >= rb2)
+    xp = of(u_a, u_e, base_pitch, valid)
     # tips that do not reach each other's flanks give no contact: 0, never a negative ratio
-    return np.where(valid, np.maximum(u_e - u_a, 0.0) / base_pitch, 0.0)
+    return xp.where(valid, xp.maximum(u_e - u_a, 0.0) / base_pitch, 0.0)
 
 
 def center_distance_shift_sum(

@@ -23,7 +23,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # gears/cutting/cutter.py, of the family "cutting"; an undotted name belongs to the core.
 LAYERS = {
     "gears": [
-        ["errors", "display", "lazy"],
+        ["errors", "display", "lazy", "namespace"],
         [
             "involute",
             "report",

@@ -16,7 +16,7 @@ from gears.errors import GearError
 
 def out(a):
     """``a`` as an array, or its one number where it has no dimension."""
-    if type(a) is np.float64:  # one pair's number already
+    if type(a) is np.float64 or type(a) is float:  # one pair's number already
         return a
     a = np.asarray(a)
     return a[()] if a.ndim == 0 else a

@@ -19,8 +19,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from gears.errors import GearError
 from gears.geometry import root_diameter, tip_diameter, tooth_thickness
 from gears.meshing import contact_ratio
+from gears.namespace import FLOAT_ERRORS, SCALAR, of
 from gears.rating._arrays import where as _where
 from gears.rating.bending import (
     deep_tooth_factor,
@@ -78,8 +80,7 @@ def rate_block(a, mats, fields, cache=None, key=None):
             key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
         q = cache.get(key)
     if key is None or q is None:
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            q = _gears(gears, mats)
+        q = _in_namespace(_gears, gears, gears, mats)
         if key is not None:
             if len(cache) >= _CACHE_SIZE:
                 cache.clear()
@@ -98,12 +99,42 @@ def load_part(gears, a, mats, fields):
     if "o_K_A" in a or "o_K_gamma" in a:
         o = {**o, **{k[2:]: a[k] for k in ("o_K_A", "o_K_gamma") if k in a}}
     given = _given(a, o)
+    # the gears' part is in one namespace throughout: one of its numbers tells which
+    numbers = {**a, "eps_alpha": gears["eps_alpha"]}
+    return _in_namespace(_load_of, numbers, q, a, mats, given, fields)
+
+
+def _load_of(q, a, mats, given, fields, xp):
+    _load(q, a, given)
+    _load_factors(q, a, mats, given, xp)
+    _pitting(q, a, mats, given, xp)
+    _bending(q, a, mats, given)
+    return _results(q, a, fields, xp)
+
+
+def _in_namespace(part, numbers, *args):
+    """``part(*args, xp)`` on Python floats (:data:`gears.namespace.SCALAR`) where every value
+    of the dict ``numbers`` is one, else on numpy; where Python floats raise (a division by
+    zero, an overflow, a domain error of ``math``: a pair outside the formulas' range), the same
+    part again on numpy numbers, which give inf or NaN for the rating's reasons to name."""
+    if of(*numbers.values()) is SCALAR:
+        try:
+            return part(*args, SCALAR)
+        except FLOAT_ERRORS as error:
+            if isinstance(error, GearError):
+                raise
+        args = tuple(_numpy_numbers(v) if type(v) is dict else v for v in args)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        _load(q, a, given)
-        _load_factors(q, a, mats, given)
-        _pitting(q, a, mats, given)
-        _bending(q, a, mats, given)
-        return _results(q, a, fields)
+        return part(*args, np)
+
+
+def _numpy_numbers(values: dict) -> dict:
+    """A dict's Python floats and bools as numpy numbers (the path that gives inf and NaN)."""
+    out = {}
+    for k, v in values.items():
+        t = type(v)
+        out[k] = np.float64(v) if t is float else np.bool_(v) if t is bool else v
+    return out
 
 
 def _hashable(v):
@@ -126,34 +157,34 @@ def _given(a, o=None):
     return given
 
 
-def _gears(a, mats):
+def _gears(a, mats, xp):
     """The gears' part: everything that does not depend on the load."""
     o = _overrides(a)
     given = _given(a, o)
-    q = _pair(a)
+    q = _pair(a, xp)
     q["overrides"] = o
-    _stiffness(q, a, mats, given)
-    _contact(q, a, mats, given)
+    _stiffness(q, a, mats, given, xp)
+    _contact(q, a, mats, given, xp)
     _root_forms(q, a)
-    _root(q, a, mats, given)
-    q["reason"] = _methods(q, a)
+    _root(q, a, mats, given, xp)
+    q["reason"] = _methods(q, a, xp)
     return q
 
 
-def _pair(a):
+def _pair(a, xp):
     """Diameters and contact ratios of the pairs."""
     z1, z2, m, x1, x2 = a["z1"], a["z2"], a["m"], a["x1"], a["x2"]
     internal = a["internal"]
     s = _where(internal, -1.0, 1.0)
     b = a["b"]
-    an = np.radians(a["pa"])
-    beta = np.radians(np.abs(a["helix"]))
-    cos_b = np.cos(beta)
-    at = np.arctan(np.tan(an) / cos_b)
-    cos_at = np.cos(at)
-    bb = np.arctan(np.tan(beta) * cos_at)
-    cbb2 = np.cos(bb) ** 2
-    tan_wt = np.tan(np.radians(a["alpha_wt"]))
+    an = xp.radians(a["pa"])
+    beta = xp.radians(xp.abs(a["helix"]))
+    cos_b = xp.cos(beta)
+    at = xp.arctan(xp.tan(an) / cos_b)
+    cos_at = xp.cos(at)
+    bb = xp.arctan(xp.tan(beta) * cos_at)
+    cbb2 = xp.cos(bb) ** 2
+    tan_wt = xp.tan(xp.radians(a["alpha_wt"]))
     d1 = z1 * m / cos_b
     d2 = z2 * m / cos_b
     db1, db2 = d1 * cos_at, d2 * cos_at
@@ -162,9 +193,9 @@ def _pair(a):
     da2 = tip_diameter(z2, m, x2, a["helix"], ha, internal, _where(internal, 0.0, k) + a["k2"])
     df1 = root_diameter(z1, m, x1, a["helix"], a["hf1"], False)
     df2 = root_diameter(z2, m, x2, a["helix"], a["hf2"], internal)
-    p_bt = np.pi * m / cos_b * cos_at
+    p_bt = xp.pi * m / cos_b * cos_at
     ea = contact_ratio(da1 / 2, da2 / 2, db1 / 2, db2 / 2, tan_wt, s, p_bt)
-    eb = b * np.sin(beta) / (np.pi * m)
+    eb = b * xp.sin(beta) / (xp.pi * m)
     return {
         "z1": z1, "z2": z2, "m": m, "x1": x1, "x2": x2, "internal": internal, "s": s, "b": b,
         "beta": beta, "cos_b": cos_b, "at": at, "cos_at": cos_at, "bb": bb,
@@ -175,7 +206,7 @@ def _pair(a):
     }  # fmt: skip
 
 
-def _stiffness(q, a, mats, given):
+def _stiffness(q, a, mats, given, xp):
     """The single stiffness above 100 N/mm, the deviations, the reduced mass and Z_eps
     (ISO 6336-1 §9, ISO 1328-1, §6.5; ISO 6336-2 §8)."""
     m1, m2 = mats
@@ -185,44 +216,44 @@ def _stiffness(q, a, mats, given):
                                  (a["hf1"] + a["hf2"]) / 2, a["pa"], q["internal"])  # fmt: skip
     fpt1, ff1, fh1 = tolerances(m, d1, b, a["Q"])
     fpt2, ff2, fh2 = tolerances(m, q["d2"], b, a["Q"])
-    q["f_pb"] = np.maximum(fpt1, fpt2) * q["cos_at"]
-    q["f_f"] = np.maximum(ff1, ff2)
-    q["f_hb"] = np.maximum(fh1, fh2)
+    q["f_pb"] = xp.maximum(fpt1, fpt2) * q["cos_at"]
+    q["f_f"] = xp.maximum(ff1, ff2)
+    q["f_hb"] = xp.maximum(fh1, fh2)
     if "C_a" in a:
         q["C_a"] = a["C_a"]
     else:  # running-in tip relief C_ay (ISO 6336-1 Table 8), mean of both gears
         q["C_a"] = 0.5 * sum((sh / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for sh in (a["sH1"], a["sH2"]))
     # solid gears, the ring's mass infinite
     dm1, dm2 = (q["da1"] + q["df1"]) / 2, (q["da2"] + q["df2"]) / 2
-    mass1 = np.pi / 8 * m1.density * dm1**4 / q["db1"] ** 2 / a["c1"]
-    mass2 = np.pi / 8 * m2.density * dm2**4 / q["db2"] ** 2 / a["c2"]
+    mass1 = xp.pi / 8 * m1.density * dm1**4 / q["db1"] ** 2 / a["c1"]
+    mass2 = xp.pi / 8 * m2.density * dm2**4 / q["db2"] ** 2 / a["c2"]
     q["m_red"] = _where(q["internal"], mass1, mass1 * mass2 / (mass1 + mass2))
     h1 = (q["da1"] - q["df1"]) / 2
-    h2 = np.abs(q["da2"] - q["df2"]) / 2
-    q["h"] = np.maximum(h1, h2)
+    h2 = xp.abs(q["da2"] - q["df2"]) / 2
+    q["h"] = xp.maximum(h1, h2)
     q["Z_eps"] = given("Z_eps", contact_ratio_factor(q["eps_alpha"], q["eps_beta"]))
 
 
-def _contact(q, a, mats, given):
+def _contact(q, a, mats, given, xp):
     """Z_H, Z_E, Z_beta, Z_B, Z_D, Z_R, Z_X (ISO 6336-2): the factors of the gears alone."""
     m1, m2 = mats
     ea, eb, s = q["eps_alpha"], q["eps_beta"], q["s"]
-    q["Z_H"] = given("Z_H", zone_factor(np.degrees(q["at"]), a["alpha_wt"], np.degrees(q["bb"])))
+    q["Z_H"] = given("Z_H", zone_factor(xp.degrees(q["at"]), a["alpha_wt"], xp.degrees(q["bb"])))
     q["Z_E"] = given("Z_E", elasticity_factor(m1.youngs_modulus, m1.poisson, m2.youngs_modulus,
                                               m2.poisson))  # fmt: skip
-    q["Z_beta"] = given("Z_beta", 1.0 / np.sqrt(q["cos_b"]))
+    q["Z_beta"] = given("Z_beta", 1.0 / xp.sqrt(q["cos_b"]))
     Z_B, Z_D = single_pair_factors(q["z1"], q["z2"], q["da1"], q["da2"], q["db1"], q["db2"],
                                    a["alpha_wt"], ea, eb, q["internal"])  # fmt: skip
-    q["interferes"] = (np.isnan(Z_B) & ("o_Z_B" not in a)) | (np.isnan(Z_D) & ("o_Z_D" not in a))
-    q["Z_B"] = given("Z_B", _where(np.isnan(Z_B), 1.0, Z_B))
-    q["Z_D"] = given("Z_D", _where(np.isnan(Z_D), 1.0, Z_D))
-    q["s_min"] = np.minimum(a["sH1"], a["sH2"])
+    q["interferes"] = (xp.isnan(Z_B) & ("o_Z_B" not in a)) | (xp.isnan(Z_D) & ("o_Z_D" not in a))
+    q["Z_B"] = given("Z_B", _where(xp.isnan(Z_B), 1.0, Z_B))
+    q["Z_D"] = given("Z_D", _where(xp.isnan(Z_D), 1.0, Z_D))
+    q["s_min"] = xp.minimum(a["sH1"], a["sH2"])
     rho1 = q["db1"] / 2 * q["tan_wt"]
     rho2 = q["db2"] / 2 * q["tan_wt"]
     q["rho_red"] = rho1 * rho2 / (rho2 + s * rho1)
     q["rz"] = 6.0 * a["Ra"]
     q["Z_R"] = given("Z_R", roughness_factor(q["s_min"], q["rz"], q["rho_red"]))
-    q["Z_X"] = given("Z_X", np.float64(1.0))
+    q["Z_X"] = given("Z_X", 1.0)
 
 
 def _root_forms(q, a):
@@ -233,10 +264,10 @@ def _root_forms(q, a):
     rack1 = a["hf1"], a["rho1"], a["spr1"]
     rack2 = a["hf2"], a["rho2"], a["spr2"]
     form1 = root_form(q["zn1"], m, q["x1"], pa, den1, aen1, *rack1)
-    if not np.any(internal):
+    if not (internal if type(internal) is bool else np.any(internal)):
         form2 = root_form(q["zn2"], m, q["x2"], pa, den2, aen2, *rack2)
     else:
-        dfn2 = q["zn2"] * m + np.abs(q["df2"] - q["d2"])  # the ring's root on its virtual gear
+        dfn2 = q["zn2"] * m + abs(q["df2"] - q["d2"])  # the ring's root on its virtual gear
         form2 = internal_root_form(m, pa, den2, dfn2, *rack2)
         if not np.all(internal):
             external = root_form(q["zn2"], m, q["x2"], pa, den2, aen2, *rack2)
@@ -249,7 +280,7 @@ def _root_forms(q, a):
             q[f"{key}{i}"] = value
 
 
-def _root(q, a, mats, given):
+def _root(q, a, mats, given, xp):
     """The Y factors of the gears alone (ISO 6336-3): form, stress correction, helix, deep
     tooth, rim, notch sensitivity, surface, size, mean stress."""
     m, pa = q["m"], a["pa"]
@@ -257,15 +288,15 @@ def _root(q, a, mats, given):
         Y_F, Y_S, q[f"q_s{i}"] = form_factors(q[f"s_Fn{i}"], q[f"rho_F{i}"], q[f"h_Fe{i}"],
                                               q[f"alpha_Fen{i}"], m, pa)  # fmt: skip
         q[f"Y_F{i}"], q[f"Y_S{i}"] = given(f"Y_F{i}", Y_F), given(f"Y_S{i}", Y_S)
-        q[f"Y_B{i}"] = given(f"Y_B{i}", np.float64(1.0))
+        q[f"Y_B{i}"] = given(f"Y_B{i}", 1.0)
         delta = notch_sensitivity_factor(q[f"q_s{i}"], mat.slip_layer)
         q[f"Y_deltarelT{i}"] = given(f"Y_deltarelT{i}", delta)
         q[f"Y_RrelT{i}"] = given(f"Y_RrelT{i}", root_surface_factor(6.0 * a["Ra_root"], mat.code))
         q[f"Y_X{i}"] = given(f"Y_X{i}", root_size_factor(m, mat.code))
         q[f"Y_M{i}"] = given(f"Y_M{i}", _where(a[f"idler{i}"], 0.7, 1.0))
-    q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], np.degrees(q["beta"])))
+    q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], xp.degrees(q["beta"])))
     q["Y_DT"] = given("Y_DT", deep_tooth_factor(a["Q"], q["eps_alpha"] / q["cbb2"]))
-    q["Y_ST"] = given("Y_ST", np.float64(2.0))
+    q["Y_ST"] = given("Y_ST", 2.0)
 
 
 def _load(q, a, given):
@@ -279,7 +310,7 @@ def _load(q, a, given):
     })  # fmt: skip
 
 
-def _load_factors(q, a, mats, given):
+def _load_factors(q, a, mats, given, xp):
     """Stiffness at the load, K_v, K_Hbeta, K_Fbeta, K_Halpha, K_Falpha (ISO 6336-1)."""
     m1, m2 = mats
     code1, code2 = m1.code, m2.code
@@ -298,10 +329,10 @@ def _load_factors(q, a, mats, given):
     y_f = 0.5 * (profile_running_in(f_f, code1, sH1, v) + profile_running_in(f_f, code2, sH2, v))
 
     # K_v, method B (ISO 6336-1 §6.5)
-    n_e1 = 30000.0 / (np.pi * q["z1"]) * np.sqrt(c_ga / q["m_red"])
+    n_e1 = 30000.0 / (xp.pi * q["z1"]) * xp.sqrt(c_ga / q["m_red"])
     N = q["n"] / n_e1
     # ISO 6336-1 takes F_t K_A / b >= 100 N/mm in K_v and the transverse load factors
-    w100 = np.maximum(w, 100.0)
+    w100 = xp.maximum(w, 100.0)
     K_v = given("K_v", dynamic_factor(N, w100, c_p, f_pb - y_a, f_f - y_f, q["C_a"], eg))
 
     # K_Hbeta method C, K_Fbeta (ISO 6336-1 §7.6, §7.8)
@@ -310,18 +341,18 @@ def _load_factors(q, a, mats, given):
         f_bx = a["F_bx"]
     else:
         f_sh = fmb * 0.023 * (b / d1) ** 2
-        f_bx = np.maximum(1.33 * f_sh + q["f_hb"], np.maximum(0.005 * fmb, 0.5 * q["f_hb"]))
+        f_bx = xp.maximum(1.33 * f_sh + q["f_hb"], xp.maximum(0.005 * fmb, 0.5 * q["f_hb"]))
     y_b = 0.5 * (helix_running_in(f_bx, code1, sH1, v) + helix_running_in(f_bx, code2, sH2, v))
-    K_Hb = given("K_Hbeta", face_load_factor(np.maximum(f_bx - y_b, 0.0), c_gb, fmb))
+    K_Hb = given("K_Hbeta", face_load_factor(xp.maximum(f_bx - y_b, 0.0), c_gb, fmb))
     K_Fb = given("K_Fbeta", face_load_factor_root(K_Hb, b, q["h"]))
 
     # transverse load factors (ISO 6336-1 §8.3)
     K_Ha, K_Fa = transverse_load_factors(c_ga, f_pb, y_a, w100 * K_v * K_Hb, ea, eg, Z_eps)
     # one K_alpha (ISO 6336-1 §8.3): a given K_Halpha sets K_Falpha within its bound, and back
     if "o_K_Halpha" in a and "o_K_Falpha" not in a:
-        K_Fa = np.minimum(np.maximum(a["o_K_Halpha"], 1.0), eg / (0.25 * ea + 0.75))
+        K_Fa = xp.minimum(xp.maximum(a["o_K_Halpha"], 1.0), eg / (0.25 * ea + 0.75))
     elif "o_K_Falpha" in a and "o_K_Halpha" not in a:
-        K_Ha = np.minimum(np.maximum(a["o_K_Falpha"], 1.0), eg / (ea * Z_eps**2))
+        K_Ha = xp.minimum(xp.maximum(a["o_K_Falpha"], 1.0), eg / (ea * Z_eps**2))
     q.update({
         "c_prime": c_p, "c_gamma_alpha": c_ga, "c_gamma_beta": c_gb, "N": N, "K_v": K_v,
         "K_Hbeta": K_Hb, "K_Fbeta": K_Fb, "K_Halpha": given("K_Halpha", K_Ha),
@@ -329,7 +360,7 @@ def _load_factors(q, a, mats, given):
     })  # fmt: skip
 
 
-def _pitting(q, a, mats, given):
+def _pitting(q, a, mats, given, xp):
     """Z_L, Z_v, Z_W, Z_NT and sigma_H0, sigma_H, sigma_HP (ISO 6336-2)."""
     m1, m2 = mats
     code1, code2 = m1.code, m2.code
@@ -344,9 +375,9 @@ def _pitting(q, a, mats, given):
     Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
     Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
     us = s * u
-    root = np.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
+    root = xp.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
     sigma_H0 = q["Z_H"] * q["Z_E"] * q["Z_eps"] * q["Z_beta"] * root
-    load = np.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
+    load = xp.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
     common = Z_L * Z_v * q["Z_R"] * q["Z_X"]
     q.update({
         "Z_L": Z_L, "Z_v": Z_v, "Z_W1": Z_W1, "Z_W2": Z_W2, "N_L1": N_L1, "N_L2": N_L2,
@@ -369,7 +400,7 @@ def _bending(q, a, mats, given):
         q[f"sigma_FP{i}"] = allowable * q[f"Y_RrelT{i}"] * q[f"Y_X{i}"] * q[f"Y_M{i}"]
 
 
-def _methods(q, a):
+def _methods(q, a, xp):
     """The reason code of each pair from its gears (0 = every method applies): the first
     failed check in the order of REASONS, the last of which (a finite result) waits for the
     load."""
@@ -378,9 +409,9 @@ def _methods(q, a):
     pointed = False  # booleans broadcast to the rows as the checks combine
     for z, x, da, db, inside in ((q["z1"], q["x1"], da1, db1, False),
                                  (q["z2"], q["x2"], da2, db2, internal)):  # fmt: skip
-        thick = tooth_thickness(np.maximum(da, db), z, m, x, pa, a["helix"], inside, signed=True)
-        pointed |= (da >= db) & ~(thick > 0)
-    below_base = ~((da1 >= db1) & (da2 >= db2))
+        thick = tooth_thickness(xp.maximum(da, db), z, m, x, pa, a["helix"], inside, signed=True)
+        pointed |= (da >= db) & xp.logical_not(thick > 0)
+    below_base = xp.logical_not((da1 >= db1) & (da2 >= db2))
     root_ok = qs_ok = True
     for i in (1, 2):
         root_ok &= (q[f"s_Fn{i}"] > 0) & (q[f"h_Fe{i}"] > 0) & (q[f"rho_F{i}"] > 0)
@@ -388,21 +419,21 @@ def _methods(q, a):
             qs_ok &= (q[f"q_s{i}"] >= 1.0) & (q[f"q_s{i}"] < 8.0)
     checks = [
         q["eps_alpha"] >= 1.0,
-        ~below_base,
-        ~pointed,
-        np.isfinite(q["d_en1"]) & np.isfinite(q["d_en2"]),
+        xp.logical_not(below_base),
+        xp.logical_not(pointed),
+        xp.isfinite(q["d_en1"]) & xp.isfinite(q["d_en2"]),
         root_ok,
         qs_ok,
-        ~q["interferes"],
+        xp.logical_not(q["interferes"]),
         (q["Z_eps"] > 0) | ("o_Z_eps" in a),
     ]
     reason = 0
     for code, ok in reversed(list(enumerate(checks, 1))):
         reason = _where(ok, reason, code)
-    return np.asarray(reason)[()] if type(reason) is int else reason
+    return np.asarray(reason)[()] if type(reason) is int and xp is np else reason
 
 
-def _results(q, a, fields):
+def _results(q, a, fields, xp):
     """The safeties, then ``fields`` broadcast to the block and masked by ``valid``."""
     for i in (1, 2):
         q[f"S_H{i}"] = q[f"sigma_HP{i}"] / q[f"sigma_H{i}"]
@@ -410,13 +441,13 @@ def _results(q, a, fields):
     # a last guard: every safety a finite number > 0 (no NaN or inf leaves the rating)
     finite = True
     for key in ("S_H1", "S_H2", "S_F1", "S_F2"):
-        finite = finite & np.isfinite(q[key]) & (q[key] > 0)
+        finite = finite & xp.isfinite(q[key]) & (q[key] > 0)
     reason = q["reason"]
-    reason = _where((reason == 0) & ~finite, _NOT_FINITE, reason)
+    reason = _where((reason == 0) & xp.logical_not(finite), _NOT_FINITE, reason)
     valid = reason == 0
-    q["alpha_Fen1"] = np.degrees(q["alpha_Fen1"])
-    q["alpha_Fen2"] = np.degrees(q["alpha_Fen2"])
-    if type(valid) is np.bool_ and valid:  # one pair, rated: nothing to broadcast or mask
+    q["alpha_Fen1"] = xp.degrees(q["alpha_Fen1"])
+    q["alpha_Fen2"] = xp.degrees(q["alpha_Fen2"])
+    if (type(valid) is bool or type(valid) is np.bool_) and valid:  # one pair, rated
         q["valid"], q["reason"] = valid, reason
         return q
     shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))

@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from gears.involute import inv
+from gears.namespace import of
 from gears.rating._arrays import out as _out
 from gears.rating._arrays import where as _where
 from gears.rating.materials import ROOT_SURFACE_CLASS, SIZE_CLASS
@@ -47,22 +48,26 @@ def load_point(z, module, tip_diameter_, reference_diameter, pressure_angle, hel
     Returns ``(d_en, alpha_en, z_n, d_bn)``; d_en is NaN where the point lies inside the base
     circle.
     """
-    an = np.radians(pressure_angle)
-    beta = np.radians(np.abs(helix_angle))
-    at = np.arctan(np.tan(an) / np.cos(beta))
-    cbb2 = np.cos(np.arctan(np.tan(beta) * np.cos(at))) ** 2
-    m = np.asarray(module, float)
-    zn = np.asarray(z, float) / (cbb2 * np.cos(beta))
+    m, da, d = module, tip_diameter_, reference_diameter
+    xp = of(z, m, da, d, pressure_angle, helix_angle, eps_alpha, internal)
+    if xp is np:
+        z, m, da, d, eps_alpha = (np.asarray(v, float) for v in (z, m, da, d, eps_alpha))
+        internal = np.asarray(internal, bool)
+    an = xp.radians(pressure_angle)
+    beta = xp.radians(xp.abs(helix_angle))
+    at = xp.arctan(xp.tan(an) / xp.cos(beta))
+    cbb2 = xp.cos(xp.arctan(xp.tan(beta) * xp.cos(at))) ** 2
+    zn = z / (cbb2 * xp.cos(beta))
     dn = m * zn
-    dbn = dn * np.cos(an)
-    dan = dn + np.asarray(tip_diameter_, float) - np.asarray(reference_diameter, float)
-    ean = np.asarray(eps_alpha, float) / cbb2
-    s = _where(np.asarray(internal, bool), -1.0, 1.0)
-    la = np.sqrt(np.maximum(dan * dan - dbn * dbn, 0.0)) / 2.0
-    le = la - s * np.pi * m * np.cos(an) * (ean - 1.0)
-    le = _where((dan >= dbn) & (le >= 0.0), le, np.nan)
-    den = 2.0 * np.sqrt(le * le + dbn * dbn / 4.0)
-    return _out(den), _out(np.arccos(dbn / den)), _out(zn), _out(dbn)
+    dbn = dn * xp.cos(an)
+    dan = dn + da - d
+    ean = eps_alpha / cbb2
+    s = _where(internal, -1.0, 1.0)
+    la = xp.sqrt(xp.maximum(dan * dan - dbn * dbn, 0.0)) / 2.0
+    le = la - s * xp.pi * m * xp.cos(an) * (ean - 1.0)
+    le = _where((dan >= dbn) & (le >= 0.0), le, xp.nan)
+    den = 2.0 * xp.sqrt(le * le + dbn * dbn / 4.0)
+    return _out(den), _out(xp.arccos(dbn / den)), _out(zn), _out(dbn)
 
 
 def root_form(zn, module, profile_shift, pressure_angle, d_en, alpha_en, dedendum=1.25,
@@ -87,34 +92,34 @@ def root_form(zn, module, profile_shift, pressure_angle, d_en, alpha_en, dedendu
     >>> round(float(s / 8), 4), round(float(r / 8), 4), round(float(h / 8), 4)
     (2.0228, 0.5812, 1.0546)
     """
-    m = np.asarray(module, float)
-    zn = np.asarray(zn, float)
-    x = np.asarray(profile_shift, float)
-    an = np.radians(pressure_angle)
-    hf, rho, spr = (np.asarray(v, float) for v in (dedendum, root_radius, protuberance))
-    e = np.pi / 4 - hf * np.tan(an) + spr / np.cos(an) - (1.0 - np.sin(an)) * rho / np.cos(an)
+    m, x, hf, rho, spr = module, profile_shift, dedendum, root_radius, protuberance
+    aen, den = alpha_en, d_en
+    xp = of(zn, m, x, pressure_angle, den, aen, hf, rho, spr)
+    if xp is np:
+        zn, m, x, hf, rho, spr, aen, den = (np.asarray(v, float) for v in (zn, m, x, hf, rho, spr,
+                                                                          aen, den))  # fmt: skip
+    an = xp.radians(pressure_angle)
+    e = xp.pi / 4 - hf * xp.tan(an) + spr / xp.cos(an) - (1.0 - xp.sin(an)) * rho / xp.cos(an)
     g = rho - hf + x
-    h = 2.0 / zn * (np.pi / 2 - e) - np.pi / 3
+    h = 2.0 / zn * (xp.pi / 2 - e) - xp.pi / 3
     k = 2.0 * g / zn
     # theta - k tan theta + h = 0 by Newton's method from pi/6 (the standard iterates the fixed
     # point, a contraction on real teeth; six Newton steps from pi/6 reach 1e-15 from z_n = 5 to
     # 1000, x = -0.8 ... 1.5); where it has not converged (no real tooth) the root form is NaN
     theta = np.pi / 6 - (np.pi / 6 - k * math.tan(np.pi / 6) + h) / (1.0 - k * 4.0 / 3.0)
     for _ in range(5):
-        ct = np.cos(theta)
-        theta = theta - (theta - k * np.tan(theta) + h) / (1.0 - k / (ct * ct))
-    theta = _where(np.abs(theta - k * np.tan(theta) + h) < 1e-9, theta, np.nan)
-    ct = np.cos(theta)
-    s_fn = m * (zn * np.sin(np.pi / 3 - theta) + np.sqrt(3.0) * (g / ct - rho))
+        ct = xp.cos(theta)
+        theta = theta - (theta - k * xp.tan(theta) + h) / (1.0 - k / (ct * ct))
+    theta = _where(xp.abs(theta - k * xp.tan(theta) + h) < 1e-9, theta, xp.nan)
+    ct = xp.cos(theta)
+    s_fn = m * (zn * xp.sin(xp.pi / 3 - theta) + xp.sqrt(3.0) * (g / ct - rho))
     rho_f = m * (rho + 2.0 * g * g / (ct * (zn * ct * ct - 2.0 * g)))
-    aen = np.asarray(alpha_en, float)
     # no load point (NaN from load_point): NaN lengths, for the rating's reason to name
-    known = np.isfinite(aen)
-    gamma = (np.pi / 2 + 2.0 * x * np.tan(an)) / zn + inv(an) - inv(_where(known, aen, an))
-    afen = _where(known, aen - gamma, np.nan)
-    den = np.asarray(d_en, float)
-    h_fe = m / 2 * ((np.cos(gamma) - np.sin(gamma) * np.tan(afen)) * den / m
-                    - zn * np.cos(np.pi / 3 - theta) - g / ct + rho)  # fmt: skip
+    known = xp.isfinite(aen)
+    gamma = (xp.pi / 2 + 2.0 * x * xp.tan(an)) / zn + inv(an) - inv(_where(known, aen, an))
+    afen = _where(known, aen - gamma, xp.nan)
+    h_fe = m / 2 * ((xp.cos(gamma) - xp.sin(gamma) * xp.tan(afen)) * den / m
+                    - zn * xp.cos(xp.pi / 3 - theta) - g / ct + rho)  # fmt: skip
     return _out(s_fn), _out(rho_f), _out(h_fe), _out(afen)
 
 
@@ -137,17 +142,20 @@ def internal_root_form(module, pressure_angle, d_en, d_fn, dedendum=1.25, root_r
     >>> round(float(s), 4), round(float(r), 4), round(float(h), 4)
     (2.6329, 0.38, 1.1963)
     """
-    m = np.asarray(module, float)
-    an = np.radians(np.asarray(pressure_angle, float))
-    hf, rho, spr = (np.asarray(v, float) for v in (dedendum, root_radius, protuberance))
-    ta = np.tan(an)
-    t = np.radians(60.0)
-    u_c = m * (np.pi / 4 + (hf - rho) * ta + (rho - spr) / np.cos(an))
-    s_fn = 2.0 * (u_c - rho * m * np.cos(t))
-    h_l = (np.asarray(d_fn, float) - np.asarray(d_en, float)) / 2.0
-    w_l = np.pi / 4 * m + (hf * m - h_l) * ta
-    h_fe = h_l - w_l * ta - rho * m * (1.0 - np.sin(t))
-    afen = np.broadcast_to(an, np.shape(h_fe)).astype(float)
+    m, pa, hf, rho, spr = module, pressure_angle, dedendum, root_radius, protuberance
+    xp = of(m, pa, d_en, d_fn, hf, rho, spr)
+    if xp is np:
+        m, pa, d_en, d_fn, hf, rho, spr = (np.asarray(v, float) for v in (m, pa, d_en, d_fn, hf,
+                                                                         rho, spr))  # fmt: skip
+    an = xp.radians(pa)
+    ta = xp.tan(an)
+    t = xp.radians(60.0)
+    u_c = m * (xp.pi / 4 + (hf - rho) * ta + (rho - spr) / xp.cos(an))
+    s_fn = 2.0 * (u_c - rho * m * xp.cos(t))
+    h_l = (d_fn - d_en) / 2.0
+    w_l = xp.pi / 4 * m + (hf * m - h_l) * ta
+    h_fe = h_l - w_l * ta - rho * m * (1.0 - xp.sin(t))
+    afen = an if xp is not np else np.broadcast_to(an, np.shape(h_fe)).astype(float)
     return _out(s_fn), _out(rho * m), _out(h_fe), _out(afen)
 
 
@@ -157,13 +165,15 @@ def form_factors(s_fn, rho_f, h_fe, alpha_fen, module, pressure_angle):
     ``Y_S = (1.2 + 0.13 L) q_s^(1 / (1.21 + 2.3 / L))``, ``L = s_Fn / h_Fe``,
     ``q_s = s_Fn / (2 rho_F)`` (``alpha_fen`` in radians).
     """
-    m = np.asarray(module, float)
-    s, r, h = (np.asarray(v, float) for v in (s_fn, rho_f, h_fe))
-    yf = 6.0 * (h / m) * np.cos(alpha_fen) / ((s / m) ** 2 * np.cos(np.radians(pressure_angle)))
+    m, s, r, h = module, s_fn, rho_f, h_fe
+    xp = of(m, s, r, h, alpha_fen, pressure_angle)
+    if xp is np:
+        m, s, r, h = (np.asarray(v, float) for v in (m, s, r, h))
+    yf = 6.0 * (h / m) * xp.cos(alpha_fen) / ((s / m) ** 2 * xp.cos(xp.radians(pressure_angle)))
     with np.errstate(divide="ignore", invalid="ignore"):
         big_l = s / h
         qs = s / (2.0 * r)
-        ys = (1.2 + 0.13 * big_l) * qs ** (1.0 / (1.21 + 2.3 / big_l))
+        ys = (1.2 + 0.13 * big_l) * xp.power(qs, 1.0 / (1.21 + 2.3 / big_l))
     return _out(yf), _out(ys), _out(qs)
 
 
@@ -174,7 +184,8 @@ def helix_factor_root(eps_beta, helix_angle):
     >>> round(float(helix_factor_root(1.083, 15.8)), 4)   # ISO/TR 6336-30 Ex. 1: 0.8683
     0.8683
     """
-    return 1.0 - np.minimum(eps_beta, 1.0) * np.minimum(np.abs(helix_angle), 30.0) / 120.0
+    xp = of(eps_beta, helix_angle)
+    return 1.0 - xp.minimum(eps_beta, 1.0) * xp.minimum(xp.abs(helix_angle), 30.0) / 120.0
 
 
 def deep_tooth_factor(quality, eps_alpha_n):
@@ -197,9 +208,10 @@ def notch_sensitivity_factor(q_s, slip_layer):
     1.0
     """
     xt = 1.2  # chi*_T = (1 + 2 * 2.5) / 5
+    xp = of(q_s, slip_layer)
     with np.errstate(invalid="ignore"):
-        return (1.0 + np.sqrt(slip_layer * (1.0 + 2.0 * np.maximum(q_s, 0.0)) / 5.0)) / (
-            1.0 + np.sqrt(slip_layer * xt)
+        return (1.0 + xp.sqrt(slip_layer * (1.0 + 2.0 * xp.maximum(q_s, 0.0)) / 5.0)) / (
+            1.0 + xp.sqrt(slip_layer * xt)
         )
 
 
@@ -210,7 +222,7 @@ def root_surface_factor(rz, code):
     >>> round(float(root_surface_factor(6.0, 4)), 4)   # case-hardened: 1.674 - 0.529 7^0.1
     1.0314
     """
-    rz = np.asarray(rz, float)
+    rz = rz if type(rz) is float else np.asarray(rz, float)
     cls = ROOT_SURFACE_CLASS[code]
     r1 = rz + 1.0
     if cls == 0:
@@ -226,7 +238,7 @@ def root_size_factor(module, code):
     >>> round(float(root_size_factor(8.0, 4)), 3)   # case-hardened, m 8: 1.05 - 0.01 m
     0.97
     """
-    m = np.asarray(module, float)
+    m = module if type(module) is float else np.asarray(module, float)
     slope, top, floor_ = ((0.006, 30.0, 0.85), (0.01, 25.0, 0.8), (0.015, 25.0, 0.7))[
         SIZE_CLASS[code]
     ]

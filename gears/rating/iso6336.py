@@ -426,7 +426,7 @@ def rate_again(one: OnePair, torque, speed, life, application_factor, load_shari
     load = {"torque": torque, "speed": speed, "life": life,
             "application_factor": application_factor, "load_sharing": load_sharing}  # fmt: skip
     a = dict(one.arguments)
-    a.update(_load_arguments(load))
+    a.update(_plain_numbers(_load_arguments(load)))
     res = load_part(one.gears, a, one.materials, _RESULTS if fields is None else fields)
     result, _ = _one_result(res, _RESULTS if fields is None else fields)
     _raise_invalid(result)
@@ -520,14 +520,31 @@ def _arguments(args):
     if kept is None:
         a, mats = _all_arguments(args)
         if key is not None:
+            a = _plain_numbers(a)
             if len(_ARGUMENTS) >= 256:
                 _ARGUMENTS.clear()
             _ARGUMENTS[key] = ({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats)
         return a, mats, key
     gears, mats = kept
     a = dict(gears)
-    a.update(_load_arguments(args))
+    a.update(_plain_numbers(_load_arguments(args)))
     return a, mats, key
+
+
+def _plain_numbers(a: dict) -> dict:
+    """One pair's checked arguments as Python floats and bools, which its formulas compute on
+    through ``math`` (:data:`gears.namespace.SCALAR`); arrays stay arrays."""
+    out = {}
+    for k, v in a.items():
+        t = type(v)
+        if t is np.float64:
+            v = float(v)
+        elif t is np.ndarray and v.ndim == 0:
+            v = v.item()
+        elif t is np.bool_:
+            v = bool(v)
+        out[k] = v
+    return out
 
 
 def _plain_key(args):
@@ -679,10 +696,10 @@ def _blocks(a, mats, fields, threads, key=None):
     """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of about
     ``_CHUNK`` pairs (whole rows of the first axis) on ``threads`` threads, as
     :class:`PairRatings`, with one pair's gears' part (else None)."""
-    if key is not None and all(type(a[k]) is np.float64 for k in _LOAD_KEYS):
+    if key is not None and all(type(a[k]) is float for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
-        shape = np.broadcast_shapes(*(v.shape for v in a.values()))
+        shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
     n = math.prod(shape)
     wanted = {*fields, "valid", "reason"}  # the others are None
     if n < 2 * _CHUNK:
@@ -695,14 +712,14 @@ def _blocks(a, mats, fields, threads, key=None):
         ), None
     out_shape, inner = shape, n // shape[0]
     if len(shape) > 1 and inner > _CHUNK:  # rows too long for a block: the pairs one by one
-        a = {k: v if v.ndim == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
+        a = {k: v if np.ndim(v) == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
         shape, inner = (n,), 1
     # blocks of whole rows along the first axis: an argument constant along it (a spectrum's
     # bins, shape (bins,) beside pairs of shape (pairs, 1)) is not copied to each row, and the
     # gears' part runs once per pair, not once per pair and bin
     rows = max(1, _CHUNK // inner)
     lead = len(shape)
-    part_of = {k: v.ndim == lead and v.shape[0] > 1 for k, v in a.items()}
+    part_of = {k: np.ndim(v) == lead and np.shape(v)[0] > 1 for k, v in a.items()}
     store = {f: np.empty(shape, bool if f == "valid" else int if f == "reason" else float)
              for f in wanted}  # fmt: skip
 
@@ -728,9 +745,9 @@ def _blocks(a, mats, fields, threads, key=None):
 def _one_result(res, fields):
     """One pair's :class:`PairRatings` from the dict of its rating, and its gears' part."""
     if len(fields) == len(_RESULTS):
-        f64 = np.float64
-        values = [res[f] for f in _FIELDS]
-        result = PairRatings._make([v if type(v) is f64 else np.asarray(v)[()] for v in values])
+        # numpy numbers, as for arrays: one array of the numbers, then its elements
+        numbers = list(np.array([res[f] for f in _RESULTS], float))
+        result = PairRatings._make([*numbers, _number_of(res["valid"]), _number_of(res["reason"])])
     else:
         wanted = {*fields, "valid", "reason"}
         result = PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
@@ -739,7 +756,12 @@ def _one_result(res, fields):
 
 def _number_of(v):
     """One pair's value as a numpy scalar."""
-    return v if type(v) is np.float64 else np.asarray(v)[()]
+    t = type(v)
+    if t is np.float64:
+        return v
+    if t is float:
+        return np.float64(v)
+    return np.asarray(v)[()]
 
 
 def _as_material(value) -> Material:

@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from gears.namespace import SCALAR
 from gears.rating.materials import KINDS, kind_code
 
 __all__ = ["bending_life_factor", "pitting_life_factor"]
@@ -59,6 +60,8 @@ def _life(cycles, code, table):
     """The curve of ``table`` at ``cycles``: linear in log-log between the knots, constant
     outside them (one material group: ``np.interp``; groups per row: the same by branches)."""
     logn, logy = table
+    if type(cycles) is float and type(code) is int:  # one pair on Python floats
+        return math.exp(SCALAR.interp(math.log(max(cycles, 1.0)), *_KNOTS[id(table)][code]))
     if isinstance(code, int | np.integer):
         if type(cycles) is float or type(cycles) is np.float64:  # one number: no array
             return np.float64(math.exp(np.interp(math.log(max(cycles, 1.0)), logn[code],
@@ -75,6 +78,13 @@ def _life(cycles, code, table):
     out = np.where(n <= k0, y0, np.where(n <= k1, first, np.where(n <= k2, second, y2)))
     out = np.exp(out)
     return out[()] if out.ndim == 0 else out
+
+
+# the same knots as Python floats, per table and code (gears.namespace.SCALAR.interp)
+_KNOTS = {
+    id(t): [(tuple(t[0][c].tolist()), tuple(t[1][c].tolist())) for c in range(len(KINDS))]
+    for t in (_PITTING_TABLE, _BENDING_TABLE)
+}
 
 
 def _code(kind):

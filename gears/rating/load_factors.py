@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from gears.namespace import of
 from gears.rating._arrays import out as _out
 from gears.rating._arrays import where as _where
 from gears.rating.materials import GREY_IRON, HARDENED
@@ -41,12 +42,15 @@ def tolerances(module, diameter, face_width, quality):
     >>> [round(float(f), 3) for f in tolerances(8, 141.34, 100, 5)]
     [7.827, 9.592, 8.332]
     """
-    m, d, b = (np.asarray(v, float) for v in (module, diameter, face_width))
-    step = np.exp2((np.asarray(quality, float) - 5.0) / 2.0)
-    sd = np.sqrt(d)
+    m, d, b, q = module, diameter, face_width, quality
+    xp = of(m, d, b, q)
+    if xp is np:
+        m, d, b, q = (np.asarray(v, float) for v in (m, d, b, q))
+    step = xp.exp2((q - 5.0) / 2.0)
+    sd = xp.sqrt(d)
     f_pt = (0.3 * (m + 0.4 * sd) + 4.0) * step
-    f_f = (2.5 * np.sqrt(m) + 0.17 * sd + 0.5) * step
-    f_h = (0.07 * sd + 0.45 * np.sqrt(b) + 3.0) * step
+    f_f = (2.5 * xp.sqrt(m) + 0.17 * sd + 0.5) * step
+    f_h = (0.07 * sd + 0.45 * xp.sqrt(b) + 3.0) * step
     return _out(f_pt), _out(f_f), _out(f_h)
 
 
@@ -66,16 +70,17 @@ def single_stiffness(zn1, zn2, x1, x2, helix_angle=0.0, dedendum=1.25, pressure_
     >>> round(float(single_stiffness(18.905, 114.543, 0.145, 0.0, 15.8, 1.4)), 3)  # TR: 12.370
     12.37
     """
-    zn1 = np.asarray(zn1, float)
-    inv2 = _where(np.asarray(internal, bool), 0.0, 1.0 / np.asarray(zn2, float))
-    x1, x2 = np.asarray(x1, float), np.asarray(x2, float)
+    hf, pa = dedendum, pressure_angle
+    xp = of(zn1, zn2, x1, x2, helix_angle, hf, pa, internal)
+    if xp is np:
+        zn1, zn2, x1, x2, hf, pa = (np.asarray(v, float) for v in (zn1, zn2, x1, x2, hf, pa))
+        internal = np.asarray(internal, bool)
+    inv2 = _where(internal, 0.0, 1.0 / zn2)
     c1, c2, c3, c4, c5, c6, c7, c8, c9 = _Q
     q = c1 + c2 / zn1 + c3 * inv2 + c4 * x1 + c5 * x1 / zn1 + c6 * x2 + c7 * x2 * inv2
     q = q + c8 * x1 * x1 + c9 * x2 * x2
-    c_b = (1.0 + 0.5 * (1.2 - np.asarray(dedendum, float))) * (
-        1.0 - 0.02 * (20.0 - np.asarray(pressure_angle, float))
-    )
-    c = 0.8 * c_b * np.cos(np.radians(helix_angle)) / q
+    c_b = (1.0 + 0.5 * (1.2 - hf)) * (1.0 - 0.02 * (20.0 - pa))
+    c = 0.8 * c_b * xp.cos(xp.radians(helix_angle)) / q
     if line_load is not None:
         c = c * light_load_factor(line_load)
     return _out(c)
@@ -88,8 +93,10 @@ def light_load_factor(line_load):
     >>> float(light_load_factor(6.25)), float(light_load_factor(500.0))
     (0.5, 1.0)
     """
-    w = np.asarray(line_load, float)
-    return _where(w < 100.0, np.sqrt(np.sqrt(np.maximum(w, 0.0) / 100.0)), 1.0)
+    w, xp = line_load, of(line_load)
+    if xp is np:
+        w = np.asarray(w, float)
+    return _where(w < 100.0, xp.sqrt(xp.sqrt(xp.maximum(w, 0.0) / 100.0)), 1.0)
 
 
 def mesh_stiffness(c_prime, eps_alpha):
@@ -99,7 +106,10 @@ def mesh_stiffness(c_prime, eps_alpha):
     >>> [round(float(c), 2) for c in mesh_stiffness(12.37047, 1.54909)]   # TR: 17.46, 14.85
     [17.46, 14.85]
     """
-    c = np.asarray(c_prime, float) * (0.75 * np.asarray(eps_alpha, float) + 0.25)
+    c, ea = c_prime, eps_alpha
+    if of(c, ea) is np:
+        c, ea = np.asarray(c, float), np.asarray(ea, float)
+    c = c * (0.75 * ea + 0.25)
     return _out(c), _out(0.85 * c)
 
 
@@ -117,13 +127,14 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     >>> round(float(dynamic_factor(0.0396, 1273.5, 12.37, 8.65, 11.6, 70.0, 2.632)), 4)
     1.0033
     """
-    n = np.asarray(resonance_ratio, float)
-    w = np.asarray(line_load, float)
-    c = np.asarray(c_prime, float)
-    eg = np.asarray(eps_gamma, float)
-    bp = c * np.asarray(f_pb_eff, float) / w
-    bf = c * np.asarray(f_f_eff, float) / w
-    bk = np.abs(1.0 - c * np.asarray(tip_relief, float) / w)
+    n, w, c, eg = resonance_ratio, line_load, c_prime, eps_gamma
+    f_pb, f_f, c_a = f_pb_eff, f_f_eff, tip_relief
+    xp = of(n, w, c, eg, f_pb, f_f, c_a)
+    if xp is np:
+        n, w, c, eg, f_pb, f_f, c_a = (np.asarray(v, float) for v in (n, w, c, eg, f_pb, f_f, c_a))
+    bp = c * f_pb / w
+    bf = c * f_f / w
+    bk = xp.abs(1.0 - c * c_a / w)
     low = eg <= 2.0
     egx = _where(low, 3.0, eg)  # keeps the eps_gamma > 2 branch finite where unused
     cv1 = 0.32
@@ -132,9 +143,9 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     cv4 = _where(low, 0.90, (0.57 - 0.05 * egx) / (egx - 1.44))
     cv5 = 0.47
     cv6 = _where(low, 0.47, 0.12 / (egx - 1.74))
-    cv7 = _where(eg <= 1.5, 0.75, _where(eg <= 2.5, 0.125 * np.sin(np.pi * (eg - 2.0)) + 0.875,
+    cv7 = _where(eg <= 1.5, 0.75, _where(eg <= 2.5, 0.125 * xp.sin(xp.pi * (eg - 2.0)) + 0.875,
                                              1.0))  # fmt: skip
-    ns = _where(w < 100.0, 0.5 + 0.35 * np.sqrt(np.maximum(w, 0.0) / 100.0), 0.85)
+    ns = _where(w < 100.0, 0.5 + 0.35 * xp.sqrt(xp.maximum(w, 0.0) / 100.0), 0.85)
     sub = n * (cv1 * bp + cv2 * bf + cv3 * bk) + 1.0
     main = cv1 * bp + cv2 * bf + cv4 * bk + 1.0
     sup = cv5 * bp + cv6 * bf + cv7
@@ -152,9 +163,12 @@ def face_load_factor(misalignment, c_gamma_beta, line_load):
     >>> round(float(face_load_factor(10.0, 14.845, 1500.0)), 4)
     1.0495
     """
-    k = np.asarray(misalignment, float) * np.asarray(c_gamma_beta, float)
-    k = k / (2.0 * np.asarray(line_load, float))
-    return _out(_where(k <= 1.0, 1.0 + k, np.sqrt(4.0 * np.maximum(k, 0.0))))
+    f, c, w = misalignment, c_gamma_beta, line_load
+    xp = of(f, c, w)
+    if xp is np:
+        f, c, w = (np.asarray(v, float) for v in (f, c, w))
+    k = f * c / (2.0 * w)
+    return _out(_where(k <= 1.0, 1.0 + k, xp.sqrt(4.0 * xp.maximum(k, 0.0))))
 
 
 def face_load_factor_root(k_hbeta, face_width, tooth_height):
@@ -163,9 +177,13 @@ def face_load_factor_root(k_hbeta, face_width, tooth_height):
     >>> round(float(face_load_factor_root(1.16, 100.0, 19.2)), 4)   # ISO/TR 6336-30: 1.12803
     1.1284
     """
-    bh = np.maximum(np.asarray(face_width, float) / np.asarray(tooth_height, float), 3.0)
+    k, b, h = k_hbeta, face_width, tooth_height
+    xp = of(k, b, h)
+    if xp is np:
+        k, b, h = (np.asarray(v, float) for v in (k, b, h))
+    bh = xp.maximum(b / h, 3.0)
     nf = bh * bh / (1.0 + bh + bh * bh)
-    return _out(np.asarray(k_hbeta, float) ** nf)
+    return _out(xp.power(k, nf))
 
 
 def transverse_load_factors(c_gamma_alpha, f_pb, y_alpha, line_load_h, eps_alpha, eps_gamma,
@@ -176,14 +194,17 @@ def transverse_load_factors(c_gamma_alpha, f_pb, y_alpha, line_load_h, eps_alpha
     most ``eps_gamma / (eps_alpha Z_eps^2)`` (contact) and ``eps_gamma / (0.25 eps_alpha +
     0.75)`` (root). ``line_load_h`` is F_tH / b = F_t K_gamma K_A K_v K_Hbeta / b.
     """
-    q = np.asarray(c_gamma_alpha, float) * (np.asarray(f_pb, float) - np.asarray(y_alpha, float))
-    q = q / np.asarray(line_load_h, float)
-    ea, eg = np.asarray(eps_alpha, float), np.asarray(eps_gamma, float)
+    c, y, w, ea, eg, ze = c_gamma_alpha, y_alpha, line_load_h, eps_alpha, eps_gamma, z_eps
+    xp = of(c, f_pb, y, w, ea, eg, ze)
+    if xp is np:
+        c, f_pb, y, w, ea, eg, ze = (np.asarray(v, float) for v in (c, f_pb, y, w, ea, eg, ze))
+    q = c * (f_pb - y)
+    q = q / w
     low = eg / 2.0 * (0.9 + 0.4 * q)
-    high = 0.9 + 0.4 * np.sqrt(2.0 * np.maximum(eg - 1.0, 0.0) / eg) * q
-    k = np.maximum(_where(eg <= 2.0, low, high), 1.0)
-    kh = np.minimum(k, eg / (ea * np.asarray(z_eps, float) ** 2))
-    kf = np.minimum(k, eg / (0.25 * ea + 0.75))
+    high = 0.9 + 0.4 * xp.sqrt(2.0 * xp.maximum(eg - 1.0, 0.0) / eg) * q
+    k = xp.maximum(_where(eg <= 2.0, low, high), 1.0)
+    kh = xp.minimum(k, eg / (ea * ze**2))
+    kf = xp.minimum(k, eg / (0.25 * ea + 0.75))
     return _out(kh), _out(kf)
 
 
@@ -192,15 +213,17 @@ def _running_in(deviation, code, sigma_hlim, v, hard, soft, grey, limits):
     """Running-in allowance of one gear: hardened steels ``hard[0] d`` up to ``hard[1]`` um;
     grey cast iron ``grey d`` (limits[2:] above 5 and 10 m/s); others ``soft / sigma_Hlim d``
     (limits[:2] / sigma_Hlim above 5 and 10 m/s)."""
-    s = np.asarray(sigma_hlim, float)
-    d = np.asarray(deviation, float)
+    s, d = sigma_hlim, deviation
+    xp = of(s, d, v)
+    if xp is np:
+        s, d = np.asarray(s, float), np.asarray(d, float)
     if HARDENED[code]:
-        return np.minimum(hard[0] * d, hard[1])
+        return xp.minimum(hard[0] * d, hard[1])
     if GREY_IRON[code]:
         cap = _where(v > 10.0, limits[3], _where(v > 5.0, limits[2], np.inf))
-        return np.minimum(grey * d, cap)
+        return xp.minimum(grey * d, cap)
     cap = _where(v > 10.0, limits[1] / s, _where(v > 5.0, limits[0] / s, np.inf))
-    return np.minimum(soft / s * d, cap)
+    return xp.minimum(soft / s * d, cap)
 
 
 def profile_running_in(deviation, code, sigma_hlim, v):

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from gears.namespace import of
 from gears.rating._arrays import out as _out
 from gears.rating._arrays import where as _where
 from gears.rating.materials import HARDENED
@@ -33,8 +34,11 @@ def zone_factor(alpha_t, alpha_wt, beta_b):
     >>> round(float(zone_factor(20.0, 20.0, 0.0)), 4)          # spur, no shift: 2.4946
     2.4946
     """
-    at, awt, bb = (np.radians(np.asarray(a, float)) for a in (alpha_t, alpha_wt, beta_b))
-    return _out(np.sqrt(2.0 * np.cos(bb) * np.cos(awt) / (np.cos(at) ** 2 * np.sin(awt))))
+    xp = of(alpha_t, alpha_wt, beta_b)
+    if xp is np:
+        alpha_t, alpha_wt, beta_b = (np.asarray(a, float) for a in (alpha_t, alpha_wt, beta_b))
+    at, awt, bb = xp.radians(alpha_t), xp.radians(alpha_wt), xp.radians(beta_b)
+    return _out(xp.sqrt(2.0 * xp.cos(bb) * xp.cos(awt) / (xp.cos(at) ** 2 * xp.sin(awt))))
 
 
 def elasticity_factor(e1, nu1, e2, nu2):
@@ -43,8 +47,10 @@ def elasticity_factor(e1, nu1, e2, nu2):
     >>> round(float(elasticity_factor(206000, 0.3, 206000, 0.3)), 2)   # steel: 189.81
     189.81
     """
-    e1, nu1, e2, nu2 = (np.asarray(v, float) for v in (e1, nu1, e2, nu2))
-    return _out(np.sqrt(1.0 / (np.pi * ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2))))
+    xp = of(e1, nu1, e2, nu2)
+    if xp is np:
+        e1, nu1, e2, nu2 = (np.asarray(v, float) for v in (e1, nu1, e2, nu2))
+    return _out(xp.sqrt(1.0 / (xp.pi * ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2))))
 
 
 def contact_ratio_factor(eps_alpha, eps_beta):
@@ -55,9 +61,12 @@ def contact_ratio_factor(eps_alpha, eps_beta):
     >>> round(float(contact_ratio_factor(1.5491, 1.083)), 4)   # ISO/TR 6336-30 Ex. 1: 0.803
     0.8035
     """
-    ea = np.asarray(eps_alpha, float)
-    eb = np.minimum(np.asarray(eps_beta, float), 1.0)
-    return _out(np.sqrt((4.0 - ea) / 3.0 * (1.0 - eb) + eb / ea))
+    xp = of(eps_alpha, eps_beta)
+    ea, eb = eps_alpha, eps_beta
+    if xp is np:
+        ea, eb = np.asarray(ea, float), np.asarray(eb, float)
+    eb = xp.minimum(eb, 1.0)
+    return _out(xp.sqrt((4.0 - ea) / 3.0 * (1.0 - eb) + eb / ea))
 
 
 def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_beta,
@@ -71,27 +80,30 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
     ``Z_D = 1`` for internal gears, both 1 for eps_beta >= 1. NaN where a single-contact point lies
     inside a base circle (and eps_beta < 1).
     """
-    s = _where(np.asarray(internal, bool), -1.0, 1.0)
-    z1, z2 = np.asarray(z1, float), np.asarray(z2, float)
-    l1 = np.sqrt(np.maximum((np.asarray(da1) / db1) ** 2 - 1.0, 0.0))
-    l2 = np.sqrt(np.maximum((np.asarray(da2) / db2) ** 2 - 1.0, 0.0))
-    ea = np.asarray(eps_alpha, float)
-    tw = np.tan(np.radians(alpha_wt))
+    ea, eb, pi = eps_alpha, eps_beta, np.pi
+    xp = of(z1, z2, da1, da2, db1, db2, alpha_wt, ea, eb, internal)
+    if xp is np:
+        internal = np.asarray(internal, bool)
+        z1, z2, da1, da2, ea, eb = (np.asarray(v, float) for v in (z1, z2, da1, da2, ea, eb))
+    s = _where(internal, -1.0, 1.0)
+    l1 = xp.sqrt(xp.maximum((da1 / db1) ** 2 - 1.0, 0.0))
+    l2 = xp.sqrt(xp.maximum((da2 / db2) ** 2 - 1.0, 0.0))
+    tw = xp.tan(xp.radians(alpha_wt))
     with np.errstate(invalid="ignore", divide="ignore"):
-        m1 = tw / np.sqrt((l1 - 2 * np.pi / z1) * (l2 - s * (ea - 1.0) * 2 * np.pi / z2))
-        m2 = tw / np.sqrt((l2 - s * 2 * np.pi / z2) * (l1 - (ea - 1.0) * 2 * np.pi / z1))
-    eb = np.minimum(np.asarray(eps_beta, float), 1.0)
+        m1 = tw / xp.sqrt((l1 - 2 * pi / z1) * (l2 - s * (ea - 1.0) * 2 * pi / z2))
+        m2 = tw / xp.sqrt((l2 - s * 2 * pi / z2) * (l1 - (ea - 1.0) * 2 * pi / z1))
+    eb = xp.minimum(eb, 1.0)
     # eps_beta >= 1: 1 whatever M (the single-contact points do not matter then); else NaN
     # where M does not exist (the point lies inside a base circle: the mesh interferes)
-    zb = _where(eb >= 1.0, 1.0, np.maximum(1.0, m1 - eb * (m1 - 1.0)))
-    zd = _where(s < 0, 1.0, _where(eb >= 1.0, 1.0, np.maximum(1.0, m2 - eb * (m2 - 1.0))))
-    zb = _where(np.isnan(m1) & (eb < 1.0), np.nan, zb)
-    zd = _where(np.isnan(m2) & (eb < 1.0) & (s > 0), np.nan, zd)
+    zb = _where(eb >= 1.0, 1.0, xp.maximum(1.0, m1 - eb * (m1 - 1.0)))
+    zd = _where(s < 0, 1.0, _where(eb >= 1.0, 1.0, xp.maximum(1.0, m2 - eb * (m2 - 1.0))))
+    zb = _where(xp.isnan(m1) & (eb < 1.0), xp.nan, zb)
+    zd = _where(xp.isnan(m2) & (eb < 1.0) & (s > 0), xp.nan, zd)
     return _out(zb), _out(zd)
 
 
 def _c_zl(sigma_hlim):
-    s = np.asarray(sigma_hlim, float)
+    s = sigma_hlim if type(sigma_hlim) is float else np.asarray(sigma_hlim, float)
     return _where(s < 850.0, 0.83, _where(s < 1200.0, s / 4375.0 + 0.6357, 0.91))
 
 
@@ -103,10 +115,13 @@ def lubrication_factors(sigma_hlim, oil_viscosity, speed):
     >>> [round(float(f), 5) for f in lubrication_factors(1500, 320, 2.664)]   # TR: 1.04739, 0.96911
     [1.04739, 0.96911]
     """
+    xp = of(sigma_hlim, oil_viscosity, speed)
+    if xp is np:
+        oil_viscosity, speed = np.asarray(oil_viscosity, float), np.asarray(speed, float)
     czl = _c_zl(sigma_hlim)
-    zl = czl + 4.0 * (1.0 - czl) / (1.2 + 134.0 / np.asarray(oil_viscosity, float)) ** 2
+    zl = czl + 4.0 * (1.0 - czl) / (1.2 + 134.0 / oil_viscosity) ** 2
     czv = czl + 0.02
-    zv = czv + 2.0 * (1.0 - czv) / np.sqrt(0.8 + 32.0 / np.asarray(speed, float))
+    zv = czv + 2.0 * (1.0 - czv) / xp.sqrt(0.8 + 32.0 / speed)
     return _out(zl), _out(zv)
 
 
@@ -118,10 +133,12 @@ def roughness_factor(sigma_hlim, rz, rho_red):
     >>> round(float(roughness_factor(1500, 6.0, 21.8)), 3)   # ISO/TR 6336-30 Ex. 1: 0.96599
     0.966
     """
-    s = np.asarray(sigma_hlim, float)
+    s, xp = sigma_hlim, of(sigma_hlim, rz, rho_red)
+    if xp is np:
+        s, rz, rho_red = (np.asarray(v, float) for v in (s, rz, rho_red))
     czr = _where(s < 850.0, 0.15, _where(s < 1200.0, 0.32 - 0.0002 * s, 0.08))
-    rz10 = np.asarray(rz, float) * np.cbrt(10.0 / np.asarray(rho_red, float))
-    return _out((3.0 / rz10) ** czr)
+    rz10 = rz * xp.cbrt(10.0 / rho_red)
+    return _out(xp.power(3.0 / rz10, czr))
 
 
 def work_hardening_factors(code1, code2, hb1, hb2, rz, rho_red, nu40, v):
@@ -136,12 +153,14 @@ def work_hardening_factors(code1, code2, hb1, hb2, rz, rho_red, nu40, v):
     >>> [round(float(v), 4) for v in z]   # 1.2 - (285 - 130)/1700 = 1.1088; hardened gear: 1
     [1.1088, 1.0]
     """
-    rzh = np.clip(rz * (10.0 / rho_red) ** 0.33 / (nu40 * v / 1500.0) ** 0.33, 3.0, 16.0)
+    xp = of(hb1, hb2, rz, rho_red, nu40, v)
+    rzh = rz * xp.power(10.0 / rho_red, 0.33) / xp.power(nu40 * v / 1500.0, 0.33)
+    rzh = xp.clip(rzh, 3.0, 16.0)
     out = []
     for mine, other, hb in ((code1, code2, hb1), (code2, code1, hb2)):
         if HARDENED[mine] or not HARDENED[other]:
-            out.append(np.ones_like(rzh))
+            out.append(1.0 if xp is not np else np.ones_like(rzh))
             continue
         hb = min(max(hb, 130.0), 470.0)
-        out.append((1.2 - (hb - 130.0) / 1700.0) * (3.0 / rzh) ** 0.15)
+        out.append((1.2 - (hb - 130.0) / 1700.0) * xp.power(3.0 / rzh, 0.15))
     return out[0], out[1]
