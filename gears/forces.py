@@ -68,6 +68,7 @@ __all__ = [
     "working_helix_angle",
     "worm_mesh_forces",
     "worm_pair_forces",
+    "worm_torque_forces",
 ]
 
 
@@ -337,6 +338,89 @@ def worm_mesh_forces(
         fr = w * np.sin(an)
         vec = np.stack(np.broadcast_arrays(-fr, -t, np.sign(t) * fa), axis=-1)
         out = MeshForces(ft + 0.0 * fa, fr, fa, w, vec, fr, ft + 0.0 * fa)
+    return _finite(out, "the worm forces")
+
+
+def worm_torque_forces(
+    torque: ArrayLike, wheel_torque: ArrayLike, worm_diameter: ArrayLike,
+    wheel_diameter: ArrayLike, lead_angle: ArrayLike, normal_pressure_angle: ArrayLike = 20.0,
+) -> MeshForces:  # fmt: skip
+    """The mesh force of a right-hand cylindrical worm pair from the torques on both members:
+    the force :func:`worm_mesh_forces` gives, read the other way round (from its tangential and
+    axial components to W and the friction), so it holds for any efficiency, in either
+    direction, and for a self-locking pair driven backwards, where the worm's torque vanishes or
+    reverses and :func:`worm_mesh_forces` refuses.
+
+    In the frame of :func:`worm_pair_forces` (origin on the worm's axis +z, x towards the
+    wheel's axis, which runs along +y) the force on the worm at the pitch point is
+    ``(-F_r, -F_t1, F_a1)`` with ``F_t1 = 2000 T_1 / d_1`` (``torque`` T_1 on the worm about
+    +z) and ``F_a1 = 2000 T_2 / d_2`` (``wheel_torque`` T_2 on the wheel about +y, at the
+    wheel's arm ``d_2 / 2``), so each member's torque balances the moment of its force. The
+    normal force W and the friction mu W along the thread (:func:`worm_mesh_forces`) then
+    follow from
+
+    * ``W cos alpha_n = s (F_t1 sin gamma + F_a1 cos gamma)`` (``s = sign F_a1``),
+    * ``mu W = s (F_t1 cos gamma - F_a1 sin gamma)`` (positive: the worm drives; negative:
+      the wheel drives),
+
+    and the radial force is ``F_r = W sin alpha_n`` (DIN 3996 / ISO/TR 14521; Ozols (14.15),
+    (14.18): ``F_t1 = F_a1 tan(gamma +- phi')``).
+
+    Parameters
+    ----------
+    torque, wheel_torque : array_like
+        T_1 and T_2, N m (one of them may be 0 only if both are).
+    worm_diameter : array_like
+        d_1, the worm's diameter at the pitch point, mm (its reference diameter d_m1).
+    wheel_diameter : array_like
+        d_2, twice the wheel's arm to the pitch point, mm (``2 a - d_m1``: the wheel's
+        reference diameter for an unshifted wheel, DIN 3996's d_m2).
+    lead_angle, normal_pressure_angle : array_like
+        gamma and alpha_n, degrees.
+
+    Returns
+    -------
+    MeshForces
+        ``tangential`` |F_t1|, ``axial`` |F_a1|, ``radial`` F_r, ``normal`` W, ``radial_2``
+        F_r, ``axial_2`` |F_t1| (the wheel's axial force), ``vector`` the force on the worm.
+
+    Raises
+    ------
+    GearError
+        Torques no contact can carry (W <= 0: the flank would pull), naming them.
+
+    Examples
+    --------
+    The example of :func:`worm_mesh_forces` from its two torques (no friction, tan gamma =
+    0.1, d_1 = 40 mm, so T_2 = 10 N m * (d_2 / d_1) / tan gamma at d_2 = 200 mm):
+
+    >>> f = worm_torque_forces(10.0, 500.0, 40.0, 200.0, 5.710593)
+    >>> round(float(f.tangential), 3), round(float(f.axial), 3), round(float(f.radial), 3)
+    (500.0, 5000.0, 1828.928)
+    """
+    t = tangential_force(torque, worm_diameter)
+    fa = tangential_force(wheel_torque, wheel_diameter)
+    g = np.radians(_array("lead_angle", lead_angle, 0.0, 90.0))
+    an = np.radians(_array("normal_pressure_angle", normal_pressure_angle, 0.0, 90.0))
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = np.where(fa < 0.0, -1.0, 1.0)
+        w_cos = s * (t * np.sin(g) + fa * np.cos(g))  # W cos(alpha_n)
+        tiny = 1e-12 * (np.abs(t) + np.abs(fa))
+        bad = ~(w_cos > tiny) & ((t != 0.0) | (fa != 0.0))
+        if np.any(bad):
+            t1, t2 = (np.broadcast_to(np.asarray(v, float), bad.shape)[bad].flat[0]
+                      for v in (torque, wheel_torque))  # fmt: skip
+            raise GearError(
+                f"torque = {t1:g} N m on the worm with wheel_torque = {t2:g} N m: no contact "
+                "carries them (the flank would pull); valid are torques whose forces press the "
+                "flanks together, |F_a1| cos(gamma) + F_t1 sin(gamma) > 0 with F_t1 signed in "
+                "the sense of F_a1"
+            )
+        w = np.maximum(w_cos, 0.0) / np.cos(an)
+        fr = w * np.sin(an)
+        vec = np.stack(np.broadcast_arrays(-fr, -t, fa), axis=-1)
+        ft, fa_abs = np.abs(t) + 0.0 * fr, np.abs(fa) + 0.0 * fr
+        out = MeshForces(ft, fr, fa_abs, w, vec, fr, ft)
     return _finite(out, "the worm forces")
 
 

@@ -127,6 +127,7 @@ LAYERS = {
             "planetary.shifts",
             "layout",
             "cycle",
+            "crossing",
         ],
         ["capacity", "loading", "planetary.contact"],
         ["catalog", "differential", "planetary.stage"],

@@ -24,10 +24,12 @@ torques; each gear's force follows from its own torque, so every member balances
 the two forces of one mesh differ by the loss (Newton's third law holds to ``1 - eta``).
 
 Meshes of kinematic-only relations (tooth counts, no gears) get their diameters from
-``module=`` (``d = m z``, the pressure angle ``pressure_angle``, spur); links (bevel pairs by
-the arrow rule, chains, worms) carry torque and no force here. Bevel meshes built from
-:class:`gears.BevelPair` are not in the plane: their forces are reported per mesh (in the
-pair's frame, :meth:`gears.BevelPair.forces`) and left out of the members' resultants.
+``module=`` (``d = m z``, spur); links (bevel pairs by the arrow rule, chains, worms by ratio)
+carry no force. Bevel meshes (:class:`gears.BevelPair`) report their forces per mesh, in the
+pair's frame, left out of the members' resultants. A worm mesh (:class:`gears.WormPair`) is in
+3D (:mod:`trains.crossing`): the worm's axis crosses the plane in the wheel's mid-plane, its
+force (from both members' torques, the friction set by the member that drives) loads the
+wheel and the worm, whose bearings carry it along and across the worm's own axis.
 """
 
 from __future__ import annotations
@@ -42,7 +44,8 @@ import numpy as np
 
 from gears import MATERIALS, BevelPair, Gear, GearError
 from gears.display import html_table
-from gears.forces import bearing_reactions, bevel_pair_forces, centrifugal_force, mesh_forces
+from gears.forces import bevel_pair_forces, centrifugal_force, mesh_forces
+from trains.crossing import axis_reactions, place_worms, worm_mesh, worm_relations
 from trains.errors import TrainError
 from trains.layout import Axes, Mesh, direction, mesh_geometry, place, shared_axes, turn
 from trains.power import PowerFlow, power_flow
@@ -65,17 +68,23 @@ class MeshLoad:
     members : (str, str)
         The relation's members ``(a, b)``.
     kind : str
-        ``"spur"``, ``"helical"``, ``"internal"``, ``"bevel"`` or ``"link"`` (no force).
+        ``"spur"``, ``"helical"``, ``"internal"``, ``"bevel"``, ``"worm"`` or ``"link"`` (no
+        force).
     copies : int
         How many copies carry it (the planet count), each at ``angles[k]`` degrees.
     tangential, radial, axial, normal : (float, float)
-        Magnitudes on the gear of ``a`` and of ``b``, per copy.
+        Magnitudes on the gear of ``a`` and of ``b``, per copy (a worm mesh: the worm's axial
+        force is the wheel's tangential force and the other way round; ``normal`` is W).
     forces : dict
         Member -> the force on its gear, shape ``(copies, 3)``, in the drawing's frame.
     points : dict
         Member -> where the force acts (the pitch point), shape ``(copies, 3)``, mm.
     angles : tuple of float
-        The direction of each copy's line of centres (from the external gear's axis), degrees.
+        The direction of each copy's line of centres (from the external gear's axis; a worm
+        mesh: from the wheel's axis to the worm's), degrees.
+    driver : str or None
+        The member that drives the mesh in its relative motion in the power flow (the friction
+        acts against its flank's sliding); None without relative motion.
     """
 
     name: str
@@ -89,6 +98,7 @@ class MeshLoad:
     forces: dict[str, np.ndarray] = field(repr=False)
     points: dict[str, np.ndarray] = field(repr=False)
     angles: tuple[float, ...] = ()
+    driver: str | None = None
 
 
 @dataclass(frozen=True)
@@ -109,12 +119,15 @@ class MemberLoad:
     moment : float
         The moment of those forces about its axis, N m: ``moment + torque = 0``.
     position : ndarray, shape (3,)
-        Its axis in the drawing (a planet: copy 0's).
+        A point of its axis in the drawing (a planet: copy 0's; a worm: where its axis crosses
+        the line of centres).
     copies : int
     carried_by : str
         Where its bearings sit: ``"frame"``, or the carrier of a planet.
     reactions : ndarray or None
         With ``bearings=``: the force of each of its two bearings, shape (2, 3).
+    axis : ndarray, shape (3,)
+        The direction of its axis: +z, or across the plane for a worm (and what turns with it).
     """
 
     name: str
@@ -126,11 +139,18 @@ class MemberLoad:
     copies: int = 1
     carried_by: str = FRAME
     reactions: np.ndarray | None = None
+    axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]), repr=False)
 
     @property
     def radial_load(self) -> float:
-        """``|bearing|`` in the plane of the drawing (the radial bearing load), N."""
-        return float(math.hypot(self.bearing[0], self.bearing[1]))
+        """``|bearing|`` across its axis (the radial bearing load), N."""
+        b = self.bearing - self.axial_force * self.axis
+        return float(math.hypot(math.hypot(b[0], b[1]), b[2]))
+
+    @property
+    def axial_force(self) -> float:
+        """The bearing force along its axis (signed; the axial bearing load is its size), N."""
+        return float(np.dot(self.bearing, self.axis))
 
 
 @dataclass(frozen=True)
@@ -172,7 +192,7 @@ class TrainLoads:
                 b.name,
                 f"{round(b.torque, 4) + 0.0:.4f}",
                 f"{b.radial_load:.2f}",
-                f"{abs(b.bearing[2]):.2f}",
+                f"{abs(b.axial_force):.2f}",
                 f"{round(b.moment, 4) + 0.0:.4f}",
                 b.carried_by if b.copies == 1 else f"{b.carried_by} x{b.copies}",
             )
@@ -317,12 +337,14 @@ def loads(
     pressure_angle : float
         Their pressure angle, degrees (default 20).
     angles : mapping, optional
-        Mesh name -> direction (degrees) in which it places the member it reaches (default 0).
+        Mesh name -> direction (degrees) in which it places the member it reaches (default 0;
+        a worm mesh places the worm's axis).
     axial : mapping, optional
         Mesh name -> axial position (mm) of its mid-plane, for ``bearings`` (default 0).
     bearings : mapping, optional
-        Member -> ``(z_A, z_B)``: the axial positions (mm) of its two bearings; A locates
-        axially. Fills :attr:`MemberLoad.reactions` (:func:`gears.forces.bearing_reactions`).
+        Member -> ``(z_A, z_B)``: the axial positions (mm) of its two bearings along its axis
+        (a worm's from its :attr:`MemberLoad.position`, along :attr:`MemberLoad.axis`); A
+        locates axially. Fills :attr:`MemberLoad.reactions` (:mod:`gears.forces`).
     centrifugal : mapping, optional
         Planet member -> its centrifugal force, N (outwards from its carrier's axis; the pin
         carries it).
@@ -343,7 +365,7 @@ def loads(
     ------
     TrainError
         What :func:`trains.power_flow` refuses, a kinematic mesh without ``module``, unknown
-        names in the mappings, bad numbers.
+        names in the mappings, bad numbers, a worm axis it cannot place (:mod:`trains.crossing`).
 
     Examples
     --------
@@ -397,24 +419,25 @@ def loads(
             )
     axes = shared_axes(train, planets)
     pos = place(train, geo, axes, angles)
+    parallel = [g for m in geo for g in (m.g1, m.g2)]
+    worms = place_worms(worm_relations(train), axes.find, train.members, parallel, pos, angles,
+                        axial)  # fmt: skip
     meshes = {}
     on: dict[str, list[tuple[int, np.ndarray, np.ndarray]]] = {m: [] for m in train.members}
     for m in geo:
         meshes[m.relation.name] = _mesh_load(m, flow, spread, pos, axes, angles, axial, on)
+    for name, w in worms.items():  # a force across the plane (trains.crossing)
+        fields, v, point = worm_mesh(w, flow.relations[name])
+        on[w.worm].append((0, v, point - w.position, point))
+        on[w.wheel].append((0, -v + 0.0, point - [*pos[axes.find(w.wheel)], 0.0], point))
+        meshes[name] = MeshLoad(**fields)
     for r in train.relations:
         if r.name not in meshes:
             meshes[r.name] = _link_load(r, flow, spread)
-    members = _members(
-        train,
-        flow,
-        (planets, spread),
-        pos,
-        axes,
-        on,
-        bearings,
-        centrifugal,
-        {m.relation.name for m in geo},
-    )
+    crossed = {axes.find(w.worm): (w.position, w.axis) for w in worms.values()}
+    geometric = {m.relation.name for m in geo} | set(worms)
+    members = _members(train, flow, (planets, spread), pos, axes, on, bearings, centrifugal,
+                       geometric, crossed)  # fmt: skip
     return TrainLoads(flow, meshes, members)
 
 
@@ -469,6 +492,7 @@ def _mesh_load(
         {k: np.array(v) for k, v in forces.items()},
         {k: np.array(v) for k, v in points.items()},
         tuple(angles_out),
+        rp.driver,
     )
 
 
@@ -546,8 +570,10 @@ def _members(
     bearings,
     centrifugal,
     geometric: set[str],
+    crossed: Mapping[str, tuple[np.ndarray, np.ndarray]],
 ) -> dict[str, MemberLoad]:
-    """Every member's resultant, bearing force and moment (module docstring)."""
+    """Every member's resultant, bearing force and moment (module docstring); ``crossed``
+    maps a worm's axis group to its point and direction."""
     planets, spread = planets
     # torques no force in the drawing carries: links, couplings, bevel meshes, and the carrier's
     # share of a mesh on a moving carrier that holds no planet (a strain-wave generator)
@@ -586,7 +612,8 @@ def _members(
                     points,
                 )
         f = np.sum(forces, axis=0) if forces else np.zeros(3)
-        moment = sum(float(np.cross(p, v)[2]) for p, v in zip(points, forces, strict=True))
+        at, axis = crossed.get(axes.find(name), (np.array([*here, 0.0]), np.array([0.0, 0, 1])))
+        moment = sum(float(np.cross(p, v) @ axis) for p, v in zip(points, forces, strict=True))
         other = (
             flow.torques.get(name, 0.0)
             + sum(flow.relations[r.name].torques.get(name, 0.0) for r in forceless)
@@ -595,8 +622,8 @@ def _members(
         reactions = None
         if name in bearings:
             try:
-                reactions, _ = bearing_reactions(
-                    np.reshape(forces, (-1, 3)), np.reshape(points, (-1, 3)), bearings[name]
+                reactions = axis_reactions(
+                    np.reshape(forces, (-1, 3)), np.reshape(points, (-1, 3)), bearings[name], axis
                 )
             except GearError as exc:
                 raise TrainError(f"bearings[{name!r}]: {exc}") from None
@@ -606,10 +633,11 @@ def _members(
             f + 0.0,
             -f + 0.0,
             moment / 1000.0 + 0.0,
-            np.array([*here, 0.0]),
+            at + 0.0,
             n,
             carrier,
             reactions,
+            axis + 0.0,
         )
     return out
 

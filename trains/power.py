@@ -448,9 +448,9 @@ class _Balance:
         rhs, tq = self.rhs, self.tq
         x, *_ = np.linalg.lstsq(a, rhs, rcond=None)
         resid = np.abs(a @ x - rhs).max() if len(rhs) else 0.0
-        if not np.all(np.isfinite(x)) or resid > 1e-9 * max(1.0, abs(tq)) * max(
-            1.0, np.abs(x).max()
-        ):
+        with np.errstate(over="ignore"):  # a torque near float's largest: the bound is inf
+            bound = 1e-9 * max(1.0, abs(tq)) * max(1.0, np.abs(x).max())
+        if not np.all(np.isfinite(x)) or resid > bound:
             raise TrainError(
                 "the torques cannot balance: the train is not statically determined by the"
                 f" input {self.inputs}, output {self.output!r} and fixed members {self.fixed}"

@@ -27,6 +27,7 @@ from gears.forces import (
     rotate_forces,
     tangential_force,
     worm_mesh_forces,
+    worm_torque_forces,
 )
 
 REL = 1e-12  # floats of one formula evaluated two ways
@@ -229,6 +230,7 @@ def test_property_finite_or_gear_error(torque, d, a, b, f):
         lambda: rotate_forces([torque, d, a], b),
         lambda: worm_mesh_forces(torque, d, a, b, f),
         lambda: worm_mesh_forces(torque, d, a, 20.0, f, "wheel"),
+        lambda: worm_torque_forces(torque, f, d, 2 * d, a, b),
     ):
         try:
             out = call()
@@ -304,6 +306,44 @@ def test_worm_forces_against_the_efficiency(starts, q, hand):
     bw = g if hand == "right" else -g
     thread = np.array([0.0, math.cos(bw), math.sin(bw)])
     assert abs(np.dot(f.vectors[0], thread)) < 1e-9 * f.normal[0]
+
+
+@pytest.mark.parametrize("driving", ["worm", "wheel"])
+@pytest.mark.parametrize("gamma, mu, an", [(11.309932, 0.05, 20.0), (30.0, 0.1, 15.0),
+                                           (5.0, 0.02, 25.0)])  # fmt: skip
+def test_worm_torque_forces_is_worm_mesh_forces_read_backwards(driving, gamma, mu, an):
+    # independent route: worm_mesh_forces builds the force from W and the friction mu W along
+    # the thread (DIN 3996); its wheel torque T_2 = F_a1 d_2 / 2000 and the worm's torque
+    # given back to worm_torque_forces must give the same force, W and F_r
+    d1, d2, t1 = 50.0, 200.0, 12.0
+    f = worm_mesh_forces(t1, d1, gamma, an, mu, driving)
+    t2 = float(f.axial) * d2 / 2000.0
+    g = worm_torque_forces(t1, t2, d1, d2, gamma, an)
+    for a, b in zip(f, g, strict=True):
+        np.testing.assert_allclose(b, a, rtol=1e-12)
+
+
+def test_worm_torque_forces_locked_pair_driven_backwards():
+    # Ozols (14.18) with gamma < phi': a self-locking pair lowered by pushing its worm round.
+    # Hand derivation (DIN 3996 components with the friction of the wheel driving): tan gamma
+    # = 1/16, mu 0.06, alpha_n 20 deg, T_2 = 24.5 N m at d_2 = 160 mm: F_a1 = 2000 T_2 / d_2
+    # = 306.25 N, W = F_a1 / (cos a_n cos g + mu sin g) = 325.24 N, F_t1 = W (cos a_n sin g -
+    # mu cos g) = -0.412 N (the worm's torque reverses: -0.0132 N m at d_1 = 64 mm)
+    g, an, mu = math.atan(1 / 16), math.radians(20), 0.06
+    fa = 2000 * 24.5 / 160
+    w = fa / (math.cos(an) * math.cos(g) + mu * math.sin(g))
+    ft = w * (math.cos(an) * math.sin(g) - mu * math.cos(g))
+    assert ft < 0 and w == pytest.approx(325.24, abs=0.005)
+    f = worm_torque_forces(ft * 64 / 2000, 24.5, 64.0, 160.0, math.degrees(g))
+    assert float(f.normal) == pytest.approx(w, rel=1e-12)
+    assert float(f.radial) == pytest.approx(w * math.sin(an), rel=1e-12)
+    np.testing.assert_allclose(f.vector, [-w * math.sin(an), -ft, fa], rtol=1e-12)
+    # the same torques through worm_mesh_forces are refused (the wheel cannot drive it)
+    with pytest.raises(GearError, match="self-locking"):
+        worm_mesh_forces(abs(ft) * 64 / 2000, 64.0, math.degrees(g), 20.0, mu, "wheel")
+    # torques that would pull the flanks apart are refused, naming them
+    with pytest.raises(GearError, match="torque = -50 N m"):
+        worm_torque_forces(-50.0, 1.0, 64.0, 160.0, 3.0)
 
 
 def test_worm_self_locking_wheel_cannot_drive():
