@@ -42,6 +42,7 @@ from trains.relations import FRAME, Relation
 __all__ = [
     "WormAxis",
     "axis_reactions",
+    "moment_about",
     "place_worms",
     "worm_force",
     "worm_mesh",
@@ -203,3 +204,17 @@ def axis_reactions(
     frame = np.column_stack([x, np.cross(axis, x), axis])  # the shaft's x, y, z
     local, _ = bearing_reactions(np.asarray(forces) @ frame, np.asarray(points) @ frame, bearings)
     return local @ frame.T + 0.0
+
+
+def moment_about(point: np.ndarray, force: np.ndarray, axis: np.ndarray) -> float:
+    """The moment of ``force`` (N) at ``point`` (mm, from a point of the axis) about the unit
+    vector ``axis``, N mm; a TrainError where it passes float's range."""
+    p, v = point, force
+    with np.errstate(over="ignore", invalid="ignore"):
+        m = float(p[0] * v[1] - p[1] * v[0] if axis[2] == 1.0 else np.cross(p, v) @ axis)
+    if not np.isfinite(m):
+        raise TrainError(
+            "the moments of the mesh forces overflow the floating-point range (about 1e308); "
+            "valid are torques and positions whose moments stay finite"
+        )
+    return m

@@ -45,7 +45,7 @@ import numpy as np
 from gears import MATERIALS, BevelPair, Gear, GearError
 from gears.display import html_table
 from gears.forces import bevel_pair_forces, centrifugal_force, mesh_forces
-from trains.crossing import axis_reactions, place_worms, worm_mesh, worm_relations
+from trains.crossing import axis_reactions, moment_about, place_worms, worm_mesh, worm_relations
 from trains.errors import TrainError
 from trains.layout import Axes, Mesh, direction, mesh_geometry, place, shared_axes, turn
 from trains.power import PowerFlow, power_flow
@@ -613,7 +613,7 @@ def _members(
                 )
         f = np.sum(forces, axis=0) if forces else np.zeros(3)
         at, axis = crossed.get(axes.find(name), (np.array([*here, 0.0]), np.array([0.0, 0, 1])))
-        moment = sum(float(np.cross(p, v) @ axis) for p, v in zip(points, forces, strict=True))
+        moment = sum(moment_about(p, v, axis) for p, v in zip(points, forces, strict=True))
         other = (
             flow.torques.get(name, 0.0)
             + sum(flow.relations[r.name].torques.get(name, 0.0) for r in forceless)

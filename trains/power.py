@@ -447,9 +447,14 @@ class _Balance:
             a[self.row[m], self.nr + i] = 1.0
         rhs, tq = self.rhs, self.tq
         x, *_ = np.linalg.lstsq(a, rhs, rcond=None)
-        resid = np.abs(a @ x - rhs).max() if len(rhs) else 0.0
-        with np.errstate(over="ignore"):  # a torque near float's largest: the bound is inf
+        with np.errstate(over="ignore", invalid="ignore"):  # a torque near float's largest
+            resid = np.abs(a @ x - rhs).max() if len(rhs) else 0.0
             bound = 1e-9 * max(1.0, abs(tq)) * max(1.0, np.abs(x).max())
+        if np.all(np.isfinite(x)) and not np.isfinite(resid):
+            raise TrainError(
+                f"input_torque = {tq:g}: the train's torques overflow the floating-point range "
+                "(about 1e308); valid is a smaller torque"
+            )
         if not np.all(np.isfinite(x)) or resid > bound:
             raise TrainError(
                 "the torques cannot balance: the train is not statically determined by the"
