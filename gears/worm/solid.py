@@ -344,7 +344,7 @@ class _Wheel:
         zetas = np.asarray(zetas, float)
         new = np.array([z for z in np.unique(zetas) if (float(z), land) not in self._limits])
         if len(new):
-            lim = np.stack([_limits_batch(self, new, s) for s in (1.0, -1.0)], 1)
+            lim = _limits_batch(self, new)
             _tip_land(self, new, lim, land)
             for z, row in zip(new, lim, strict=True):
                 self._limits[(float(z), land)] = row
@@ -389,22 +389,29 @@ def _turn(ax, ay, bx, by):
     return np.arctan2(ax * by - ay * bx, ax * bx + ay * by)
 
 
-def _limits_batch(w: _Wheel, zetas: np.ndarray, side: float) -> np.ndarray:
-    """The limits of one side of the tooth space in each plane ``zetas``, ``(planes, 4)``:
-    ``(t_star, X_star, X_exit, 0)``: the root fillet runs from ``t = 0`` to ``t_star``, the flank
-    from the hob's depth ``X_star`` (its corner's, or where the fillet cuts the flank: undercut)
-    to ``X_exit`` (the tip); or ``(t_x, t_x, t_exit, 1)`` where the flank's contact lies above
-    the tip and the hob's corner alone cuts that side, up to the tip at ``t_exit`` (off the
-    mid-plane, near the faces). Every plane at once (the flank sampled at 401 depths between
-    the hob's corner and the worm's root, then its crossings refined)."""
-    z = np.asarray(zetas, float)
+#: The two sides of a tooth space (the flanks ``+h`` and ``-h``), over ``(..., side, sample)``.
+_SIDES = np.array([[1.0], [-1.0]])
+
+
+def _limits_batch(w: _Wheel, zetas: np.ndarray) -> np.ndarray:
+    """The limits of both sides of the tooth space in each plane ``zetas``, ``(planes, 2, 4)``
+    (side 0 the flank ``+h``, 1 the flank ``-h``): ``(t_star, X_star, X_exit, 0)``, the root
+    fillet from ``t = 0`` to ``t_star`` and the flank from the hob's depth ``X_star`` (its
+    corner's, or where the fillet cuts the flank: undercut) to ``X_exit`` (the tip); or
+    ``(t_x, t_x, t_exit, 1)`` where the flank's contact lies above the tip and the hob's corner
+    alone cuts that side, up to the tip at ``t_exit`` (off the mid-plane, near the faces).
+    Every plane and side at once, a row each: the flank sampled at 401 depths between the
+    hob's corner and the worm's root, then its crossings refined."""
+    planes = np.asarray(zetas, float)
+    z = np.concatenate([planes, planes])
+    side = np.repeat([1.0, -1.0], len(planes))
     rho_tip = w.tip(z)
     x_t = w.corner_depth(z)
     # up to the worm's root cylinder; past the axis's line, over the far side of the worm
     x_hi = np.where(np.abs(z) < w.rf, -np.sqrt(np.maximum(w.rf**2 - z**2, 0.0)), -x_t)
     g = np.linspace(0.0, 1.0, 401)
     xs = x_t[:, None] + (x_hi - x_t)[:, None] * g
-    ex, ey, _ = w.flank(z[:, None], xs, side)
+    ex, ey, _ = w.flank(z[:, None], xs, side[:, None])
     rho = np.hypot(ex, ey)
     above = rho > rho_tip[:, None]
     short = ~np.any(above, axis=1)
@@ -434,7 +441,7 @@ def _limits_batch(w: _Wheel, zetas: np.ndarray, side: float) -> np.ndarray:
     fc = first[c]
 
     def radius(d):
-        x, y, _ = w.flank(z[c], d, side)
+        x, y, _ = w.flank(z[c], d, side[c])
         return np.hypot(x, y)
 
     x_exit = _exits(radius, xs[c, fc - 1], xs[c, fc], rho_tip[c])
@@ -443,9 +450,9 @@ def _limits_batch(w: _Wheel, zetas: np.ndarray, side: float) -> np.ndarray:
     cut = (k[c] > 0) | (way[c] * t_c[c] < 0.0)
     if np.any(cut):
         u = c[cut]
-        out[u, 1], out[u, 0] = _undercut(w, z[u], side, xs[u], ex[u], ey[u], rho[u], k[u],
+        out[u, 1], out[u, 0] = _undercut(w, z[u], side[u], xs[u], ex[u], ey[u], rho[u], k[u],
                                           first[u], way[u], x_exit[cut])  # fmt: skip
-    return out
+    return out.reshape(2, len(planes), 4).transpose(1, 0, 2)
 
 
 def _undercut(w: _Wheel, z, side, xs, ex, ey, rho, k, first, way, x_exit):
@@ -457,7 +464,7 @@ def _undercut(w: _Wheel, z, side, xs, ex, ey, rho, k, first, way, x_exit):
     radius to the other: bracketed on the samples, then found by false position."""
     zc = z[:, None]
     t = way[:, None] * w.fillet_reach(zc, rho)
-    tx, ty = w.trochoid(zc, t, side)
+    tx, ty = w.trochoid(zc, t, side[:, None])
     turn = _turn(tx, ty, ex, ey)
     idx = np.arange(xs.shape[1])
     lo = np.maximum(np.minimum(k, first - 1), 0)
@@ -473,9 +480,9 @@ def _undercut(w: _Wheel, z, side, xs, ex, ey, rho, k, first, way, x_exit):
         sign = np.where(turn[h, jh] <= 0.0, 1.0, -1.0)
 
         def gap(dd):
-            fx, fy, _ = w.flank(z[h], dd, side)
+            fx, fy, _ = w.flank(z[h], dd, side[h])
             ft = way[h] * w.fillet_reach(z[h], np.hypot(fx, fy))
-            return sign * _turn(*w.trochoid(z[h], ft, side), fx, fy)
+            return sign * _turn(*w.trochoid(z[h], ft, side[h]), fx, fy)
 
         d[h] = _exits(gap, xs[h, jh], xs[h, jh + 1], 0.0)
     d = np.minimum(np.maximum(d, xs[:, 0]), x_exit)
@@ -490,18 +497,14 @@ def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> Non
     pieces move there (``lim``, ``(planes, 2, 4)``, in place)."""
     z = np.asarray(zetas, float)[:, None]
     # the tooth's width at the tip from the ends of both sides: most planes are not pointed
-    (xr, yr), (xl, yl) = (w.upper(z, side, lim[:, k], np.ones(1)) for k, side in
-                          enumerate((1.0, -1.0)))  # fmt: skip
-    thin = (w.angle(xr, yr) + w.pitch - w.angle(xl, yl))[:, 0] * w.tip(z[:, 0]) < land
+    ends = w.angle(*w.upper(z[:, :, None], _SIDES, lim, np.ones(1)))[..., 0]
+    thin = (ends[:, 0] + w.pitch - ends[:, 1]) * w.tip(z[:, 0]) < land
     if not np.any(thin):
         return
     c = np.flatnonzero(thin)
-    g = np.linspace(0.0, 1.0, 401)
-    curves = []
-    for k, side in enumerate((1.0, -1.0)):
-        x, y = w.upper(z[c], side, lim[c, k], g)
-        curves.append((np.hypot(x, y), w.angle(x, y)))
-    (rho_r, a_r), (rho_l, a_l) = curves
+    x, y = w.upper(z[c][:, :, None], _SIDES, lim[c], np.linspace(0.0, 1.0, 401))
+    rho, ang = np.hypot(x, y), w.angle(x, y)
+    (rho_r, rho_l), (a_r, a_l) = rho.transpose(1, 0, 2), ang.transpose(1, 0, 2)
     at = np.full(len(z), np.nan)
     for n, i in enumerate(c):
         lo = max(rho_r[n, 0], rho_l[n, 0])
@@ -524,17 +527,14 @@ def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> Non
     pointed = np.flatnonzero(np.isfinite(at))
     if len(pointed) == 0:
         return
-    zp = z[pointed]
-    for k, side in enumerate((1.0, -1.0)):
-        rows = lim[pointed, k].copy()
+    zp, rows = z[pointed][:, :, None], lim[pointed]
 
-        def radius(b, rows=rows, side=side):
-            r = rows.copy()
-            r[:, 2] = b
-            x, y = w.upper(zp, side, r, np.ones((1, 1)))
-            return np.hypot(x[:, 0], y[:, 0])
+    def radius(b):
+        r = rows.copy()
+        r[..., 2] = b
+        return np.hypot(*w.upper(zp, _SIDES, r, np.ones(1)))[..., 0]
 
-        lim[pointed, k, 2] = _exits(radius, rows[:, 1], rows[:, 2], at[pointed])
+    lim[pointed, :, 2] = _exits(radius, rows[..., 1], rows[..., 2], at[pointed][:, None])
 
 
 class _Plan:
@@ -557,16 +557,13 @@ class _Plan:
     def fillets(self, g=None):
         """The root fillets, ``(planes, side, samples, 2)``, from the root."""
         g = self.fillet if g is None else g
-        z = self.zetas[:, None]
-        return np.stack([np.stack(self.w.trochoid(z, self.limits[:, k, :1] * g, side), -1)
-                         for k, side in enumerate((1.0, -1.0))], 1)  # fmt: skip
+        z = self.zetas[:, None, None]
+        return np.stack(self.w.trochoid(z, self.limits[..., :1] * g, _SIDES), -1)
 
     def flanks(self, g=None):
         """The upper pieces (flanks), ``(planes, side, samples, 2)``, up to the tip."""
         g = self.flank if g is None else g
-        z = self.zetas[:, None]
-        return np.stack([np.stack(self.w.upper(z, side, self.limits[:, k], g), -1)
-                         for k, side in enumerate((1.0, -1.0))], 1)  # fmt: skip
+        return np.stack(self.w.upper(self.zetas[:, None, None], _SIDES, self.limits, g), -1)
 
     def arcs(self):
         """The root and tip arcs in each plane: ``((start, end), (start, end))`` angles and
