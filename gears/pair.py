@@ -527,7 +527,7 @@ class GearPair:
         contacts: tuple[int, int] = (1, 1), idler: tuple[bool, bool] = (False, False),
         misalignment: float | None = None, root: str = "auto",
         root_roughness: float | None = None, scuffing: Oil | None = None,
-        welding_factor: float = 1.0, **factors,
+        welding_factor: float = 1.0, edition: int = 2019, **factors,
     ) -> Rating | SpectrumRating:  # fmt: skip
         """ISO 6336 method B rating against pitting and tooth-root breakage (docs/rating.md).
 
@@ -581,6 +581,10 @@ class GearPair:
         welding_factor : float
             X_W of the flanks for the scuffing temperatures (1: case-carburized, as the FZG
             test gears).
+        edition : {2019, 2006}
+            The edition of ISO 6336-1/-2/-3 (:data:`gears.rating.iso6336.EDITIONS`; they differ
+            in ISO 6336-3's Y_F and Y_beta, docs/rating.md): 2006 is the edition of
+            ISO/TR 6336-30:2017's worked examples.
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
             replaces the computed one (:data:`gears.rating.iso6336.FACTORS`); ``K_Hbeta`` and
@@ -615,7 +619,8 @@ class GearPair:
                        sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
                        contacts=contacts, idler=idler, misalignment=misalignment, root=root,
                        root_roughness=root_roughness, scuffing=scuffing,
-                       welding_factor=welding_factor, **factors)  # fmt: skip
+                       welding_factor=welding_factor, edition=edition,
+                       **factors)  # fmt: skip
         if spectrum is not None:
             if torque is not None or speed is not None:
                 raise GearError("give either torque and speed or spectrum=, not both")

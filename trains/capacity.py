@@ -102,8 +102,9 @@ def rating(
         :class:`gears.rating.spectrum.SpectrumRating` (Miner's sums, equivalent safeties, lives).
     **options
         Passed to :meth:`gears.GearPair.rating` (``life``, ``quality``, ``roughness``,
-        ``root_roughness``, ``oil_viscosity``, ``application_factor``, factors such as
-        ``K_v=1.0``).
+        ``root_roughness``, ``oil_viscosity``, ``application_factor``, ``edition`` (of
+        ISO 6336-1/-2/-3, 2019 or 2006; bevel meshes are rated by ISO 10300 whatever it is),
+        factors such as ``K_v=1.0``).
 
     Returns
     -------
@@ -190,7 +191,8 @@ def rating(
                 f"({pair.face_width:g} mm)"
             )
         try:
-            if is_bevel:  # ISO 10300 method B1 (the face width is the pair's)
+            if is_bevel:  # ISO 10300 method B1 (the face width is the pair's; no edition=)
+                kw.pop("edition", None)
                 out[r.name] = pair.rating(t1, n1, mat, contacts=contacts, idler=idler, **kw,
                                           **bevel)  # fmt: skip
             else:

@@ -29,6 +29,7 @@ from gears.rating.bending import (
     form_factors,
     helix_factor_root,
     internal_root_form,
+    load_distribution_factor,
     load_point,
     notch_sensitivity_factor,
     root_form,
@@ -284,18 +285,23 @@ def _root(q, a, mats, given, xp):
     """The Y factors of the gears alone (ISO 6336-3): form, stress correction, helix, deep
     tooth, rim, notch sensitivity, surface, size, mean stress."""
     m, pa = q["m"], a["pa"]
+    edition = int(a["edition"])
+    ean = q["eps_alpha"] / q["cbb2"]
+    # the 2019 edition's Y_F carries f_eps (ISO 6336-3:2019 §6.2), the 2006 edition's none
+    q["f_eps"] = load_distribution_factor(q["eps_beta"], ean) if edition == 2019 else 1.0
     for i, mat in ((1, mats[0]), (2, mats[1])):
         Y_F, Y_S, q[f"q_s{i}"] = form_factors(q[f"s_Fn{i}"], q[f"rho_F{i}"], q[f"h_Fe{i}"],
                                               q[f"alpha_Fen{i}"], m, pa)  # fmt: skip
-        q[f"Y_F{i}"], q[f"Y_S{i}"] = given(f"Y_F{i}", Y_F), given(f"Y_S{i}", Y_S)
+        q[f"Y_F{i}"], q[f"Y_S{i}"] = given(f"Y_F{i}", Y_F * q["f_eps"]), given(f"Y_S{i}", Y_S)
         q[f"Y_B{i}"] = given(f"Y_B{i}", 1.0)
         delta = notch_sensitivity_factor(q[f"q_s{i}"], mat.slip_layer)
         q[f"Y_deltarelT{i}"] = given(f"Y_deltarelT{i}", delta)
         q[f"Y_RrelT{i}"] = given(f"Y_RrelT{i}", root_surface_factor(6.0 * a["Ra_root"], mat.code))
         q[f"Y_X{i}"] = given(f"Y_X{i}", root_size_factor(m, mat.code))
         q[f"Y_M{i}"] = given(f"Y_M{i}", _where(a[f"idler{i}"], 0.7, 1.0))
-    q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], xp.degrees(q["beta"])))
-    q["Y_DT"] = given("Y_DT", deep_tooth_factor(a["Q"], q["eps_alpha"] / q["cbb2"]))
+    q["Y_beta"] = given("Y_beta", helix_factor_root(q["eps_beta"], xp.degrees(q["beta"]),
+                                                    edition))  # fmt: skip
+    q["Y_DT"] = given("Y_DT", deep_tooth_factor(a["Q"], ean))
     q["Y_ST"] = given("Y_ST", 2.0)
 
 

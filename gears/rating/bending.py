@@ -2,7 +2,8 @@
 
 The load point on the virtual spur gear and the root form by method B (§6.2: the chord s_Fn at
 the 30 deg tangent, the fillet radius rho_F, the moment arm h_Fe; the rack approximation for an
-internal gear), the form factors Y_F and Y_S (§6.2, §7.2), the helix factor Y_beta (§8), the
+internal gear), the form factors Y_F and Y_S (§6.2, §7.2) with the load distribution influence
+factor f_eps of the 2019 edition's Y_F, the helix factor Y_beta (§8, of either edition), the
 deep tooth factor Y_DT (§10), and the factors of the allowable stress: the relative notch
 sensitivity Y_deltarelT (§13), the relative surface factor Y_RrelT (§14) and the size factor Y_X
 (§15). Every function takes scalars or arrays (broadcasting);
@@ -26,6 +27,7 @@ __all__ = [
     "form_factors",
     "helix_factor_root",
     "internal_root_form",
+    "load_distribution_factor",
     "load_point",
     "notch_sensitivity_factor",
     "root_form",
@@ -177,15 +179,44 @@ def form_factors(s_fn, rho_f, h_fe, alpha_fen, module, pressure_angle):
     return _out(yf), _out(ys), _out(qs)
 
 
-def helix_factor_root(eps_beta, helix_angle):
-    """Y_beta = 1 - min(eps_beta, 1) min(beta, 30 deg) / 120 deg (ISO 6336-3 §8; beta in
-    degrees).
+def load_distribution_factor(eps_beta, eps_alpha_n):
+    """The load distribution influence factor f_eps of ISO 6336-3:2019 §6.2 (Formulae (10) to
+    (14)), the factor on the 2019 edition's Y_F (the 2006 edition has none: 1), from the overlap
+    ratio eps_beta and the virtual contact ratio ``eps_alpha_n = eps_alpha / cos^2 beta_b``:
 
-    >>> round(float(helix_factor_root(1.083, 15.8)), 4)   # ISO/TR 6336-30 Ex. 1: 0.8683
+    * spur (eps_beta = 0): 1 for eps_alpha_n < 2, else 0.7;
+    * eps_beta >= 1: ``eps_alpha_n^-0.5``;
+    * 0 < eps_beta < 1: ``sqrt(1 - eps_beta + eps_beta / eps_alpha_n)`` for eps_alpha_n < 2,
+      else ``sqrt((1 - eps_beta) / 2 + eps_beta / eps_alpha_n)``.
+
+    >>> round(float(load_distribution_factor(0.6, 1.65 / 0.84231)), 3)   # beta 25 deg: 0.840
+    0.84
+    """
+    xp = of(eps_beta, eps_alpha_n)
+    low = eps_alpha_n < 2.0
+    part = _where(low, 1.0 - eps_beta, (1.0 - eps_beta) / 2.0) + eps_beta / eps_alpha_n
+    between = xp.sqrt(xp.maximum(part, 0.0))
+    full = 1.0 / xp.sqrt(eps_alpha_n)
+    spur = _where(low, 1.0, 0.7)
+    return _out(_where(eps_beta <= 0.0, spur, _where(eps_beta >= 1.0, full, between)))
+
+
+def helix_factor_root(eps_beta, helix_angle, edition=2019):
+    """Y_beta (ISO 6336-3 §8; beta in degrees) of the 2019 edition (Formula (66)),
+    ``(1 - min(eps_beta, 1) min(beta, 30 deg) / 120 deg) / cos^3 min(beta, 30 deg)``, or of the
+    2006 edition (``edition=2006``), the same without the division by cos^3 beta.
+
+    >>> round(float(helix_factor_root(1.083, 15.8, 2006)), 4)   # ISO/TR 6336-30 Ex. 1: 0.8683
     0.8683
+    >>> round(float(helix_factor_root(1.0, 25.0)), 3)   # ISO 6336-3:2019 Formula (66): 1.063
+    1.063
     """
     xp = of(eps_beta, helix_angle)
-    return 1.0 - xp.minimum(eps_beta, 1.0) * xp.minimum(xp.abs(helix_angle), 30.0) / 120.0
+    beta = xp.minimum(xp.abs(helix_angle), 30.0)
+    y = 1.0 - xp.minimum(eps_beta, 1.0) * beta / 120.0
+    if edition == 2006:
+        return y
+    return y / xp.cos(xp.radians(beta)) ** 3
 
 
 def deep_tooth_factor(quality, eps_alpha_n):

@@ -18,7 +18,15 @@ from gears.errors import GearError
 from gears.rating._arrays import number, one_number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating.bending import load_point
-from gears.rating.iso6336 import FACTORS, QUANTITIES, OnePair, PairRatings, rate_again, rate_one
+from gears.rating.iso6336 import (
+    FACTORS,
+    QUANTITIES,
+    OnePair,
+    PairRatings,
+    check_edition,
+    rate_again,
+    rate_one,
+)
 from gears.rating.materials import material
 from gears.rating.root import measure_root
 from gears.rating.scuffing import Oil, ScuffingRatings, pair_scuffing
@@ -117,6 +125,12 @@ class Rating:
 
     def _get(self, name: str) -> float:
         return float(getattr(self.values, name))
+
+    @property
+    def edition(self) -> int:
+        """The edition of ISO 6336-1/-2/-3 the rating follows, 2019 or 2006
+        (:data:`gears.rating.iso6336.EDITIONS`)."""
+        return int(self.settings.get("edition", 2019))
 
     @property
     def safety_pitting(self) -> tuple[float, float]:
@@ -237,7 +251,8 @@ class Rating:
         return Report(out)
 
     def _summary(self) -> list[str]:
-        """The pair, the operating conditions and the root-form routes, one line each."""
+        """The pair, the operating conditions, the root-form routes and the edition, one line
+        each."""
         st = self.settings
         g1, g2 = self.pair.g1, self.pair.g2
         kind = "internal" if getattr(g2, "internal", False) else "external"
@@ -248,6 +263,7 @@ class Rating:
             f"{st.get('speed', float('nan')):g} rpm, life {st.get('life', float('nan')):g} h, "
             f"materials {st.get('materials', '?')}",
             f"root form: gear 1 {self.roots[0]}, gear 2 {self.roots[1]}",
+            f"edition: ISO 6336-1/-2/-3:{self.edition}",
         ]
 
     def __str__(self) -> str:
@@ -347,7 +363,8 @@ def rate_pair(
     pair, torque, speed, material_="case-carburized", *, life=20000.0, application_factor=1.0,
     quality=6, roughness=1.0, oil_viscosity=220.0, tip_relief=None, sigma_Hlim=None,
     sigma_Flim=None, face_width=None, contacts=(1, 1), idler=(False, False), misalignment=None,
-    root="auto", root_roughness=None, scuffing=None, welding_factor=1.0, **factors,
+    root="auto", root_roughness=None, scuffing=None, welding_factor=1.0, edition=2019,
+    **factors,
 ) -> Rating:  # fmt: skip
     """The :class:`Rating` of ``pair`` (see :meth:`gears.GearPair.rating` for the parameters).
 
@@ -356,6 +373,7 @@ def rate_pair(
     :func:`gears.rating.iso6336.rate_pairs` (a planet, a sun meshing several planets).
     """
     _one_pair(locals(), factors)
+    edition = check_edition(edition)
     if scuffing is not None and not isinstance(scuffing, Oil):
         raise GearError(
             f"scuffing = {scuffing!r}; give the oil: gears.rating.scuffing.Oil(fzg_stage=..., "
@@ -409,7 +427,7 @@ def rate_pair(
         protuberance=(g1.rack.protuberance, g2.rack.protuberance),
         tip_shortening=pair.tip_shortening,
         tip_alteration=(pair.g1.tip_alteration, pair.g2.tip_alteration), root=tuple(roots),
-        factors=factors, errors="raise", threads=1, geometry=pair._geometry,
+        factors=factors, edition=edition, errors="raise", threads=1, geometry=pair._geometry,
     )  # fmt: skip
     settings = {
         "torque": float(torque), "speed": float(speed), "life": float(life), "face_width": b,
@@ -417,7 +435,7 @@ def rate_pair(
         "application_factor": application_factor, "quality": quality, "roughness": roughness,
         "root_roughness": roughness if root_roughness is None else root_roughness,
         "oil_viscosity": oil_viscosity, "tip_relief": tip_relief, "contacts": contacts,
-        "idler": idler, "given": dict(factors),
+        "idler": idler, "given": dict(factors), "edition": edition,
     }  # fmt: skip
     scuff = None
     if scuffing is not None:

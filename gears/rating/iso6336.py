@@ -9,8 +9,9 @@ life curves (:mod:`gears.rating.life`) is a numpy function over arrays (broadcas
 arguments, names the factors and the results (:data:`FACTORS`, :data:`QUANTITIES`,
 :data:`REASONS`, :class:`PairRatings`) and runs the calculation in blocks on threads.
 
-The calculation (references are to the clauses of ISO 6336-1/-2/-3:2006 and the reference card
-``rating.md``; ISO/TR 6336-30 Example 1 is the test):
+The calculation (references are to the clauses of ISO 6336-1/-2/-3, whose 2019 and 2006
+editions (``edition=``, :data:`EDITIONS`) differ here in ISO 6336-3's Y_F and Y_beta only, and to
+the reference card ``rating.md``; ISO/TR 6336-30 Example 1, by the 2006 parts, is the test):
 
 * nominal load ``F_t = 2000 T1 / d1`` (N; T1 in N m, d1 in mm), pitch-line speed
   ``v = pi d1 n1 / 60000`` (m/s, n1 the speed of gear 1 relative to its carrier);
@@ -28,7 +29,9 @@ The calculation (references are to the clauses of ISO 6336-1/-2/-3:2006 and the 
   for internal pairs), ``sigma_H = Z_B,D sigma_H0 sqrt(K_gamma K_A K_v K_Hbeta K_Halpha)``,
   ``sigma_HP = sigma_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X`` (for S_Hmin = 1),
   ``S_H = sigma_HP / sigma_H``;
-* bending (ISO 6336-3): ``sigma_F0 = F_t/(b m_n) Y_F Y_S Y_beta Y_B Y_DT``,
+* bending (ISO 6336-3): ``sigma_F0 = F_t/(b m_n) Y_F Y_S Y_beta Y_B Y_DT`` (by the 2019
+  edition Y_F times the load distribution influence factor f_eps of §6.2 and Y_beta over
+  cos^3 beta, Clause 8),
   ``sigma_F = sigma_F0 K_gamma K_A K_v K_Fbeta K_Falpha``,
   ``sigma_FP = sigma_Flim Y_ST Y_NT Y_deltarelT Y_RrelT Y_X Y_M`` (S_Fmin = 1),
   ``S_F = sigma_FP / sigma_F``; Y_F and Y_S by method B from the 30 deg tangent on the root
@@ -65,15 +68,33 @@ from gears.rating.bending import load_point
 from gears.rating.materials import Material, material
 
 __all__ = [
+    "EDITIONS",
     "FACTORS",
     "QUANTITIES",
     "REASONS",
     "OnePair",
     "PairRatings",
+    "check_edition",
     "rate_again",
     "rate_one",
     "rate_pairs",
 ]
+
+#: The editions of ISO 6336-1/-2/-3 a rating follows (``edition=``), the default first. They
+#: differ in ISO 6336-3's Y_F (the 2019 edition's load distribution influence factor f_eps) and
+#: Y_beta (its 1/cos^3 beta); docs/rating.md, "The edition".
+EDITIONS = (2019, 2006)
+
+
+def check_edition(edition: Any) -> int:
+    """``edition`` as one of :data:`EDITIONS`, or a GearError naming it and the valid ones."""
+    if type(edition) in (int, np.int64) and int(edition) in EDITIONS:
+        return int(edition)
+    raise GearError(
+        f"edition = {edition!r}; valid are 2019 (ISO 6336-1/-2/-3:2019, the default) and 2006 "
+        "(ISO 6336-1/-2/-3:2006)"
+    )
+
 
 # --- the factors and their clauses: (symbol, per gear, what, clause) --------------------------
 #: Every factor :func:`rate_pairs` reports and accepts as an override (``K_v=1.0``,
@@ -130,6 +151,7 @@ QUANTITIES = (
     ("h_Fe", True, "bending moment arm", "mm"),
     ("alpha_Fen", True, "load direction angle", "deg"),
     ("q_s", True, "notch parameter s_Fn / (2 rho_F)", ""),
+    ("f_eps", False, "load distribution in Y_F (2019; 2006: 1)", ""),
 )
 
 #: Why a rating cannot be given (the ``reason`` code of :class:`PairRatings`; 0 = rated).
@@ -238,6 +260,7 @@ class PairRatings(NamedTuple):
     alpha_Fen2: np.ndarray
     q_s1: np.ndarray
     q_s2: np.ndarray
+    f_eps: np.ndarray
     valid: np.ndarray
     reason: np.ndarray
 
@@ -306,7 +329,7 @@ def rate_pairs(
     misalignment: ArrayLike | None = None, addendum: ArrayLike = 1.0,
     dedendum: ArrayLike = 1.25, root_radius: ArrayLike | None = None, protuberance: ArrayLike = 0.0,
     tip_shortening: ArrayLike = True, tip_alteration: Any = (0.0, 0.0), root: Any = (None, None),
-    factors: dict[str, Any] | None = None, errors: str = "raise",
+    factors: dict[str, Any] | None = None, edition: int = 2019, errors: str = "raise",
     fields: Sequence[str] | None = None, threads: int | None = None, geometry: Any = None,
 ) -> PairRatings:  # fmt: skip
     """ISO 6336 method B pitting and bending ratings of many pairs at once (arrays broadcast).
@@ -361,6 +384,10 @@ def rate_pairs(
     factors : dict, optional
         Factors that replace the computed ones (``{"K_v": 1.0, "K_Hbeta": 1.16}``; names of
         :data:`FACTORS`, a pair for per-gear factors); later factors follow from the given ones.
+    edition : {2019, 2006}
+        The edition of ISO 6336-1/-2/-3 (:data:`EDITIONS`): 2019 multiplies Y_F by its load
+        distribution influence factor f_eps and divides Y_beta by cos^3 beta (ISO 6336-3:2019
+        §6.2, Clause 8); 2006 is the edition ISO/TR 6336-30:2017 works by.
     errors : {"raise", "mask"}
         A pair outside a method's validity (:data:`REASONS`) raises a GearError naming it and
         the reason ("raise"), or gets ``valid = False`` with NaN factors and zero safeties.
@@ -391,7 +418,8 @@ def rate_pairs(
     >>> from gears.rack import BasicRack
     >>> r = rate_pairs(17, 103, 8, 100, 9000, 360, x1=0.14522, helix_angle=15.8, quality=5,
     ...                life=50000, oil_viscosity=320, tip_relief=0.070, dedendum=1.4,
-    ...                root_radius=0.39, tip_shortening=False, factors={"K_Hbeta": 1.16})
+    ...                root_radius=0.39, tip_shortening=False, factors={"K_Hbeta": 1.16},
+    ...                edition=2006)
     >>> round(float(r.S_H1), 4), round(float(r.S_H2), 4)   # TR: 1.0285, 1.0870
     (1.0284, 1.0868)
     """
@@ -668,6 +696,7 @@ def _checked(args, m1, m2):
         "Ra": _number("roughness", roughness, _MIN_RA, 100.0, low_open=False),
         "Ra_root": _number("root_roughness", root_roughness, _MIN_RA, 100.0, low_open=False),
         "nu40": _number("oil_viscosity", args["oil_viscosity"], 0.0, 1e5),
+        "edition": np.float64(check_edition(args["edition"])),
         "c1": _number("contacts", c1, 1.0, 1e3, low_open=False),
         "c2": _number("contacts", c2, 1.0, 1e3, low_open=False),
         "idler1": np.asarray(i1, bool),

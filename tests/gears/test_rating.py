@@ -37,8 +37,9 @@ def _tr_pair():
 def _tr_rating(**extra):
     # T1 9000 N m, n1 360 rpm, life 50 000 h, grade 5, Ra 1.0 um, nu_40 320, C_a 70 um,
     # 16MnCr5 case-carburized (sigma_Hlim 1500, E 206 000, nu 0.3), K_Hbeta = 1.16 as in the TR
+    # (the TR works by ISO 6336-1/-2/-3:2006: edition=2006)
     kw = dict(life=50000, quality=5, roughness=1.0, oil_viscosity=320, tip_relief=0.070,
-              K_Hbeta=1.16)  # fmt: skip
+              K_Hbeta=1.16, edition=2006)  # fmt: skip
     kw.update(extra)
     return _tr_pair().rating(9000, 360, "case-carburized", **kw)
 
@@ -84,7 +85,8 @@ def test_tr_example_vectorised_route_is_the_class_route():
     r = _tr_rating()
     v = rate_pairs(17, 103, 8, 100, 9000, 360, x1=0.14522, helix_angle=15.8, quality=5,
                    life=50000, oil_viscosity=320, tip_relief=0.070, dedendum=1.4,
-                   root_radius=0.39, tip_shortening=False, factors={"K_Hbeta": 1.16})  # fmt: skip
+                   root_radius=0.39, tip_shortening=False, factors={"K_Hbeta": 1.16},
+                   edition=2006)  # fmt: skip
     for name in v._fields:
         assert float(getattr(v, name)) == pytest.approx(float(getattr(r.values, name)), rel=1e-12)
 

@@ -107,6 +107,21 @@ def rating_arguments(parser: argparse.ArgumentParser, required: bool = True, *,
     )  # fmt: skip
 
 
+def edition_argument(parser: argparse.ArgumentParser) -> None:
+    """``--edition``: the edition of ISO 6336-1/-2/-3 an ISO 6336 rating follows (``rate``,
+    ``planetary``; :data:`gears.rating.iso6336.EDITIONS`), read by :func:`edition_option`."""
+    parser.add_argument(
+        "--edition", type=int, choices=(2019, 2006), default=None,
+        help="edition of ISO 6336-1/-2/-3 (default 2019; 2006 is the edition of ISO/TR "
+        "6336-30:2017's examples): they differ in the root's Y_F and Y_beta",
+    )  # fmt: skip
+
+
+def edition_option(args: argparse.Namespace) -> dict:
+    """``{"edition": ...}`` of :func:`edition_argument`'s option, the default (2019) filled in."""
+    return {"edition": 2019 if args.edition is None else args.edition}
+
+
 def rating_given(args: argparse.Namespace) -> list[str]:
     """The rating options given on the command line (other than --torque and --speed)."""
     return [f"--{k.replace('_', '-')}" for k in RATING_DEFAULTS if getattr(args, k) is not None]

@@ -22,6 +22,8 @@ from trains.cli._common import CHECK_FAILED, OK, PAIR_NAMES, build_pair, pair_ar
 from trains.cli._rating import (
     RATING_NAMES,
     SCUFFING_NAMES,
+    edition_argument,
+    edition_option,
     rating_arguments,
     rating_minimums,
     rating_options,
@@ -43,6 +45,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "rating)",
     )
     rating_arguments(parser, required=False)
+    edition_argument(parser)
     parser.add_argument(
         "--spectrum", default=None, metavar="FILE",
         help="load spectrum (ISO 6336-6): a file of bins, one a line: torque N m, speed rpm, "
@@ -56,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
     from gears.rating.spectrum import read_spectrum
 
     pair = build_pair(args)
-    options = rating_options(args)
+    options = rating_options(args) | edition_option(args)
     options |= scuffing_options(args, options["oil_viscosity"])
     try:
         if args.spectrum is not None:

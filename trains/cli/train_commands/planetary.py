@@ -29,6 +29,8 @@ from trains.cli._common import (
 from trains.cli._rating import (
     RATING_NAMES,
     SCUFFING_NAMES,
+    edition_argument,
+    edition_option,
     rating_arguments,
     rating_given,
     rating_minimums,
@@ -108,6 +110,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="mesh tolerance of --scene and --animate, mm (default 0.02)",
     )  # fmt: skip
     rating_arguments(parser, required=False)
+    edition_argument(parser)
     scuffing_arguments(parser)
 
 
@@ -135,6 +138,9 @@ def run(args: argparse.Namespace) -> int:
     if args.torque is None and args.speed is None and rating_given(args):
         raise TrainError(f"{rating_given(args)[0]} is a rating condition: it applies with "
                          "--torque and --speed only")  # fmt: skip
+    if args.torque is None and args.speed is None and args.edition is not None:
+        raise TrainError("--edition is a rating condition: it applies with --torque and --speed "
+                         "only")  # fmt: skip
     if args.torque is None and args.speed is None and args.fzg_stage is not None:
         raise TrainError("--fzg-stage is a rating condition (scuffing): it applies with --torque "
                          "and --speed only")  # fmt: skip
@@ -157,7 +163,7 @@ def run(args: argparse.Namespace) -> int:
     ok = stage.check().ok
     ratings = None
     if args.torque is not None:
-        options = rating_options(args)
+        options = rating_options(args) | edition_option(args)
         options |= scuffing_options(args, options["oil_viscosity"])
         ratings = stage.rating(args.torque, args.speed, args.face_width, **options)
     print(stage.describe())
