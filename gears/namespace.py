@@ -108,6 +108,23 @@ def _logical_not(x):
     return not x
 
 
+class _Quiet:
+    """``errstate`` of Python floats: nothing to silence (they raise or give inf and NaN)."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+
+_QUIET = _Quiet()
+
+
+def _errstate(**_):
+    return _QUIET
+
+
 def _interp(x, xp, fp):
     """``np.interp`` of one number on knots ``xp`` (ascending) with values ``fp``."""
     if x != x:
@@ -150,4 +167,5 @@ SCALAR = SimpleNamespace(
     where=_where,
     logical_not=_logical_not,
     interp=_interp,
+    errstate=_errstate,
 )

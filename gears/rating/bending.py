@@ -172,7 +172,7 @@ def form_factors(s_fn, rho_f, h_fe, alpha_fen, module, pressure_angle):
     if xp is np:
         m, s, r, h = (np.asarray(v, float) for v in (m, s, r, h))
     yf = 6.0 * (h / m) * xp.cos(alpha_fen) / ((s / m) ** 2 * xp.cos(xp.radians(pressure_angle)))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with xp.errstate(divide="ignore", invalid="ignore"):
         big_l = s / h
         qs = s / (2.0 * r)
         ys = (1.2 + 0.13 * big_l) * xp.power(qs, 1.0 / (1.21 + 2.3 / big_l))
@@ -240,7 +240,7 @@ def notch_sensitivity_factor(q_s, slip_layer):
     """
     xt = 1.2  # chi*_T = (1 + 2 * 2.5) / 5
     xp = of(q_s, slip_layer)
-    with np.errstate(invalid="ignore"):
+    with xp.errstate(invalid="ignore"):
         return (1.0 + xp.sqrt(slip_layer * (1.0 + 2.0 * xp.maximum(q_s, 0.0)) / 5.0)) / (
             1.0 + xp.sqrt(slip_layer * xt)
         )

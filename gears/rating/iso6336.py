@@ -489,7 +489,10 @@ def _raise_invalid(result, a=None, tip_shortening=True):
     """A GearError naming the first pair without a rating (row and reason), if any; a pair
     without method B's load point (reason 4) also names its pressure angle and the range where
     that point exists (from the checked arguments ``a``)."""
-    if not np.all(result.valid):
+    valid = result.valid
+    if type(valid) is np.bool_ and valid:  # one pair, rated
+        return
+    if not np.all(valid):
         bad = np.ravel(~np.asarray(result.valid))
         i = int(np.argmax(bad))
         where = f" (row {i})" if np.ndim(result.valid) else ""
@@ -637,8 +640,11 @@ def _all_arguments(args):
                 if len(_GEOMETRY) >= 256:
                     _GEOMETRY.clear()
                 _GEOMETRY[values] = geo
-    base = [np.asarray(args[k], float) for k in names[:7]] + [np.asarray(args["addendum"], float)]
-    base.append(np.asarray(args["internal"], bool))
+    # one pair's numbers stay Python numbers (gears.namespace.SCALAR); arrays become arrays
+    base = [float(v) if type(v) is int or type(v) is float else np.asarray(v, float)
+            for v in (*(args[k] for k in names[:7]), args["addendum"])]  # fmt: skip
+    internal = args["internal"]
+    base.append(internal if type(internal) is bool else np.asarray(internal, bool))
     a.update(zip(("z1", "z2", "m", "x1", "x2", "pa", "helix", "ha", "internal"), base, strict=True))
     a["alpha_wt"] = np.asarray(geo.working_pressure_angle)
     a["k"] = np.asarray(geo.tip_alteration)
@@ -655,7 +661,7 @@ def _per_module(a):
         valid = f"0 <= tip_relief <= {_MAX_RELIEF:g} m_n"
         checks.append(("C_a", "tip_relief", a["C_a"] <= _MAX_RELIEF * m, valid))
     for key, name, good, valid in checks:
-        if np.all(good):
+        if good if type(good) is np.bool_ or type(good) is bool else np.all(good):
             continue
         shape = np.shape(good)
         i = int(np.argmax(~np.ravel(good)))

@@ -89,7 +89,7 @@ def single_pair_factors(z1, z2, da1, da2, db1, db2, alpha_wt, eps_alpha, eps_bet
     l1 = xp.sqrt(xp.maximum((da1 / db1) ** 2 - 1.0, 0.0))
     l2 = xp.sqrt(xp.maximum((da2 / db2) ** 2 - 1.0, 0.0))
     tw = xp.tan(xp.radians(alpha_wt))
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with xp.errstate(invalid="ignore", divide="ignore"):
         m1 = tw / xp.sqrt((l1 - 2 * pi / z1) * (l2 - s * (ea - 1.0) * 2 * pi / z2))
         m2 = tw / xp.sqrt((l2 - s * 2 * pi / z2) * (l1 - (ea - 1.0) * 2 * pi / z1))
     eb = xp.minimum(eb, 1.0)

@@ -188,10 +188,12 @@ def before_after(tree: str, rounds: int) -> None:
     here = str(pathlib.Path(__file__).resolve().parents[2])
     trees = {"after": here, "before": str(pathlib.Path(tree).resolve())}
     best: dict[str, dict[str, float]] = {k: {} for k in trees}
+    extra = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
     load0 = os.getloadavg()
     for _ in range(rounds):
         for name, path in trees.items():
-            env = dict(os.environ, PYTHONPATH=path)
+            # the tree first; the rest of the path stays (python-gearbox's environment)
+            env = dict(os.environ, PYTHONPATH=os.pathsep.join([path, *extra]))
             out = subprocess.run([sys.executable, __file__, "--worker"], env=env, check=True,
                                  capture_output=True, text=True).stdout  # fmt: skip
             for route, sec in json.loads(out.splitlines()[-1]).items():
