@@ -16,6 +16,11 @@ import traceback
 
 
 def run(block: dict, workdir: str, conn) -> None:
+    # what a block prints is recorded below and sent back; the process's own output goes nowhere
+    # (the block processes inherit the terminal of pytest, outside its capture)
+    quiet = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(quiet, 1)
+    os.dup2(quiet, 2)
     os.chdir(workdir)
     os.environ["MPLBACKEND"] = "Agg"
     root = pathlib.Path(block["root"])
