@@ -69,7 +69,7 @@ RING_RIM = 3.5
 #: (besides torque, speed, material, life and face_width); any other keyword is a factor
 RATING_OPTIONS = (
     "application_factor", "quality", "roughness", "oil_viscosity", "tip_relief", "sigma_Hlim",
-    "sigma_Flim", "contacts", "idler", "misalignment", "root", "root_roughness",
+    "sigma_Flim", "contacts", "idler", "misalignment", "root", "root_roughness", "edition",
 )  # fmt: skip
 #: the options GearPair.rating takes as one number each (a search applies them to every pair)
 _ONE_NUMBER = ("application_factor", "quality", "roughness", "oil_viscosity", "tip_relief",

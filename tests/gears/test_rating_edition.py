@@ -266,3 +266,29 @@ def test_cli_edition(capsys, monkeypatch):
     code, _, err = _cli(capsys, "planetary", 21, 36, 93, "--planets", 3, "--module", 2,
                         "--edition", 2006)  # fmt: skip
     assert code == 2 and "--edition" in err
+    # a search for a load takes it too, and only with --torque
+    search = ("search", "pairs", "--ratio", 2, "--module", 2, "--teeth", 17, 40, "--helix", 20)
+    code, _, err = _cli(capsys, *search, "--edition", 2006)
+    assert code == 2 and "--edition" in err
+    code, out, _ = _cli(capsys, *search, "--torque", 60, "--speed", 1500, "--face-width", 20,
+                        "--edition", 2006, "--top", 1)  # fmt: skip
+    assert code == 0 and "S_F" in out
+
+
+def test_a_rated_search_takes_the_edition():
+    """A search for a load rates its helical candidates in the edition given, and each row
+    rated on its own (GearPair.rating in that edition) has the row's safeties."""
+    from gears.search.engine import pairs
+
+    space = dict(ratio=2.0, module=2, teeth=(17, 40), shifts=0.0, helix=20.0, torque=60.0,
+                 speed=1500.0, face_width=[20.0], top=None, progress=False)  # fmt: skip
+    old = pairs(**space, edition=2006)
+    new = pairs(**space)
+    # eps_beta = 20 sin 20 deg / (2 pi) = 1.09: the 2019 root stresses are the lower here
+    assert 0 < len(old) <= len(new)
+    for i in range(min(len(old), 3)):
+        r = old.rating(i)
+        assert r.edition == 2006
+        assert r.safety_bending == pytest.approx((old["S_F1"][i], old["S_F2"][i]), rel=1e-9)
+    with pytest.raises(GearError, match="edition = 2020"):
+        pairs(**space, edition=2020)

@@ -25,7 +25,7 @@ import sys
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 
-from trains.cli._rating import RATING_NAMES, rating_arguments, rating_given
+from trains.cli._rating import RATING_NAMES, edition_argument, rating_arguments, rating_given
 from trains.cli._text import wrap
 from trains.cli._types import (
     bounded,
@@ -481,8 +481,9 @@ def face_widths(text: str) -> list[float]:
 
 def load_arguments(parser: argparse.ArgumentParser, what: str) -> None:
     """The options of a design searched for a load: :func:`rating_arguments` (none required)
-    and ``--face-width``."""
+    and ``--face-width``, and :func:`edition_argument`."""
     rating_arguments(parser, required=False)
+    edition_argument(parser)
     parser.add_argument(
         "--face-width", "-b", type=face_widths, nargs="+", default=None, metavar="B",
         help=f"face widths to choose from, mm (10 15 20, or LOW:HIGH:STEP like 10:40:5); with "
@@ -501,6 +502,8 @@ def load_options(args: argparse.Namespace, widths_alone: bool = False) -> dict:
     if args.face_width is not None:
         widths = sorted({w for ws in args.face_width for w in ws})
     given = rating_given(args) + (["--speed"] if args.speed is not None else [])
+    if args.edition is not None:
+        given.append("--edition")
     if widths is not None and not widths_alone:
         given.append("--face-width")
     if args.torque is None:
@@ -519,7 +522,7 @@ def load_options(args: argparse.Namespace, widths_alone: bool = False) -> dict:
     if minimums:
         out["min_safety"] = minimums
     for key in ("material", "life", "quality", "roughness", "root_roughness", "oil_viscosity",
-                "tip_relief", "application_factor"):  # fmt: skip
+                "tip_relief", "application_factor", "edition"):  # fmt: skip
         if getattr(args, key) is not None:
             out[key] = getattr(args, key)
     return out

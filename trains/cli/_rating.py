@@ -24,6 +24,7 @@ RATING_NAMES = {
     "material": "--material",
     "min_pitting": "--min-pitting",
     "min_bending": "--min-bending",
+    "edition": "--edition",
 }
 
 
