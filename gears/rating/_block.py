@@ -416,13 +416,13 @@ def _methods(q, a, xp):
     for z, x, da, db, inside in ((q["z1"], q["x1"], da1, db1, False),
                                  (q["z2"], q["x2"], da2, db2, internal)):  # fmt: skip
         thick = tooth_thickness(xp.maximum(da, db), z, m, x, pa, a["helix"], inside, signed=True)
-        pointed |= (da >= db) & xp.logical_not(thick > 0)
+        pointed = pointed | (da >= db) & xp.logical_not(thick > 0)
     below_base = xp.logical_not((da1 >= db1) & (da2 >= db2))
     root_ok = qs_ok = True
     for i in (1, 2):
-        root_ok &= (q[f"s_Fn{i}"] > 0) & (q[f"h_Fe{i}"] > 0) & (q[f"rho_F{i}"] > 0)
+        root_ok = root_ok & (q[f"s_Fn{i}"] > 0) & (q[f"h_Fe{i}"] > 0) & (q[f"rho_F{i}"] > 0)
         if f"o_Y_S{i}" not in a:
-            qs_ok &= (q[f"q_s{i}"] >= 1.0) & (q[f"q_s{i}"] < 8.0)
+            qs_ok = qs_ok & (q[f"q_s{i}"] >= 1.0) & (q[f"q_s{i}"] < 8.0)
     checks = [
         q["eps_alpha"] >= 1.0,
         xp.logical_not(below_base),

@@ -78,6 +78,7 @@ __all__ = [
     "rate_again",
     "rate_one",
     "rate_pairs",
+    "rate_reduced",
 ]
 
 #: The editions of ISO 6336-1/-2/-3 a rating follows (``edition=``), the default first. They
@@ -461,9 +462,21 @@ def rate_again(one: OnePair, torque, speed, life, application_factor, load_shari
     return result
 
 
-def _rate(args):
+def rate_reduced(reduce, chunk: int = _CHUNK, **arguments: Any) -> PairRatings:
+    """:func:`rate_pairs` (its arguments by name) where each block of whole rows of the first
+    axis hands its dict of quantities (:func:`gears.rating._block.rate_block`: ``fields``
+    broadcast to the block and masked) to ``reduce(q, i0, i1)`` (its rows i0:i1) as soon as it
+    is rated, on the block's thread, instead of storing them: a caller that reduces the last
+    axis (a spectrum's bins) reads each block while it is in the cache. Blocks of about
+    ``chunk`` ratings; the last axis is never cut. Returns ``valid`` and ``reason`` only (the
+    other fields None) and raises as :func:`rate_pairs`."""
+    return _rate({**_DEFAULTS, **arguments}, reduce, chunk)[0]
+
+
+def _rate(args, reduce=None, chunk=_CHUNK):
     """:func:`rate_pairs` on ``args`` (every argument by name), with the :class:`OnePair` of
-    one pair of plain numbers (else None)."""
+    one pair of plain numbers (else None); ``reduce`` and ``chunk`` as for
+    :func:`rate_reduced`."""
     errors, fields = args["errors"], args["fields"]
     if errors not in ("raise", "mask"):
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
@@ -477,7 +490,7 @@ def _rate(args):
     a, mats, key = _arguments(args)
     threads = args["threads"]
     result, gears = _blocks(a, mats, fields, default_threads() if threads is None else threads,
-                            key)  # fmt: skip
+                            key, reduce, chunk)  # fmt: skip
     if errors == "raise":
         _raise_invalid(result, a, args["tip_shortening"])
     if gears is None:
@@ -727,32 +740,35 @@ def _checked(args, m1, m2):
     return a
 
 
-def _blocks(a, mats, fields, threads, key=None):
+def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK):
     """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of about
-    ``_CHUNK`` pairs (whole rows of the first axis) on ``threads`` threads, as
-    :class:`PairRatings`, with one pair's gears' part (else None)."""
-    if key is not None and all(type(a[k]) is float for k in _LOAD_KEYS):
+    ``chunk`` pairs (whole rows of the first axis) on ``threads`` threads, as
+    :class:`PairRatings`, with one pair's gears' part (else None); each block handed to
+    ``reduce`` when given (:func:`rate_reduced`)."""
+    if key is not None and reduce is None and all(type(a[k]) is float for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
         shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
     n = math.prod(shape)
-    wanted = {*fields, "valid", "reason"}  # the others are None
-    if n < 2 * _CHUNK:
+    wanted = {"valid", "reason"} if reduce else {*fields, "valid", "reason"}  # others None
+    if n < 2 * chunk:
         one = n == 1 and shape == ()
         res = rate_block(a, mats, fields, _GEARS if one else None, key)
         if one:
             return _one_result(res, fields)
+        if reduce is not None:
+            reduce(res, 0, shape[0] if shape else 1)
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
         ), None
     out_shape, inner = shape, n // shape[0]
-    if len(shape) > 1 and inner > _CHUNK:  # rows too long for a block: the pairs one by one
+    if len(shape) > 1 and inner > chunk and reduce is None:  # rows too long: pairs one by one
         a = {k: v if np.ndim(v) == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
         shape, inner = (n,), 1
     # blocks of whole rows along the first axis: an argument constant along it (a spectrum's
     # bins, shape (bins,) beside pairs of shape (pairs, 1)) is not copied to each row, and the
     # gears' part runs once per pair, not once per pair and bin
-    rows = max(1, _CHUNK // inner)
+    rows = max(1, chunk // inner)
     lead = len(shape)
     part_of = {k: np.ndim(v) == lead and np.shape(v)[0] > 1 for k, v in a.items()}
     store = {f: np.empty(shape, bool if f == "valid" else int if f == "reason" else float)
@@ -764,6 +780,8 @@ def _blocks(a, mats, fields, threads, key=None):
         res = rate_block(part, mats, fields)
         for f, column in store.items():
             column[i0:i1] = res[f]
+        if reduce is not None:
+            reduce(res, i0, i1)
 
     blocks = list(itertools.pairwise([*range(0, shape[0], rows), shape[0]]))
     if threads == 1:

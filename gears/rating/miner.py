@@ -141,7 +141,8 @@ def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
     some. A bisection over the bins' knots, sorted (3 per bin), finds the stretch where D
     reaches 1; there D = C + A_1 exp(-a_1 x) + A_2 exp(-a_2 x): the answer is the stretch's
     start where D jumps over 1, in closed form where one segment is loaded, and by Newton's
-    method on the convex ln D from the stretch's end otherwise.
+    method on the convex ln D otherwise, from the stretch's end or the nearer root of one
+    term alone (D >= 1 at both). The search's bounds: D(0), and D >= N_L past a static knot.
 
     >>> round(float(equivalent_safety([1000.0], [1000.0], [5e7], 4)), 9)   # one bin at its knot
     1.0
@@ -183,58 +184,121 @@ def _solve(z, lc, knots):
             the masked terms stay out of exp's slow underflow)."""
             return np.maximum(above_knee - _hinge(x - e1, a1, a2), -700.0)
 
-        def damage(x):
-            """D at x (left-continuous: a bin at one of its knots is on the side below)."""
-            terms = np.exp(log_terms(x)) * (x > e2)
-            static = x > e0
-            if static.any():
-                terms = np.where(static, n_l, terms)
-            return terms.sum(axis=0)
-
+        damage = _damage_at(e2, e1, e0, n_l, above_knee, a1, a2)
         d0 = damage(np.zeros(n))
         # the first stretch (knots[k-1], knots[k]] at whose end D >= 1 (k = 3 bins: beyond the
         # last knot, every bin static)
-        sorted_knots = np.sort(np.concatenate([e2, e1, e0]).T, axis=1)
+        sorted_knots = np.concatenate([e2.T, e1.T, e0.T], axis=1, dtype=float)
+        sorted_knots = np.ascontiguousarray(sorted_knots)  # the rows' knots side by side
+        sorted_knots.sort(axis=1)
         last = sorted_knots.shape[1]
-        rows = np.arange(n)
-        lo, hi = np.zeros(n, int), np.full(n, last)
-        while np.any(lo < hi):
-            mid = (lo + hi) // 2
-            reached = (damage(sorted_knots[rows, np.minimum(mid, last - 1)]) >= 1.0) | (mid == last)
+        flat = sorted_knots.ravel()
+        offsets = np.arange(n) * last
+        # two bounds for free: D(0) = d0 is known, and D >= N_L >= 1 past a bin's static knot
+        below_zero = (sorted_knots < 0.0).sum(axis=1)  # knots x < 0 (D <= d0 there)
+        static_at = np.where(n_l >= 1.0, e0, np.inf).min(axis=0)
+        lo = np.where(d0 < 1.0, (sorted_knots <= 0.0).sum(axis=1), 0)
+        hi = np.where(d0 >= 1.0, below_zero, last)
+        hi = np.minimum(hi, (sorted_knots <= static_at[:, None]).sum(axis=1))
+        while True:
             searching = lo < hi
+            if not searching.any():
+                break
+            mid = (lo + hi) >> 1
+            at = flat[offsets + np.minimum(mid, last - 1)]
+            reached = (damage(at, exact=False) >= 1.0) | (mid == last)
             hi = np.where(searching & reached, mid, hi)
             lo = np.where(searching & ~reached, mid + 1, lo)
-        end = np.where(hi < last, sorted_knots[rows, np.minimum(hi, last - 1)], np.inf)
-        start = np.where(hi > 0, sorted_knots[rows, np.maximum(hi - 1, 0)], -np.inf)
+        end = np.where(hi < last, flat[offsets + np.minimum(hi, last - 1)], np.inf)
+        start = np.where(hi > 0, flat[offsets + np.maximum(hi - 1, 0)], -np.inf)
         # on the stretch D = C + A1 exp(-a1 w) + A2 exp(-a2 w), w = x - its end: each bin on
         # its segment there
         ref = np.where(np.isfinite(end), end, 0.0)
-        sloped = (end > e2) & (end <= e0)
+        static = end > e0
+        sloped = (end > e2) & ~static
+        upper = end > e1
         t = np.exp(log_terms(ref))
-        c = np.where(end > e0, n_l, 0.0).sum(axis=0)
-        A1 = (t * (sloped & (end > e1))).sum(axis=0)
-        A2 = (t * (sloped & (end <= e1))).sum(axis=0)
+        c = (n_l * static).sum(axis=0)
+        A1 = (t * (sloped & upper)).sum(axis=0)
+        A2 = (t * (sloped & ~upper)).sum(axis=0)
         a1, a2 = (np.broadcast_to(a, (n,)) for a in (a1, a2))
         w0 = start - ref
         jumped = c + A1 * np.exp(-a1 * w0) + A2 * np.exp(-a2 * w0) >= 1.0  # at its start
         left = np.log1p(-np.minimum(c, 1.0))  # ln(1 - C)
-        w = np.where(A1 > 0, (np.log(A1) - left) / a1, (np.log(A2) - left) / a2)
+        w1, w2 = (np.log(A1) - left) / a1, (np.log(A2) - left) / a2
+        w = np.where(A1 > 0, w1, w2)
         both = np.flatnonzero(~jumped & (A1 > 0) & (A2 > 0) & np.isfinite(end))
-        wb = np.zeros(both.size)
-        for _ in range(60):  # ln D is convex: Newton from the end comes down monotonically
-            if both.size == 0:
-                break
-            t1 = A1[both] * np.exp(-a1[both] * wb)
-            t2 = A2[both] * np.exp(-a2[both] * wb)
-            d = c[both] + t1 + t2
-            step = np.log(d) * d / (-a1[both] * t1 - a2[both] * t2)
-            wb = wb - step
-            w[both] = wb
-            more = np.abs(step) > 1e-15 * (1.0 + np.abs(wb + ref[both]))
-            both, wb = both[more], wb[more]
+        if both.size:
+            w[both] = _newton(c[both], A1[both], A2[both], a1[both], a2[both], ref[both],
+                              np.minimum(np.minimum(w1[both], w2[both]), 0.0))  # fmt: skip
         x = np.where(jumped, start, np.where(np.isfinite(end) | (c >= 1.0), ref + w, np.inf))
         x = np.where(np.isnan(x), np.inf, x)
     return d0, np.exp(np.clip(x, math.log(1e-4), math.log(1e4)))
+
+
+def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
+    """``damage(x)``: Miner's sum at x per row, bins on the first axis (left-continuous: a bin
+    at one of its knots is on the side below). ``exact=False`` where x lies at or below the
+    static knot of every bin of N_L >= 1 (the search's bound): only a bin of less than one
+    cycle can be static there. On its sloped segment a bin's ln damage is one of the S-N
+    curve's two log-log lines, written in x through the bin's knee e1 (the lower of the two
+    where the curve is steeper below the knee), so that a search step is a few passes over
+    buffers kept for it."""
+    below = above_knee + a2 * e1  # ln damage = below - a2 x below the knee
+    above = above_knee + a1 * e1  # and above - a1 x above it
+    floor = np.full(e1.shape, -700.0)  # exp's slow underflow kept out
+    if np.all(np.greater_equal(a1, a2)):
+        pick = np.minimum
+    elif np.all(np.less_equal(a1, a2)):
+        pick = np.maximum
+    else:
+        pick = None
+    terms, other, mask = np.empty(e1.shape), np.empty(e1.shape), np.empty(e1.shape, bool)
+
+    short = bool(np.any(n_l < 1.0))  # a bin of less than one cycle
+
+    def damage(x, exact=True):
+        np.subtract(below, a2 * x, out=terms)
+        np.subtract(above, a1 * x, out=other)
+        if pick is None:
+            np.copyto(terms, other, where=np.greater(x, e1))
+        else:
+            pick(terms, other, out=terms)
+        np.maximum(terms, floor, out=terms)
+        np.exp(terms, out=terms)
+        np.greater(x, e2, out=mask)
+        np.multiply(terms, mask, out=terms)
+        if not exact and not short:
+            return terms.sum(axis=0)  # below every static knot of N_L >= 1 (the search's bound)
+        np.greater(x, e0, out=mask)
+        if mask.any():  # a static bin: N_L (its line's value replaced, not corrected)
+            static = n_l * mask
+            np.multiply(terms, np.logical_not(mask, out=mask), out=terms)
+            np.add(terms, static, out=terms)
+        return terms.sum(axis=0)
+
+    return damage
+
+
+def _newton(c, A1, A2, a1, a2, ref, w):
+    """The root w of C + A1 exp(-a1 w) + A2 exp(-a2 w) = 1 (both terms loaded) by Newton's
+    method on the convex ln D from ``w``, where D >= 1: it comes down monotonically."""
+    out = np.empty_like(w)
+    rows = np.arange(w.size)
+    for _ in range(60):
+        t1 = A1 * np.exp(-a1 * w)
+        t2 = A2 * np.exp(-a2 * w)
+        d = c + t1 + t2
+        step = np.log(d) * d / (-a1 * t1 - a2 * t2)
+        w = w - step
+        more = np.abs(step) > 1e-15 * (1.0 + np.abs(w + ref))
+        if 4 * np.count_nonzero(more) < more.size:  # the rows that converged set aside
+            out[rows] = w
+            if not more.any():
+                return out
+            c, A1, A2, a1, a2, ref, w, rows = (v[more] for v in (c, A1, A2, a1, a2, ref, w, rows))
+    out[rows] = w
+    return out
 
 
 def check_spectrum(spectrum: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -284,15 +348,14 @@ class SpectrumRatings(NamedTuple):
 
 def _combine(r, code1: int, code2: int, total_hours: float, threads: int = 1) -> SpectrumRatings:
     """Miner's sums, equivalent safeties and lives from the bins' stresses (bins on the last
-    axis of every field of ``r``); the four gears and modes on ``threads`` threads."""
+    axis of every field of the mapping ``r``); the four gears and modes on ``threads``
+    threads."""
 
     def one(job):
         mode, s, p, f, sym, i, code = job
-        stress = np.asarray(getattr(r, f"{s}{i}"), float)
-        strength = np.asarray(getattr(r, f"{p}{i}"), float) / np.asarray(
-            getattr(r, f"{f}{i}"), float
-        )
-        cycles = np.asarray(getattr(r, f"N_L{i}"), float)
+        stress = np.asarray(r[f"{s}{i}"], float)
+        strength = np.asarray(r[f"{p}{i}"], float) / np.asarray(r[f"{f}{i}"], float)
+        cycles = np.asarray(r[f"N_L{i}"], float)
         d, safety = _damage_and_safety(stress, strength, cycles, code, mode)
         with np.errstate(divide="ignore"):
             life = np.where(d > 0, np.minimum(total_hours / d, LIFE_CAP), LIFE_CAP)
@@ -302,7 +365,7 @@ def _combine(r, code1: int, code2: int, total_hours: float, threads: int = 1) ->
                                           ("bending", "sigma_F", "sigma_FP", "Y_NT", "F"))
             for i, code in ((1, code1), (2, code2))]  # fmt: skip
     out = {}
-    if threads > 1 and np.size(r.sigma_H1) >= _THREADED:
+    if threads > 1 and np.size(r["sigma_H1"]) >= _THREADED:
         for part in _pool(threads).map(one, jobs):
             out |= part
     else:

@@ -31,9 +31,8 @@ from numpy.typing import ArrayLike
 
 from gears.errors import GearError
 from gears.geometry import reference_diameter, root_diameter
-from gears.meshing import default_threads
 from gears.rating._arrays import shown
-from gears.rating.iso6336 import FACTORS, PairRatings, rate_pairs
+from gears.rating.iso6336 import FACTORS, PairRatings, rate_pairs, rate_reduced
 from gears.rating.losses import pair_losses
 from gears.rating.materials import Material, material
 from gears.rating.miner import SpectrumRatings, _combine, check_spectrum
@@ -353,6 +352,7 @@ def smallest_width(load: Load, widths, z1, z2, module, x1=0.0, x2=0.0, pressure_
 _PER_PAIR = ("x1", "x2", "pressure_angle", "helix_angle", "internal", "application_factor",
              "quality", "roughness", "oil_viscosity", "load_sharing", "misalignment",
              "tip_relief", "addendum", "root_roughness")  # fmt: skip
+_SPECTRUM_CHUNK = 1 << 14  # ratings (pairs x bins) a block: its temporaries stay off mmap
 _NEEDED = ("sigma_H1", "sigma_H2", "sigma_HP1", "sigma_HP2", "Z_NT1", "Z_NT2", "sigma_F1",
            "sigma_F2", "sigma_FP1", "sigma_FP2", "Y_NT1", "Y_NT2", "N_L1", "N_L2")  # fmt: skip
 
@@ -400,14 +400,26 @@ def rate_spectrum(
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
     torques, speeds, hours = check_spectrum(spectrum)
     extra = {k: _trailing(v) if k in _PER_PAIR else v for k, v in options.items()}
-    r = rate_pairs(_trailing(z1), _trailing(z2), _trailing(module), _trailing(face_width),
-                   torques, speeds, life=hours, fields=_NEEDED, errors=errors,
-                   **extra)  # fmt: skip
     m1, m2 = _materials(options.get("material", "case-carburized"))
-    threads = options.get("threads")
-    threads = default_threads() if threads is None else threads
-    out = _combine(r, m1.code, m2.code, float(hours.sum()), threads)
-    valid = np.all(r.valid, axis=-1)
+    total = float(hours.sum())
+    parts = {}
+
+    def reduce(q, i0, i1):
+        """Miner's rule on a block of pairs as soon as its bins are rated (in the cache)."""
+        parts[i0] = (_combine(q, m1.code, m2.code, total), np.all(q["valid"], axis=-1))
+
+    # pairs one a row, the bins on the last axis; blocks of whole rows (pairs given as numbers:
+    # one row of at most MAX_BINS ratings, one block)
+    rate_reduced(reduce, _SPECTRUM_CHUNK, z1=_trailing(z1), z2=_trailing(z2),
+                 module=_trailing(module), face_width=_trailing(face_width), torque=torques,
+                 speed=speeds, life=hours, fields=_NEEDED, errors=errors, **extra)  # fmt: skip
+    blocks = [parts[i] for i in sorted(parts)]
+    if len(blocks) == 1:
+        out, valid = blocks[0]
+    else:
+        out = SpectrumRatings(*(np.concatenate([b[0][j] for b in blocks])
+                                for j in range(len(SpectrumRatings._fields) - 1)))  # fmt: skip
+        valid = np.concatenate([b[1] for b in blocks])
     if np.all(valid):
         return out
     masked = {k: np.where(valid, v, np.nan if k.startswith("D_") else 0.0)

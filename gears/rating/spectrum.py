@@ -273,6 +273,6 @@ def spectrum_rating(ratings: Sequence, materials: Any,
                       for f in _Bins._fields))  # fmt: skip
     m1, m2 = _materials(materials)
     hours = float(sum(h for _, _, h in spectrum))
-    values = _combine(stacked, m1.code, m2.code, hours)
+    values = _combine(stacked._asdict(), m1.code, m2.code, hours)
     bins = tuple((float(t), float(n), float(h)) for t, n, h in spectrum)
     return SpectrumRating(tuple(ratings), bins, values)
