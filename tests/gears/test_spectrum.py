@@ -106,6 +106,26 @@ def test_arrays_match_the_pair():
     assert float(arr.L_F1[0]) == pytest.approx(spec.life["bending"][0], rel=1e-9)
 
 
+def test_blocks_and_a_grid_match_each_pair(monkeypatch):
+    # the array path in many blocks of a 2-D grid of pairs, on two threads (each block's bins
+    # reduced by Miner's rule as it is rated), against each pair rated alone (GearPair)
+    from gears.rating import sizing
+
+    monkeypatch.setattr(sizing, "_SPECTRUM_CHUNK", 8)  # one row of 4 pairs x 2 bins a block
+    bins = [(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)]
+    z1, z2 = np.array([18, 20, 23])[:, None], np.array([45, 50, 61, 70])[None, :]
+    arr = rate_spectrum(z1, z2, 3, 30, bins, threads=2)
+    assert arr.S_H1.shape == (3, 4)
+    for i, j in ((0, 0), (1, 2), (2, 3)):
+        pair = GearPair(Gear(int(z1[i, 0]), 3, face_width=30), Gear(int(z2[0, j]), 3,
+                                                                     face_width=30))  # fmt: skip
+        spec = pair.rating(spectrum=bins)
+        assert float(arr.S_H1[i, j]) == pytest.approx(spec.safety_pitting[0], rel=1e-9)
+        assert float(arr.S_F2[i, j]) == pytest.approx(spec.safety_bending[1], rel=1e-9)
+        assert float(arr.D_H1[i, j]) == pytest.approx(spec.damage["pitting"][0], rel=1e-9)
+        assert float(arr.L_F1[i, j]) == pytest.approx(spec.life["bending"][0], rel=1e-9)
+
+
 def test_spectrum_report_and_display():
     spec = _pair().rating(spectrum=[(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)])
     report = spec.check(min_pitting=1.0, min_bending=1.4)
