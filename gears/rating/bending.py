@@ -221,13 +221,14 @@ def helix_factor_root(eps_beta, helix_angle, edition=2019):
 
 def deep_tooth_factor(quality, eps_alpha_n):
     """Y_DT (ISO 6336-3 §10): for accuracy grade Q <= 4 and eps_alpha_n > 2.05,
-    ``-0.666 eps_alpha_n + 2.366`` (0.9 above 2.5); 1 otherwise.
+    ``-0.666 eps_alpha_n + 2.366`` (0.7 above 2.5, where the line reaches 0.701); 1 otherwise
+    (as IACS UR M56 Rev.4 §M56.3.7 reproduces it).
 
     >>> float(deep_tooth_factor(4, 2.6)), float(deep_tooth_factor(6, 2.6))
-    (0.9, 1.0)
+    (0.7, 1.0)
     """
     q, ean = quality, eps_alpha_n
-    return _where((q <= 4) & (ean > 2.05), _where(ean > 2.5, 0.9, -0.666 * ean + 2.366), 1.0)
+    return _where((q <= 4) & (ean > 2.05), _where(ean > 2.5, 0.7, -0.666 * ean + 2.366), 1.0)
 
 
 def notch_sensitivity_factor(q_s, slip_layer):

@@ -121,7 +121,7 @@ def test_2019_differs_from_2006_by_f_eps_and_cos3_beta_only():
     eb, ea = new.quantities["eps_beta"], new.quantities["eps_alpha"]
     f = _f_eps(eb, _eps_alpha_n(ea, 15.8))
     assert new.quantities["f_eps"] == pytest.approx(f, rel=1e-12)
-    assert old.quantities["f_eps"] == 1.0
+    assert old.quantities["f_eps"] == pytest.approx(1.0, abs=1e-12)
     c3 = math.cos(math.radians(15.8)) ** 3
     for name in ("K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "Z_H", "Z_eps", "Z_beta", "Z_NT",
                  "Y_S", "Y_NT", "Y_deltarelT", "Y_DT"):  # fmt: skip
@@ -139,7 +139,7 @@ def test_spur_gears_below_two_pairs_rate_alike():
     p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
     a, b = p.rating(200, 1500, edition=2006), p.rating(200, 1500)
     assert b.safety_bending == pytest.approx(a.safety_bending, rel=1e-12)
-    assert b.quantities["f_eps"] == 1.0
+    assert b.quantities["f_eps"] == pytest.approx(1.0, abs=1e-12)
 
 
 def test_a_deep_spur_tooth_takes_0_7():
@@ -292,3 +292,18 @@ def test_a_rated_search_takes_the_edition():
         assert r.safety_bending == pytest.approx((old["S_F1"][i], old["S_F2"][i]), rel=1e-9)
     with pytest.raises(GearError, match="edition = 2020"):
         pairs(**space, edition=2020)
+
+
+def test_deep_tooth_factor_above_2_5_is_0_7():
+    """Y_DT (ISO 6336-3 §10, either edition) for grade <= 4: 2.366 - 0.666 eps_alpha_n on
+    2.05 ... 2.5 and 0.7 above (IACS UR M56 Rev.4 §M56.3.7, which reproduces it); the line
+    reaches 0.701 at 2.5, so the factor is continuous there to 0.001."""
+    from gears.rating.bending import deep_tooth_factor
+
+    assert float(deep_tooth_factor(4, 2.6)) == pytest.approx(0.7)
+    assert float(deep_tooth_factor(3, 3.5)) == pytest.approx(0.7)
+    below, above = deep_tooth_factor(4, 2.5), deep_tooth_factor(4, 2.5 + 1e-9)
+    assert float(below) == pytest.approx(0.701, abs=1e-9)
+    assert abs(float(below) - float(above)) < 2e-3
+    assert float(deep_tooth_factor(4, 2.05)) == pytest.approx(1.0, abs=1e-12)
+    assert float(deep_tooth_factor(5, 2.6)) == pytest.approx(1.0, abs=1e-12)
