@@ -266,6 +266,10 @@ def test_cli_edition(capsys, monkeypatch):
     code, _, err = _cli(capsys, "planetary", 21, 36, 93, "--planets", 3, "--module", 2,
                         "--edition", 2006)  # fmt: skip
     assert code == 2 and "--edition" in err
+    code, out, _ = _cli(capsys, "planetary", 21, 36, 93, "--planets", 3, "--module", 2,
+                        "--face-width", 20, "--torque", 120, "--speed", 1500,
+                        "--edition", 2006)  # fmt: skip
+    assert code in (0, 1) and "ISO 6336-1/-2/-3:2006" in out
     # a search for a load takes it too, and only with --torque
     search = ("search", "pairs", "--ratio", 2, "--module", 2, "--teeth", 17, 40, "--helix", 20)
     code, _, err = _cli(capsys, *search, "--edition", 2006)

@@ -194,7 +194,8 @@ def _print_ratings(ratings: dict, args: argparse.Namespace, options: dict) -> bo
     """The rating of every mesh as a table and its checks; True when every safety holds."""
     print(
         f"ISO 6336 method B rating: {args.torque:g} N m at {args.speed:g} rpm on the sun (ring "
-        f"fixed), {options['material']}, life {options['life']:g} h"
+        f"fixed), {options['material']}, life {options['life']:g} h, ISO 6336-1/-2/-3:"
+        f"{next(iter(ratings.values())).edition}"
     )
     head = ("mesh", "T1 [N m]", "n1 [rpm]", "K_gamma", "S_H1", "S_H2", "S_F1", "S_F2")
     oiled = args.fzg_stage is not None
