@@ -9,16 +9,20 @@ self-locking (14.18): the hoist holds its load without a brake.
 
 Design task: pick the worm (z1 1, q 16, m_x 4) and the wheel (z2 40), check the pair, and read
 the efficiency both ways from the train's power flow; then compare a two-start worm of q 10,
-which lifts better but lets the load run back.
+which lifts better but lets the load run back. For the worm's bearings, read the forces of the
+worm mesh under a drum load of 400 N m from the train's loads: the worm's axial force (the
+wheel's tangential force, the largest force of the drive) lifting and lowering, the friction
+against the sliding of whichever member drives.
 """
 
 import math
 
 from gears import Gear, WormPair
-from trains import Train, power_flow
+from trains import Train, loads, power_flow
 
 MU = 0.06  # friction coefficient of bronze on hardened steel, well lubricated
 SPUR = {"pinion-drum": 0.98}  # the spur stage's efficiency (Ozols (14.25) gives about as much)
+DRUM = 400.0  # N m: the load's torque on the drum
 
 
 def hoist(worm: WormPair) -> Train:
@@ -48,6 +52,21 @@ for worm in (
     g, phi = math.radians(worm.lead_angle), math.radians(worm.friction_angle(MU))
     assert abs(up.efficiency - math.tan(g) / math.tan(g + phi) * 0.98) < 1e-9
     assert down.self_locking == (worm.lead_angle <= worm.friction_angle(MU))
+    # the worm mesh's forces under the drum load: lifting, the motor's torque that carries it;
+    # lowering, the drum drives (the wheel drives the worm)
+    motor = DRUM / (abs(float(t.ratio("worm", "drum"))) * up.efficiency)
+    lift = loads(t, "worm", "drum", torque=motor, friction=MU, mesh_efficiency=SPUR)
+    lower = loads(t, "drum", "worm", torque=DRUM, friction=MU, mesh_efficiency=SPUR)
+    for what, ld in (("lifting", lift), ("lowering", lower)):
+        m, w = ld.meshes["worm-wheel"], ld.members["worm"]
+        pushes = w.torque * ld.flow.speeds["worm"] > 0  # the motor supplies power
+        print(f"  {what}: worm thrust {m.axial[0]:.0f} N, radial {m.radial[0]:.0f} N, worm "
+              f"tangential {m.tangential[0]:.1f} N ({m.driver} drives); the motor "
+              f"{'drives' if pushes else 'brakes'} with {abs(w.torque):.3f} N m")  # fmt: skip
+    # DIN 3996 by hand: the wheel's torque (the spur stage's) over d_2 / 2 is the worm's thrust
+    wheel = DRUM * 17 / 68 * 0.98  # lowering: the drum drives the spur stage
+    thrust = 2000 * wheel / worm.wheel_diameter
+    assert abs(lower.meshes["worm-wheel"].axial[0] - thrust) < 1e-9 * thrust
 
 # the worm's efficiency both ways over its lead angle (Ozols (14.15), (14.18)) at this friction:
 # lowering stays at or below zero (self-locking) until the lead angle passes the friction angle
