@@ -221,13 +221,15 @@ class SpectrumRating:
             rows.append((label, *(f"{v:.4g}" for v in values)))
         return rows
 
-    def _summary(self) -> str:
+    def _summary(self, sep: str = ", ") -> str:
         hours = sum(h for _, _, h in self.spectrum)
+        edition = getattr(self.bins[0], "edition", None) if self.bins else None
+        rated = "" if edition is None else f"{sep}bins rated by ISO 6336-1/-2/-3:{edition}"
         return (f"ISO 6336-6 load spectrum: {len(self.spectrum)} bins, {hours:g} h "
-                "(Miner's elementary rule)")  # fmt: skip
+                f"(Miner's elementary rule){rated}")  # fmt: skip
 
     def __str__(self) -> str:
-        lines = [self._summary(), "", f"{'':26s} {'gear 1':>10s} {'gear 2':>10s}"]
+        lines = [self._summary("\n"), "", f"{'':26s} {'gear 1':>10s} {'gear 2':>10s}"]
         lines += [f"{a:26s} {b:>10s} {c:>10s}" for a, b, c in self._rows()]
         lines += ["", f"{'torque N m':>12s} {'speed rpm':>12s} {'hours':>10s} {'S_H1':>8s} "
                   f"{'S_F1':>8s}"]  # fmt: skip

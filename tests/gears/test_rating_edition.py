@@ -179,7 +179,7 @@ def test_rate_pairs_and_the_spectrum_take_the_edition():
     spec = _tr_pair().rating(spectrum=[(9000, 360, 50000)], edition=2006,
                              **{k: v for k, v in TR.items() if k != "life"})  # fmt: skip
     single = _tr_pair().rating(9000, 360, edition=2006, **TR)
-    assert spec.bins[0].edition == 2006
+    assert spec.bins[0].edition == 2006 and "ISO 6336-1/-2/-3:2006" in str(spec)
     assert spec.bins[0].safety_bending == pytest.approx(single.safety_bending, rel=1e-12)
 
 
