@@ -271,20 +271,23 @@ class _Wheel:
         # the space of tooth 0 lies about this angle (the thread's centre at the pitch line)
         self.ref = math.pi / 2.0 - self.screw * math.pi / self.r2
         # the axial section once, as a cubic spline (its error is below 1e-12 mm at this count;
-        # ZI's base cylinder, where the involute starts with h' = 0, stays C1)
-        from scipy.interpolate import CubicSpline
+        # ZI's base cylinder, where the involute starts with h' = 0, stays C1), held with its
+        # derivative as the two columns of one piecewise polynomial (one evaluation for both)
+        from scipy.interpolate import CubicSpline, PPoly
 
         pad = 0.01 * self.m
         r = np.linspace(self.rf - pad, self.rt + pad, 8193)
-        self._spline = CubicSpline(r, np.asarray(pair.axial_profile(r), float))
-        self._slope = self._spline.derivative()
+        spline = CubicSpline(r, np.asarray(pair.axial_profile(r), float))
+        slope = np.vstack([np.zeros((1, spline.c.shape[1])), spline.derivative().c])
+        self._profile = PPoly(np.stack([spline.c, slope], -1), spline.x)
+        # the hob's corner runs on its tip cylinder, where h is one number
+        self.corner_half = float(spline(self.rt))
         self._limits: dict[tuple, np.ndarray] = {}
 
-    def half(self, r):
-        return self._spline(r)
-
-    def slope(self, r):
-        return self._slope(r)
+    def profile(self, r):
+        """The axial half thickness ``h(r)`` and its slope ``dh/dr`` (mm, mm/mm)."""
+        both = self._profile(r)
+        return both[..., 0], both[..., 1]
 
     def tip(self, zeta):
         """The wheel's tip radius in the plane ``zeta``: the throat, at most ``d_e2 / 2``."""
@@ -299,9 +302,8 @@ class _Wheel:
     def flank(self, zeta, depth, side):
         """The wheel's flank conjugate to the hob's at ``depth`` (the worm's own ``X``):
         ``(x, y, u)`` (:func:`gears.worm.envelope.rack_conjugate`)."""
-        r = np.hypot(depth, zeta)
-        x, y, nx, ny = plane_rack(zeta, depth, side, self.half(r), self.slope(r), self.a,
-                                  self.screw)  # fmt: skip
+        x, y, nx, ny = plane_rack(zeta, depth, side, *self.profile(np.hypot(depth, zeta)),
+                                  self.a, self.screw)  # fmt: skip
         return rack_conjugate(x, y, nx, ny, self.r2)
 
     def corner_depth(self, zeta):
@@ -309,8 +311,7 @@ class _Wheel:
 
     def corner(self, zeta, side):
         d = self.corner_depth(zeta)
-        r = np.hypot(d, zeta)
-        x, y, _, _ = plane_rack(zeta, d, side, self.half(r), 0.0, self.a, self.screw)
+        x, y, _, _ = plane_rack(zeta, d, side, self.corner_half, 0.0, self.a, self.screw)
         return x, y
 
     def trochoid(self, zeta, t, side):
@@ -391,6 +392,7 @@ def _turn(ax, ay, bx, by):
 
 #: The two sides of a tooth space (the flanks ``+h`` and ``-h``), over ``(..., side, sample)``.
 _SIDES = np.array([[1.0], [-1.0]])
+_GRID = 201
 
 
 def _limits_batch(w: _Wheel, zetas: np.ndarray) -> np.ndarray:
@@ -409,7 +411,7 @@ def _limits_batch(w: _Wheel, zetas: np.ndarray) -> np.ndarray:
     x_t = w.corner_depth(z)
     # up to the worm's root cylinder; past the axis's line, over the far side of the worm
     x_hi = np.where(np.abs(z) < w.rf, -np.sqrt(np.maximum(w.rf**2 - z**2, 0.0)), -x_t)
-    g = np.linspace(0.0, 1.0, 401)
+    g = np.linspace(0.0, 1.0, _GRID)
     xs = x_t[:, None] + (x_hi - x_t)[:, None] * g
     ex, ey, _ = w.flank(z[:, None], xs, side[:, None])
     rho = np.hypot(ex, ey)

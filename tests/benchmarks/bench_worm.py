@@ -8,12 +8,19 @@ Run: ``python tests/benchmarks/bench_worm.py`` (writes ``tests/benchmarks/result
   and 0.3). The mid-plane conjugate of a ZA worm is the involute of r_2 cos(alpha_x): exact.
 - Timed: ``WormPair.wheel_mesh`` on a new pair each run (nothing cached), the best of three wall
   times (the worm once); the machine's load (``os.getloadavg``) is recorded with each row.
+- Speed against the peer (:func:`speed`): rounds interleaving BOSL2's ``worm_gear()`` (the whole
+  ``openscad`` process, and the same process with BOSL2 included but only a cube drawn: its
+  library's parse), our wheel z2 16, x2 0 at 0.1 mm in this warm process, our whole fresh
+  process (``python -c``: the imports, trimesh's above all, then the wheel) and, where
+  GEARTRAIN_BEFORE names an older tree of this library (``git archive``), the same warm wheel
+  timed by that tree in its own interpreter; the best of each.
 - Mid-plane accuracy: the wheel cut by its mid-plane (manifold3d's slice), the tooth thickness
   on four circles between the root form and the tip against the involute's
   (``gears.geometry.tooth_thickness``): the largest excess and deficit, mm.
 - Off the mid-plane: the contact lines of the worm's helicoid found in 3D by n . v_12 = 0 (the
-  tests' independent reference, tests/gears/test_worm_wheel.py), their signed distances to the
-  wheel's mesh on the working flank (inside the faces and the tip, above the pitch circle).
+  tests' independent reference, tests/gears/test_worm_wheel.py), their exact signed distances to
+  the wheel's mesh on the working flank (inside the faces, 0.1 mm below the tip, above the pitch
+  circle; the tip lowered where a pointed tooth's flanks cross, as the mesh's planes have it).
 - Overlap at zero backlash: the volume the worm and the wheel share in ``WormPair.scene``'s
   placement at four angles (manifold3d), the largest.
 - OpenSCAD + BOSL2 ``worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0,
@@ -64,16 +71,12 @@ def off_plane(w: WormPair, wheel) -> tuple[float, float]:
     import sys
 
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
-    from tests.gears.test_worm_wheel import contact_points, signed_distance
+    from tests.gears.test_worm_wheel import contact_points, signed_distance, working_flank
 
-    a, rk, re2 = w.center_distance, w.throat_radius, w.wheel_outside_diameter / 2.0
     out = []
     for flank in (1.0, -1.0):
-        q = contact_points(w, flank, n_r=30, n_phi=120)
-        rho = np.hypot(q[:, 0], q[:, 1])
-        tip = np.minimum(a - np.sqrt(np.maximum(rk**2 - q[:, 2] ** 2, 0.0)), re2)
-        keep = (np.abs(q[:, 2]) < w.face_width / 2 - 0.2) & (rho < tip - 0.1)
-        out.append(signed_distance(wheel, q[keep & (rho > w.wheel_diameter / 2.0)]))
+        q = working_flank(w, wheel, contact_points(w, flank, n_r=30, n_phi=120))
+        out.append(signed_distance(wheel, q))
     d = np.concatenate(out)
     return float(d.min()), float(d.max())
 
@@ -108,6 +111,102 @@ def run(z2: int, tolerance: float, shift: float = 0.3, face: float | None = None
         "off_plane_min_mm": lo, "off_plane_max_mm": hi, "overlap_mm3": overlap(w, worm, wheel),
         "load_before": load0, "load_after": os.getloadavg()[0],
     }  # fmt: skip
+
+
+def _openscad(source: str) -> float | None:
+    """Seconds of one whole ``openscad -o x.stl`` process on ``source`` (None without OpenSCAD
+    or BOSL2)."""
+    import shutil
+    import subprocess
+    import tempfile
+
+    exe, lib = shutil.which("openscad"), os.environ.get("OPENSCADPATH", "/tmp/bosl")
+    if exe is None or not os.path.isdir(os.path.join(lib, "BOSL2")):
+        return None
+    with tempfile.TemporaryDirectory() as tmp:
+        scad, stl = os.path.join(tmp, "x.scad"), os.path.join(tmp, "x.stl")
+        with open(scad, "w") as f:
+            f.write(source)
+        t0 = time.perf_counter()
+        subprocess.run([exe, "-o", stl, scad], env=dict(os.environ, OPENSCADPATH=lib),
+                       check=True, capture_output=True)  # fmt: skip
+        return time.perf_counter() - t0
+
+
+BOSL2_WHEEL = (
+    "include <BOSL2/std.scad>\ninclude <BOSL2/gears.scad>\n"
+    "worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0, profile_shift=0, "
+    "pressure_angle=20);\n"
+)
+BOSL2_CUBE = "include <BOSL2/std.scad>\ninclude <BOSL2/gears.scad>\ncube(1);\n"
+WARM = """
+import sys, time
+from gears import WormPair
+best = []
+for _ in range(4):
+    w = WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA")
+    t0 = time.perf_counter()
+    w.wheel_mesh(0.1)
+    best.append(time.perf_counter() - t0)
+print(min(best[1:]))
+"""
+COLD = """
+from gears import WormPair
+WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA").wheel_mesh(0.1)
+"""
+
+
+def _warm() -> float:
+    w = WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA")
+    t0 = time.perf_counter()
+    w.wheel_mesh(0.1)
+    return time.perf_counter() - t0
+
+
+def _python(code: str, tree: str) -> tuple[float, str]:
+    """Seconds of a whole ``python -c code`` process with ``tree`` first on the path, and its
+    output."""
+    import subprocess
+    import sys
+
+    t0 = time.perf_counter()
+    done = subprocess.run([sys.executable, "-c", code], env=dict(os.environ, PYTHONPATH=tree),
+                          check=True, capture_output=True, text=True)  # fmt: skip
+    return time.perf_counter() - t0, done.stdout
+
+
+def speed(rounds: int = 5) -> dict | None:
+    """Our wheel z2 16, x2 0 at 0.1 mm against BOSL2's on the same pair, interleaved rounds, the
+    best of each (module docstring); None without OpenSCAD."""
+    if _openscad(BOSL2_CUBE) is None:
+        return None
+    here = str(pathlib.Path(__file__).resolve().parents[2])
+    before = os.environ.get("GEARTRAIN_BEFORE")
+    _warm()
+    times: dict[str, list[float]] = {}
+    load0 = os.getloadavg()
+    for _ in range(rounds):
+        runs = {
+            "bosl2_s": lambda: _openscad(BOSL2_WHEEL),
+            "bosl2_include_only_s": lambda: _openscad(BOSL2_CUBE),
+            "ours_warm_s": lambda: min(_warm() for _ in range(3)),
+            "ours_fresh_process_s": lambda: _python(COLD, here)[0],
+        }
+        if before:
+            runs["before_warm_s"] = lambda: float(_python(WARM, before)[1].split()[-1])
+        for key, run_ in runs.items():
+            times.setdefault(key, []).append(run_())
+    best = {k: min(v) for k, v in times.items()}
+    out = {"peer": "speed, z2 16, x2 0, 0.1 mm", **best, "rounds": rounds,
+           "load_before": load0, "load_after": os.getloadavg()}  # fmt: skip
+    out["ratio_bosl2_to_ours_warm"] = best["bosl2_s"] / best["ours_warm_s"]
+    out["ratio_bosl2_geometry_to_ours_warm"] = (
+        best["bosl2_s"] - best["bosl2_include_only_s"]
+    ) / best["ours_warm_s"]
+    out["ratio_bosl2_to_ours_fresh_process"] = best["bosl2_s"] / best["ours_fresh_process_s"]
+    if before:
+        out["ratio_before_to_ours_warm"] = best["before_warm_s"] / best["ours_warm_s"]
+    return out
 
 
 def bosl2() -> dict | None:
@@ -191,7 +290,7 @@ def main() -> None:
     rows = [run(10, 0.1, face=10.0)]
     rows += [run(16, tol, shift=0.0) for tol in (0.1, 0.05, 0.01)]
     rows += [run(16, 0.05)]
-    for peer in (bosl2(), wormgear()):
+    for peer in (bosl2(), wormgear(), speed()):
         if peer is not None:
             rows.append(peer)
     for r in rows:
