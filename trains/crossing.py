@@ -118,9 +118,10 @@ def place_worms(
             with_worm = [m for m in members if find(m) == g]
             raise TrainError(
                 f"worm mesh {r.name!r}: the worm {r.a!r} turns about one axis with {clash} "
-                f"(members {', '.join(repr(m) for m in with_worm)}); loads lays the worm's axis "
-                "across the plane of the parallel axes and cannot also place that axis in it: "
-                "the placement is ambiguous. Its torques are in trains.power_flow"
+                f"(members {', '.join(repr(m) for m in with_worm)}); loads lays a worm's axis "
+                "across the plane of the parallel axes beside its one wheel and cannot place "
+                "that axis for both: the placement is ambiguous. Its torques are in "
+                "trains.power_flow"
             )
         seen[g] = r.name
         pair: WormPair = r.pair

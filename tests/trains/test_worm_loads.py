@@ -205,8 +205,22 @@ def test_ambiguous_worm_axes_are_refused():
     t.mesh("pinion", "gear", gears=(Gear(20, 2), Gear(40, 2)))
     with pytest.raises(TrainError, match=r"worm mesh 'worm-wheel'.*'pinion'.*parallel"):
         loads(t, "pinion", "wheel", torque=1.0)
-    # its torques are still in the power flow
-    assert loads.__module__ == "trains.loading"
+    # one worm driving two wheels, a worm on its own wheel's axis, a worm on a carrier
+    t = Train()
+    t.mesh("worm", "k1", pair=WormPair(1, 30, 2.0))
+    t.mesh("worm", "k2", pair=WormPair(1, 30, 2.0))
+    with pytest.raises(TrainError, match=r"worm mesh 'worm-k2'.*mesh 'worm-k1'.*ambiguous"):
+        loads(t, "worm", "k1", torque=1.0)
+    t = Train()
+    t.mesh("worm", "k1", pair=WormPair(1, 30, 2.0))
+    t.coaxial("worm", "k1")
+    with pytest.raises(TrainError, match=r"the wheel 'k1' of its own mesh"):
+        loads(t, "worm", "k1", torque=1.0)
+    t = Train()
+    t.mesh("worm", "wheel", pair=WormPair(1, 30, 2.0), carrier="arm")
+    t.mesh("sun", "wheel", teeth=(20, 30), carrier="arm")
+    with pytest.raises(TrainError, match=r"worm mesh 'worm-wheel' rides on the carrier 'arm'"):
+        loads(t, "worm", "sun", fixed=["arm"], torque=1.0, module=2.0)
 
 
 @settings(max_examples=30, deadline=None)
