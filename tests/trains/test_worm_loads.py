@@ -272,3 +272,40 @@ def test_property_bad_options_are_train_errors(torque, angle, axial):
         assert any(k in str(exc) for k in ("torque", "angles", "axial", "input"))
         return
     assert all(np.all(np.isfinite(m.force)) for m in ld.members.values())
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    theta=st.floats(0.0, 360.0),
+    forces=st.lists(
+        st.tuples(*[st.floats(-1e6, 1e6)] * 3, *[st.floats(-500.0, 500.0)] * 3),
+        min_size=1,
+        max_size=4,
+    ),
+    za=st.floats(-300.0, 300.0),
+    zb=st.floats(-300.0, 300.0),
+)
+def test_property_reactions_of_a_shaft_across_the_plane(theta, forces, za, zb):
+    # any shaft axis in the plane (a worm's): the two reactions balance the forces and their
+    # moments about the first bearing but for the torque about the axis (independent numpy
+    # statics), or the library's own error naming the bearings
+    from trains.crossing import axis_reactions, moment_about
+
+    th = math.radians(theta)
+    axis = np.array([math.cos(th), math.sin(th), 0.0])
+    f = np.array([row[:3] for row in forces], float)
+    p = np.array([row[3:] for row in forces], float)
+    try:
+        r = axis_reactions(f, p, (za, zb), axis)
+    except GearError as exc:
+        assert "bearings" in str(exc)
+        return
+    assert np.all(np.isfinite(r))
+    scale = max(1.0, float(np.abs(f).max()), float(np.abs(r).max()))  # round-off of the turn
+    np.testing.assert_allclose(f.sum(axis=0) + r.sum(axis=0), 0.0, atol=1e-7 * scale)
+    a, b = za * axis, zb * axis
+    m = sum(np.cross(pi - a, fi) for pi, fi in zip(p, f, strict=True)) + np.cross(b - a, r[1])
+    torque = sum(moment_about(pi, fi, axis) for pi, fi in zip(p, f, strict=True))
+    reach = max(1.0, float(np.abs(p).max()), abs(za), abs(zb))
+    np.testing.assert_allclose(m - torque * axis, 0.0, atol=1e-7 * scale * reach)
+    assert abs(np.dot(r[1], axis)) <= 1e-9 * scale  # B floats
