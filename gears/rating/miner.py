@@ -194,12 +194,11 @@ def _solve(z, lc, knots):
         last = sorted_knots.shape[1]
         flat = sorted_knots.ravel()
         offsets = np.arange(n) * last
-        # two bounds for free: D(0) = d0 is known, and D >= N_L >= 1 past a bin's static knot
-        below_zero = (sorted_knots < 0.0).sum(axis=1)  # knots x < 0 (D <= d0 there)
+        # a bound: D >= N_L >= 1 past a bin's static knot (the search needs no static bin of
+        # N_L >= 1 then)
         static_at = np.where(n_l >= 1.0, e0, np.inf).min(axis=0)
-        lo = np.where(d0 < 1.0, (sorted_knots <= 0.0).sum(axis=1), 0)
-        hi = np.where(d0 >= 1.0, below_zero, last)
-        hi = np.minimum(hi, (sorted_knots <= static_at[:, None]).sum(axis=1))
+        lo = np.zeros(n, np.intp)
+        hi = (sorted_knots <= static_at[:, None]).sum(axis=1)
         while True:
             searching = lo < hi
             if not searching.any():
@@ -291,7 +290,8 @@ def _newton(c, A1, A2, a1, a2, ref, w):
         d = c + t1 + t2
         step = np.log(d) * d / (-a1 * t1 - a2 * t2)
         w = w - step
-        more = np.abs(step) > 1e-15 * (1.0 + np.abs(w + ref))
+        # quadratic: after a step below 1e-9 the error is below 1e-16 (f''/2f' < 100)
+        more = np.abs(step) > 1e-9 * (1.0 + np.abs(w + ref))
         if 4 * np.count_nonzero(more) < more.size:  # the rows that converged set aside
             out[rows] = w
             if not more.any():

@@ -12,7 +12,9 @@ bins (pairs of shape (n, 1), bins of shape (10,): each pair's geometry and H_V o
 ``python tests/benchmarks/bench_spectrum.py n rounds --tree PATH`` runs the same cases in this
 source tree and in the tree at PATH (e.g. ``git archive`` of an older commit: before/after),
 each round a fresh process of each in turn, so that both see the same machine load, and prints
-the best of each with the ratios and ``uptime``'s load at the start and the end.
+the best of each with the ratios and ``uptime``'s load at the start and the end; each case's
+wall time and its CPU time (``... cpu``: on a shared machine the less disturbed of the two),
+and the spectrum's cost in one-load ratings on 1 and 2 threads.
 
 Not a test: pytest does not collect ``bench_*.py``. Results: docs/performance.md.
 """
@@ -48,8 +50,9 @@ def pairs(n: int, seed: int = 1):
 
 
 def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
-    """Seconds of each case, round by round (each case run once on 500 pairs first: imports,
-    thread pools and caches warm)."""
+    """Seconds of each case, round by round, wall time and (keys ending in " cpu") the
+    process's CPU time, which other processes on a shared machine disturb less (each case run
+    once on 500 pairs first: imports, thread pools and caches warm)."""
     z1, z2, m, x1, x2, b = pairs(n)
     scale = float(np.median(m)) ** 2
     spectrum = [(scale * 100 * f, 1500.0, h) for f, h in
@@ -62,6 +65,9 @@ def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
         col = [v[:, None] for v in p]  # each pair's geometry and H_V once for the bins
         torque = 10.0 * p[2] ** 2
         return {
+            "one load, 1 thread": lambda: rate_pairs(
+                p[0], p[1], p[2], p[5], torque, 1500.0, x1=p[3], x2=p[4], helix_angle=15.0,
+                fields=SAFETIES, threads=1),
             "one load, 2 threads": lambda: rate_pairs(
                 p[0], p[1], p[2], p[5], torque, 1500.0, x1=p[3], x2=p[4], helix_angle=15.0,
                 fields=SAFETIES, threads=2),
@@ -79,12 +85,13 @@ def timed(n: int = 200_000, rounds: int = 3) -> dict[str, list[float]]:
     for run in cases(min(n, 500)).values():
         run()
     work = cases(n)
-    times: dict[str, list[float]] = {key: [] for key in work}
+    times: dict[str, list[float]] = {k: [] for key in work for k in (key, f"{key} cpu")}
     for _ in range(rounds):
         for key, run in work.items():
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             run()
             times[key].append(time.perf_counter() - t0)
+            times[f"{key} cpu"].append(time.process_time() - c0)
     return times
 
 
@@ -117,11 +124,11 @@ def before_after(n: int, rounds: int, tree: str) -> None:
         a, b = best["after"][key], best["before"].get(key, math.nan)
         print(f"{key:22s} after {a:7.3f} s {n / a:10.4g} pairs/s   before {b:7.3f} s "
               f"{n / b:10.4g} pairs/s   before/after {b / a:6.2f}")  # fmt: skip
-    one = best["after"]["one load, 2 threads"]
-    spec = best["after"]["spectrum 2 threads"]
-    print(f"10-bin spectrum / one load (2 threads): {spec / one:.1f} after, "
-          f"{best['before']['spectrum 2 threads'] / best['before']['one load, 2 threads']:.1f} "
-          "before")  # fmt: skip
+    for what in ("1 thread", "2 threads", "1 thread cpu", "2 threads cpu"):
+        one, spec = f"one load, {what}", f"spectrum {what}"
+        ratios = [best[t][spec] / best[t][one] for t in ("after", "before")]
+        print(f"10-bin spectrum / one load ({what}): {ratios[0]:.2f} after, {ratios[1]:.2f} "
+              "before")  # fmt: skip
 
 
 if __name__ == "__main__":
