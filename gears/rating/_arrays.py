@@ -45,8 +45,10 @@ def where(cond, a, b):
     return np.where(cond, a, b)
 
 
-def number(name, value, low, high, low_open=True, high_open=True, integer=False):
-    """``value`` as a float array, or a GearError naming the first bad entry and the range."""
+def number(name, value, low, high, low_open=True, high_open=True, integer=False, plain=False):
+    """``value`` as a float array, or a GearError naming the first bad entry and the range; a
+    Python number stays a Python float with ``plain`` (one pair's rating computes on those,
+    :data:`gears.namespace.SCALAR`), else it becomes a numpy float."""
     if type(value) is float or type(value) is int:  # the one-pair path: no array needed
         try:
             v = float(value)
@@ -58,7 +60,7 @@ def number(name, value, low, high, low_open=True, high_open=True, integer=False)
             math.isfinite(v) and (v > low if low_open else v >= low)
             and (v < high if high_open else v <= high) and (not integer or v == round(v))
         ):  # fmt: skip
-            return np.float64(v)
+            return v if plain else np.float64(v)
     if isinstance(value, str | bytes | bool | np.bool_):
         raise GearError(f"{name} = {value!r}; valid is a number")
     try:

@@ -96,16 +96,16 @@ def load_part(gears, a, mats, fields):
     ``"gears"``."""
     q = dict(gears)
     q["gears"] = gears
-    o = gears["overrides"]  # the gears' own; the load's given factors come with the load
+    # the gears' part is in one namespace throughout: one of its numbers tells which
+    numbers = {**a, "eps_alpha": gears["eps_alpha"]}
+    return _in_namespace(_load_of, numbers, q, a, mats, fields)
+
+
+def _load_of(q, a, mats, fields, xp):
+    o = q["overrides"]  # the gears' own; the load's given factors come with the load
     if "o_K_A" in a or "o_K_gamma" in a:
         o = {**o, **{k[2:]: a[k] for k in ("o_K_A", "o_K_gamma") if k in a}}
     given = _given(a, o)
-    # the gears' part is in one namespace throughout: one of its numbers tells which
-    numbers = {**a, "eps_alpha": gears["eps_alpha"]}
-    return _in_namespace(_load_of, numbers, q, a, mats, given, fields)
-
-
-def _load_of(q, a, mats, given, fields, xp):
     _load(q, a, given)
     _load_factors(q, a, mats, given, xp)
     _pitting(q, a, mats, given, xp)
@@ -117,14 +117,16 @@ def _in_namespace(part, numbers, *args):
     """``part(*args, xp)`` on Python floats (:data:`gears.namespace.SCALAR`) where every value
     of the dict ``numbers`` is one, else on numpy; where Python floats raise (a division by
     zero, an overflow, a domain error of ``math``: a pair outside the formulas' range), the same
-    part again on numpy numbers, which give inf or NaN for the rating's reasons to name."""
+    part again on numpy numbers, which give inf or NaN for the rating's reasons to name. On
+    numpy every Python number of the dicts becomes a numpy number first (arrays beside plain
+    numbers: the numbers compute as numpy's, as the arrays do)."""
     if of(*numbers.values()) is SCALAR:
         try:
             return part(*args, SCALAR)
         except FLOAT_ERRORS as error:
             if isinstance(error, GearError):
                 raise
-        args = tuple(_numpy_numbers(v) if type(v) is dict else v for v in args)
+    args = tuple(_numpy_numbers(v) if type(v) is dict else v for v in args)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         return part(*args, np)
 
@@ -134,7 +136,13 @@ def _numpy_numbers(values: dict) -> dict:
     out = {}
     for k, v in values.items():
         t = type(v)
-        out[k] = np.float64(v) if t is float else np.bool_(v) if t is bool else v
+        if t is float:
+            v = np.float64(v)
+        elif t is bool:
+            v = np.bool_(v)
+        elif t is dict and k == "overrides":  # the factors given by their symbol
+            v = _numpy_numbers(v)
+        out[k] = v
     return out
 
 

@@ -49,6 +49,7 @@ not covered.
 
 from __future__ import annotations
 
+import functools
 import inspect
 import itertools
 import math
@@ -61,7 +62,7 @@ from numpy.typing import ArrayLike
 from gears.errors import GearError
 from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
-from gears.rating._arrays import number as _number
+from gears.rating._arrays import number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import load_part, rate_block
 from gears.rating.bending import load_point
@@ -280,6 +281,8 @@ _RESULTS = tuple(_FIELDS[:-2])
 
 
 _OVERRIDABLE = {f[0]: f[1] for f in FACTORS}
+# a checked number: one pair's a Python float (the rating computes on those), else an array
+_number = functools.partial(number, plain=True)
 # the smallest value a rating takes: torque (N m), flank and root roughness Ra (um, below
 # ISO 1302's finest class N1 = 0.025 um), face width and largest tip relief (module units)
 _MIN_TORQUE, _MIN_RA, _MIN_WIDTH, _MAX_RELIEF = 1e-9, 0.01, 0.1, 0.1
@@ -455,7 +458,7 @@ def rate_again(one: OnePair, torque, speed, life, application_factor, load_shari
     load = {"torque": torque, "speed": speed, "life": life,
             "application_factor": application_factor, "load_sharing": load_sharing}  # fmt: skip
     a = dict(one.arguments)
-    a.update(_plain_numbers(_load_arguments(load)))
+    a.update(_load_arguments(load))
     res = load_part(one.gears, a, one.materials, _RESULTS if fields is None else fields)
     result, _ = _one_result(res, _RESULTS if fields is None else fields)
     _raise_invalid(result)
@@ -571,7 +574,7 @@ def _arguments(args):
         return a, mats, key
     gears, mats = kept
     a = dict(gears)
-    a.update(_plain_numbers(_load_arguments(args)))
+    a.update(_load_arguments(args))
     return a, mats, key
 
 
@@ -718,8 +721,8 @@ def _checked(args, m1, m2):
         "edition": np.float64(check_edition(args["edition"])),
         "c1": _number("contacts", c1, 1.0, 1e3, low_open=False),
         "c2": _number("contacts", c2, 1.0, 1e3, low_open=False),
-        "idler1": np.asarray(i1, bool),
-        "idler2": np.asarray(i2, bool),
+        "idler1": i1 if type(i1) is bool else np.asarray(i1, bool),
+        "idler2": i2 if type(i2) is bool else np.asarray(i2, bool),
         "k1": _number("tip_alteration", k1, -10.0, 10.0),
         "k2": _number("tip_alteration", k2, -10.0, 10.0),
         "hf1": _number("dedendum", hf1, 0.0, 10.0),
