@@ -81,7 +81,7 @@ def rate_block(a, mats, fields, cache=None, key=None):
             key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
         q = cache.get(key)
     if key is None or q is None:
-        q = _in_namespace(_gears, gears, gears, mats)
+        q = _in_namespace(_gears, gears.values(), gears, mats)
         if key is not None:
             if len(cache) >= _CACHE_SIZE:
                 cache.clear()
@@ -97,8 +97,7 @@ def load_part(gears, a, mats, fields):
     q = dict(gears)
     q["gears"] = gears
     # the gears' part is in one namespace throughout: one of its numbers tells which
-    numbers = {**a, "eps_alpha": gears["eps_alpha"]}
-    return _in_namespace(_load_of, numbers, q, a, mats, fields)
+    return _in_namespace(_load_of, (*a.values(), gears["eps_alpha"]), q, a, mats, fields)
 
 
 def _load_of(q, a, mats, fields, xp):
@@ -114,13 +113,13 @@ def _load_of(q, a, mats, fields, xp):
 
 
 def _in_namespace(part, numbers, *args):
-    """``part(*args, xp)`` on Python floats (:data:`gears.namespace.SCALAR`) where every value
-    of the dict ``numbers`` is one, else on numpy; where Python floats raise (a division by
+    """``part(*args, xp)`` on Python floats (:data:`gears.namespace.SCALAR`) where every one of
+    ``numbers`` is one, else on numpy; where Python floats raise (a division by
     zero, an overflow, a domain error of ``math``: a pair outside the formulas' range), the same
     part again on numpy numbers, which give inf or NaN for the rating's reasons to name. On
     numpy every Python number of the dicts becomes a numpy number first (arrays beside plain
     numbers: the numbers compute as numpy's, as the arrays do)."""
-    if of(*numbers.values()) is SCALAR:
+    if of(*numbers) is SCALAR:
         try:
             return part(*args, SCALAR)
         except FLOAT_ERRORS as error:

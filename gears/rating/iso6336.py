@@ -296,6 +296,8 @@ _LOAD_ARGS = frozenset({"torque", "speed", "life", "application_factor", "load_s
 _LOAD_KEYS = ("T", "n", "life", "K_A", "K_gamma")
 _NOT_KEYED = _LOAD_ARGS | {"geometry"}
 _PLAIN = frozenset({int, float, bool, type(None), np.float64, np.int64, np.bool_})
+_KEYED = _PLAIN | {str, Material}
+_PYTHON_NUMBERS = frozenset({float, int, bool})
 
 
 def _overrides(factors):
@@ -490,7 +492,7 @@ def _rate(args, reduce=None, chunk=_CHUNK):
         if unknown or isinstance(fields, str):
             raise GearError(f"fields = {fields!r}; valid are names of PairRatings: {_RESULTS}")
         fields = tuple(f for f in fields if f in _RESULTS)
-    a, mats, key = _arguments(args)
+    a, mats, key, rest = _arguments(args)
     threads = args["threads"]
     result, gears = _blocks(a, mats, fields, default_threads() if threads is None else threads,
                             key, reduce, chunk)  # fmt: skip
@@ -498,7 +500,9 @@ def _rate(args, reduce=None, chunk=_CHUNK):
         _raise_invalid(result, a, args["tip_shortening"])
     if gears is None:
         return result, None
-    return result, OnePair({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats, gears)
+    if rest is None:
+        rest = {k: v for k, v in a.items() if k not in _LOAD_KEYS}
+    return result, OnePair(rest, mats, gears)
 
 
 def _raise_invalid(result, a=None, tip_shortening=True):
@@ -560,27 +564,31 @@ def _load_point_range(a, i, shape, tip_shortening) -> str:
 def _arguments(args):
     """The checked arguments of :func:`rate_pairs` as a dict of float arrays (overrides as
     ``o_<name>``) with the pairs' geometry, the two materials and, for one pair of plain
-    arguments, the key its gears' part is kept by (else None): its arguments but the load's
-    are then checked once."""
+    arguments, the key its gears' part is kept by and its arguments but the load's (else
+    None, None): those are then checked once."""
     key = _plain_key(args)
     kept = _ARGUMENTS.get(key) if key is not None else None
     if kept is None:
         a, mats = _all_arguments(args)
-        if key is not None:
-            a = _plain_numbers(a)
-            if len(_ARGUMENTS) >= 256:
-                _ARGUMENTS.clear()
-            _ARGUMENTS[key] = ({k: v for k, v in a.items() if k not in _LOAD_KEYS}, mats)
-        return a, mats, key
-    gears, mats = kept
-    a = dict(gears)
+        if key is None:
+            return a, mats, None, None
+        a = _plain_numbers(a)
+        if len(_ARGUMENTS) >= 256:
+            _ARGUMENTS.clear()
+        rest = {k: v for k, v in a.items() if k not in _LOAD_KEYS}
+        _ARGUMENTS[key] = (rest, mats)
+        return a, mats, key, rest
+    rest, mats = kept
+    a = dict(rest)
     a.update(_load_arguments(args))
-    return a, mats, key
+    return a, mats, key, rest
 
 
 def _plain_numbers(a: dict) -> dict:
     """One pair's checked arguments as Python floats and bools, which its formulas compute on
     through ``math`` (:data:`gears.namespace.SCALAR`); arrays stay arrays."""
+    if _PYTHON_NUMBERS.issuperset(map(type, a.values())):
+        return a  # the usual case: checked as Python numbers already
     out = {}
     for k, v in a.items():
         t = type(v)
@@ -596,27 +604,57 @@ def _plain_numbers(a: dict) -> dict:
 
 def _plain_key(args):
     """The arguments of one pair but the load's, typed, when they are plain numbers, names,
-    materials and tuples of them (else None)."""
+    materials and tuples of them (else None): one flat tuple, each value after its type (a
+    tuple's or a dict's after its type and length), so that 1, 1.0 and True differ."""
+    key = []
+    add = key.append
 
-    def typed(v):
+    def put(v):
         t = type(v)
-        if t in _PLAIN or t is str or t is Material:
-            return (t, v)
-        if t is tuple or t is list or isinstance(v, tuple):
-            return (t, *(typed(x) for x in v))
-        if t is dict:
-            return (dict, *sorted((k, typed(x)) for k, x in v.items()))
-        if t is np.ndarray and v.ndim == 0:
-            return (v.dtype.str, v.item())
-        raise TypeError  # an array or another object: not kept
+        if t in _KEYED:
+            add(t)
+            add(v)
+        elif t is tuple or t is list or isinstance(v, tuple):
+            add(t)
+            add(len(v))
+            for x in v:
+                put(x)
+        elif t is dict:
+            add(dict)
+            add(len(v))
+            for k in sorted(v):
+                add(k)
+                put(v[k])
+        elif t is np.ndarray and v.ndim == 0:
+            add(v.dtype.str)
+            add(v.item())
+        else:
+            raise TypeError  # an array or another object: not kept
 
     try:
-        # not the load's, nor ``geometry``, which the others determine
-        key = tuple([typed(v) for k, v in args.items() if k not in _NOT_KEYED])
-        hash(key)
+        for k, v in args.items():
+            if k not in _NOT_KEYED:  # not the load's, nor ``geometry``, which the others fix
+                put(v)
+        return _Key(tuple(key))
     except TypeError:
         return None
-    return key
+
+
+class _Key:
+    """A key of kept parts, its hash computed once (it holds two materials, whose hash is a
+    dataclass's: five look-ups a rating)."""
+
+    __slots__ = ("hash", "values")
+
+    def __init__(self, values: tuple):
+        self.values = values
+        self.hash = hash(values)
+
+    def __hash__(self) -> int:
+        return self.hash
+
+    def __eq__(self, other) -> bool:
+        return type(other) is _Key and self.hash == other.hash and self.values == other.values
 
 
 def _load_arguments(args):
@@ -662,10 +700,18 @@ def _all_arguments(args):
     internal = args["internal"]
     base.append(internal if type(internal) is bool else np.asarray(internal, bool))
     a.update(zip(("z1", "z2", "m", "x1", "x2", "pa", "helix", "ha", "internal"), base, strict=True))
-    a["alpha_wt"] = np.asarray(geo.working_pressure_angle)
-    a["k"] = np.asarray(geo.tip_alteration)
+    a["alpha_wt"] = _plain_or_array(geo.working_pressure_angle)
+    a["k"] = _plain_or_array(geo.tip_alteration)
     _per_module(a)
     return a, (m1, m2)
+
+
+def _plain_or_array(value):
+    """One number as a Python float, else an array."""
+    if type(value) is np.float64 or type(value) is float:
+        return float(value)
+    value = np.asarray(value)
+    return float(value) if value.ndim == 0 else value
 
 
 def _per_module(a):
