@@ -66,14 +66,16 @@ _CACHE_SIZE = 256
 _NOT_FINITE = 9  # the last reason (gears.rating.iso6336.REASONS)
 
 
-def rate_block(a, mats, fields, cache=None, key=None):
+def rate_block(a, mats, fields, cache=None, key=None, gears=None):
     """Every formula of ISO 6336 method B on one block: ``a`` the checked arguments (overrides
     as ``o_<name>``), ``mats`` the two :class:`gears.rating.materials.Material`; returns the dict
     of every quantity, the ``fields`` broadcast to the block and masked by ``valid`` (zero
     safeties, NaN elsewhere). Rows outside a method's validity may produce NaN or inf on the
     way. ``cache`` (a dict, for one pair of scalar arguments) keeps the gears' part, by ``key``
-    (the caller's key of the gears' arguments) or by the arguments themselves."""
-    gears = {k: v for k, v in a.items() if k not in LOAD}
+    (the caller's key of the gears' arguments) or by the arguments themselves. ``gears`` is
+    ``a`` without the load's arguments where the caller has it."""
+    if gears is None or "o_K_A" in gears or "o_K_gamma" in gears:
+        gears = {k: v for k, v in a.items() if k not in LOAD}
     if cache is None:
         key = None
     else:

@@ -53,6 +53,7 @@ import functools
 import inspect
 import itertools
 import math
+import operator
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
@@ -495,7 +496,7 @@ def _rate(args, reduce=None, chunk=_CHUNK):
     a, mats, key, rest = _arguments(args)
     threads = args["threads"]
     result, gears = _blocks(a, mats, fields, default_threads() if threads is None else threads,
-                            key, reduce, chunk)  # fmt: skip
+                            key, reduce, chunk, rest)  # fmt: skip
     if errors == "raise":
         _raise_invalid(result, a, args["tip_shortening"])
     if gears is None:
@@ -789,27 +790,29 @@ def _checked(args, m1, m2):
     return a
 
 
-def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK):
+def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK, rest=None):
     """:func:`gears.rating._block.rate_block` on the whole broadcast, or on blocks of about
     ``chunk`` pairs (whole rows of the first axis) on ``threads`` threads, as
     :class:`PairRatings`, with one pair's gears' part (else None); each block handed to
-    ``reduce`` when given (:func:`rate_reduced`)."""
+    ``reduce`` when given (:func:`rate_reduced`); ``rest``, ``a`` but the load's arguments,
+    where the caller has it."""
     if key is not None and reduce is None and all(type(a[k]) is float for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
         shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
     n = math.prod(shape)
-    wanted = {"valid", "reason"} if reduce else {*fields, "valid", "reason"}  # others None
     if n < 2 * chunk:
         one = n == 1 and shape == ()
-        res = rate_block(a, mats, fields, _GEARS if one else None, key)
+        res = rate_block(a, mats, fields, _GEARS if one else None, key, rest)
         if one:
             return _one_result(res, fields)
+        wanted = {"valid", "reason"} if reduce else {*fields, "valid", "reason"}  # others None
         if reduce is not None:
             reduce(res, 0, shape[0] if shape else 1)
         return PairRatings(
             **{f: np.broadcast_to(res[f], shape) if f in wanted else None for f in _FIELDS}
         ), None
+    wanted = {"valid", "reason"} if reduce else {*fields, "valid", "reason"}  # others None
     out_shape, inner = shape, n // shape[0]
     if len(shape) > 1 and inner > chunk and reduce is None:  # rows too long: pairs one by one
         a = {k: v if np.ndim(v) == 0 else np.broadcast_to(v, shape).ravel() for k, v in a.items()}
@@ -848,12 +851,15 @@ def _one_result(res, fields):
     """One pair's :class:`PairRatings` from the dict of its rating, and its gears' part."""
     if len(fields) == len(_RESULTS):
         # numpy numbers, as for arrays: one array of the numbers, then its elements
-        numbers = list(np.array([res[f] for f in _RESULTS], float))
+        numbers = list(np.array(_ALL_RESULTS(res), float))
         result = PairRatings._make([*numbers, _number_of(res["valid"]), _number_of(res["reason"])])
     else:
         wanted = {*fields, "valid", "reason"}
         result = PairRatings(*(_number_of(res[f]) if f in wanted else None for f in _FIELDS))
     return result, res["gears"]
+
+
+_ALL_RESULTS = operator.itemgetter(*_RESULTS)
 
 
 def _number_of(v):
