@@ -765,7 +765,7 @@ def _checked(args, m1, m2):
         "Ra": _number("roughness", roughness, _MIN_RA, 100.0, low_open=False),
         "Ra_root": _number("root_roughness", root_roughness, _MIN_RA, 100.0, low_open=False),
         "nu40": _number("oil_viscosity", args["oil_viscosity"], 0.0, 1e5),
-        "edition": np.float64(check_edition(args["edition"])),
+        "edition": float(check_edition(args["edition"])),
         "c1": _number("contacts", c1, 1.0, 1e3, low_open=False),
         "c2": _number("contacts", c2, 1.0, 1e3, low_open=False),
         "idler1": i1 if type(i1) is bool else np.asarray(i1, bool),
