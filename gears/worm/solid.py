@@ -670,9 +670,16 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
     8) parts; the new planes and the next mid-planes are evaluated together."""
     b = w.half_face
     zs = list(np.linspace(-b, b, 5))
-    if w.rk < b:  # where the throat meets the outside cylinder the tip has an edge
-        zs += [-w.rk, w.rk]
+    # where the throat meets the outside cylinder (the tip radius a - sqrt(r_k^2 - z^2) reaches
+    # d_e2 / 2) the tip has an edge
+    z_e = math.sqrt(max(w.rk**2 - (w.a - w.re2) ** 2, 0.0))
+    if z_e < b:
+        zs += [-z_e, z_e]
     zs = np.unique(np.round(zs, 12))
+    # the quarters of the first intervals with them, in one evaluation: the first checks and
+    # splits find them there
+    quarters = zs[:-1, None] + np.diff(zs)[:, None] * np.array([0.25, 0.5, 0.75])
+    w.limits(np.concatenate([zs, quarters.ravel()]), tolerance)
     plan = _sample(_Plan(w, zs, tolerance), tolerance)
     done = 0
     for _ in range(4):

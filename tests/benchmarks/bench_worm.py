@@ -164,14 +164,14 @@ def _warm() -> float:
 
 
 def _python(code: str, tree: str) -> tuple[float, str]:
-    """Seconds of a whole ``python -c code`` process with ``tree`` first on the path, and its
-    output."""
+    """Seconds of a whole ``python -c code`` process run in ``tree`` (``-c`` puts the working
+    folder first on the path), and its output."""
     import subprocess
     import sys
 
     t0 = time.perf_counter()
     done = subprocess.run([sys.executable, "-c", code], env=dict(os.environ, PYTHONPATH=tree),
-                          check=True, capture_output=True, text=True)  # fmt: skip
+                          cwd=tree, check=True, capture_output=True, text=True)  # fmt: skip
     return time.perf_counter() - t0, done.stdout
 
 
