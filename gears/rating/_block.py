@@ -83,12 +83,33 @@ def rate_block(a, mats, fields, cache=None, key=None, gears=None):
             key = (mats, *sorted((k, _hashable(v)) for k, v in gears.items()))
         q = cache.get(key)
     if key is None or q is None:
-        q = _in_namespace(_gears, gears.values(), gears, mats)
+        q = gears_part(gears, mats)
         if key is not None:
             if len(cache) >= _CACHE_SIZE:
                 cache.clear()
             cache[key] = q
     return load_part(q, a, mats, fields)
+
+
+def gears_part(a, mats):
+    """The gears' part of :func:`rate_block` for the checked arguments ``a`` (the load's are not
+    read): what :func:`load_part` takes, for one load or many."""
+    gears = {k: v for k, v in a.items() if k not in LOAD}
+    return _in_namespace(_gears, gears.values(), gears, mats)
+
+
+def rows_of(gears, i0, i1, n, lead):
+    """The rows i0:i1 of a gears' part made for ``n`` rows (arrays with ``lead`` axes whose
+    first is the rows'; the others, broadcast along it, as they are)."""
+    out = {}
+    for k, v in gears.items():
+        if type(v) is dict:
+            out[k] = rows_of(v, i0, i1, n, lead)
+        elif n > 1 and type(v) is np.ndarray and v.ndim == lead and v.shape[0] == n:
+            out[k] = v[i0:i1]
+        else:
+            out[k] = v
+    return out
 
 
 def load_part(gears, a, mats, fields):
@@ -385,34 +406,37 @@ def _pitting(q, a, mats, given, xp):
     Z_W1, Z_W2 = work_hardening_factors(code1, code2, m1.hardness, m2.hardness, q["rz"],
                                         q["rho_red"], a["nu40"], v)  # fmt: skip
     Z_W1, Z_W2 = given("Z_W1", Z_W1), given("Z_W2", Z_W2)
-    N_L1 = 60.0 * a["life"] * n * a["c1"]
-    N_L2 = 60.0 * a["life"] * n / u * a["c2"]
+    hours_turns = 60.0 * a["life"] * n  # the load's; the contacts per turn the pair's
+    N_L1 = hours_turns * a["c1"]
+    N_L2 = hours_turns * (a["c2"] / u)
     Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
     Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
     us = s * u
-    root = xp.sqrt(q["F_t"] * (us + 1.0) / (q["d1"] * q["b"] * us))
+    # the gears' factors multiplied first, the load's last (one pass over a spectrum's bins)
+    root = xp.sqrt(q["F_t"] * ((us + 1.0) / (q["d1"] * q["b"] * us)))
     sigma_H0 = q["Z_H"] * q["Z_E"] * q["Z_eps"] * q["Z_beta"] * root
-    load = xp.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
+    loaded = sigma_H0 * xp.sqrt(q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Hbeta"] * q["K_Halpha"])
     common = Z_L * Z_v * q["Z_R"] * q["Z_X"]
     q.update({
         "Z_L": Z_L, "Z_v": Z_v, "Z_W1": Z_W1, "Z_W2": Z_W2, "N_L1": N_L1, "N_L2": N_L2,
         "Z_NT1": Z_NT1, "Z_NT2": Z_NT2, "u": us, "sigma_H0": sigma_H0,
-        "sigma_H1": q["Z_B"] * sigma_H0 * load, "sigma_H2": q["Z_D"] * sigma_H0 * load,
-        "sigma_HP1": a["sH1"] * Z_NT1 * common * Z_W1,
-        "sigma_HP2": a["sH2"] * Z_NT2 * common * Z_W2,
+        "sigma_H1": q["Z_B"] * loaded, "sigma_H2": q["Z_D"] * loaded,
+        "sigma_HP1": Z_NT1 * (a["sH1"] * Z_W1 * common),
+        "sigma_HP2": Z_NT2 * (a["sH2"] * Z_W2 * common),
     })  # fmt: skip
 
 
 def _bending(q, a, mats, given):
     """Y_NT and sigma_F0, sigma_F, sigma_FP (ISO 6336-3)."""
-    nominal = q["F_t"] / (q["b"] * q["m"]) * q["Y_beta"] * q["Y_DT"]
+    # the gears' factors multiplied first, the load's last (one pass over a spectrum's bins)
+    form = q["Y_beta"] * q["Y_DT"] / (q["b"] * q["m"])
     kf = q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Fbeta"] * q["K_Falpha"]
     for i, code in ((1, mats[0].code), (2, mats[1].code)):
         q[f"Y_NT{i}"] = given(f"Y_NT{i}", bending_life_factor(q[f"N_L{i}"], code))
-        q[f"sigma_F0{i}"] = nominal * q[f"Y_F{i}"] * q[f"Y_S{i}"] * q[f"Y_B{i}"]
+        q[f"sigma_F0{i}"] = q["F_t"] * (form * q[f"Y_F{i}"] * q[f"Y_S{i}"] * q[f"Y_B{i}"])
         q[f"sigma_F{i}"] = q[f"sigma_F0{i}"] * kf
-        allowable = a[f"sF{i}"] * q["Y_ST"] * q[f"Y_NT{i}"] * q[f"Y_deltarelT{i}"]
-        q[f"sigma_FP{i}"] = allowable * q[f"Y_RrelT{i}"] * q[f"Y_X{i}"] * q[f"Y_M{i}"]
+        allowable = a[f"sF{i}"] * q["Y_ST"] * q[f"Y_deltarelT{i}"] * q[f"Y_RrelT{i}"]
+        q[f"sigma_FP{i}"] = q[f"Y_NT{i}"] * (allowable * q[f"Y_X{i}"] * q[f"Y_M{i}"])
 
 
 def _methods(q, a, xp):

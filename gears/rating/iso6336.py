@@ -65,7 +65,7 @@ from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_ge
 from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import number
 from gears.rating._arrays import pair_of as _pair_of
-from gears.rating._block import load_part, rate_block
+from gears.rating._block import gears_part, load_part, rate_block, rows_of
 from gears.rating.bending import load_point
 from gears.rating.materials import Material, material
 
@@ -835,7 +835,27 @@ def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK, rest=
         if reduce is not None:
             reduce(res, i0, i1)
 
+    def piece(bounds):
+        """Rows p0:p1, whole blocks: their gears' part at once (long arrays, a call's cost
+        spread over many pairs), then the load's part and ``reduce`` block by block."""
+        p0, p1 = bounds
+        part = {k: v[p0:p1] if part_of[k] else v for k, v in a.items()}
+        gears = gears_part(part, mats)
+        for i0 in range(p0, p1, rows):
+            i1 = min(i0 + rows, p1)
+            block = {k: v[i0 - p0 : i1 - p0] if part_of[k] else v for k, v in part.items()}
+            res = load_part(rows_of(gears, i0 - p0, i1 - p0, p1 - p0, lead), block, mats, fields)
+            for f, column in store.items():
+                column[i0:i1] = res[f]
+            reduce(res, i0, i1)
+
     blocks = list(itertools.pairwise([*range(0, shape[0], rows), shape[0]]))
+    if reduce is not None and inner > 1:  # many loads a pair (a spectrum's bins): by pieces
+        many = -(-shape[0] // (threads * _CHUNK))  # pieces a thread, of at most _CHUNK pairs
+        per = -(-shape[0] // (threads * many))
+        per = -(-per // rows) * rows  # whole blocks
+        work = piece
+        blocks = list(itertools.pairwise([*range(0, shape[0], per), shape[0]]))
     if threads == 1:
         for blk in blocks:
             work(blk)
