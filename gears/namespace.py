@@ -23,9 +23,10 @@ from types import SimpleNamespace
 
 import numpy as np
 
-__all__ = ["FLOAT_ERRORS", "SCALAR", "of", "plain"]
+__all__ = ["FLOAT_ERRORS", "SCALAR", "all_plain", "of"]
 
 _PLAIN = frozenset({float, int, bool})
+_ALL_PLAIN = _PLAIN.issuperset  # over map(type, values): the loop in C
 _NAN = math.nan
 _INF = math.inf
 
@@ -36,15 +37,13 @@ FLOAT_ERRORS = (ArithmeticError, ValueError)
 
 def of(*values):
     """:data:`SCALAR` when every value is a Python ``float``, ``int`` or ``bool``, else numpy."""
-    for v in values:
-        if type(v) not in _PLAIN:
-            return np
-    return SCALAR
+    return SCALAR if _ALL_PLAIN(map(type, values)) else np
 
 
-def plain(value) -> bool:
-    """Whether ``value`` is a Python ``float``, ``int`` or ``bool`` (one number for SCALAR)."""
-    return type(value) in _PLAIN
+def all_plain(values) -> bool:
+    """Whether every one of ``values`` (an iterable) is a Python ``float``, ``int`` or ``bool``:
+    numbers :data:`SCALAR` computes on."""
+    return _ALL_PLAIN(map(type, values))
 
 
 def _sqrt(x):

@@ -17,12 +17,14 @@ the load's part only.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
 from gears.errors import GearError
 from gears.geometry import root_diameter, tip_diameter, tooth_thickness
 from gears.meshing import contact_ratio
-from gears.namespace import FLOAT_ERRORS, SCALAR, of
+from gears.namespace import FLOAT_ERRORS, SCALAR, all_plain
 from gears.rating._arrays import where as _where
 from gears.rating.bending import (
     deep_tooth_factor,
@@ -120,7 +122,8 @@ def load_part(gears, a, mats, fields):
     q = dict(gears)
     q["gears"] = gears
     # the gears' part is in one namespace throughout: one of its numbers tells which
-    return _in_namespace(_load_of, (*a.values(), gears["eps_alpha"]), q, a, mats, fields)
+    numbers = itertools.chain(a.values(), (gears["eps_alpha"],))
+    return _in_namespace(_load_of, numbers, q, a, mats, fields)
 
 
 def _load_of(q, a, mats, fields, xp):
@@ -142,7 +145,7 @@ def _in_namespace(part, numbers, *args):
     part again on numpy numbers, which give inf or NaN for the rating's reasons to name. On
     numpy every Python number of the dicts becomes a numpy number first (arrays beside plain
     numbers: the numbers compute as numpy's, as the arrays do)."""
-    if of(*numbers) is SCALAR:
+    if all_plain(numbers):
         try:
             return part(*args, SCALAR)
         except FLOAT_ERRORS as error:

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gears import rate_pairs
-from gears.namespace import SCALAR, of
+from gears.namespace import SCALAR, all_plain, of
 from gears.rating.iso6336 import PairRatings
 from gears.rating.materials import MATERIALS
 
@@ -79,7 +79,7 @@ def test_of_picks_math_for_python_numbers_only():
     assert of(1.0, 2, True) is SCALAR
     assert of(1.0, np.float64(2.0)) is np
     assert of(1.0, np.array([1.0])) is np
-    assert of() is SCALAR
+    assert of() is SCALAR and all_plain([1.0, 2]) and not all_plain([1.0, np.float64(2.0)])
 
 
 # --- one pair on Python floats == the same pair in an array --------------------------------
