@@ -667,7 +667,9 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
     two planes miss the mid-plane's by more than ``tolerance``, with their sampling. The miss
     of a linear interpolation falls with the square of the spacing, so an interval missing by
     ``e`` is split at once into the power of two nearest above ``sqrt(e / tolerance)`` (at most
-    8) parts; the new planes and the next mid-planes are evaluated together."""
+    8) parts, unless it is itself part of a split whose miss did not fall so (an edge or a jump
+    of the section between two planes: halved); the new planes and the next mid-planes are
+    evaluated together."""
     b = w.half_face
     zs = list(np.linspace(-b, b, 5))
     # where the throat meets the outside cylinder (the tip radius a - sqrt(r_k^2 - z^2) reaches
@@ -682,6 +684,7 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
     w.limits(np.concatenate([zs, quarters.ravel()]), tolerance)
     plan = _sample(_Plan(w, zs, tolerance), tolerance)
     done = 0
+    expect: dict[float, float] = {}  # an interval's lower plane: the miss its split foretold
     for _ in range(4):
         rings = dict(zip(plan.zetas.tolist(), plan.rings(), strict=True))
         pending = np.empty(0)
@@ -701,11 +704,15 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
             if not np.any(bad):
                 break
             rings.update(zip(mids[bad].tolist(), mid_rings[bad], strict=True))
-            parts = 2 ** np.clip(np.ceil(np.log2(np.sqrt(gap[bad] / tolerance))), 1, 3)
-            pending = np.concatenate([
-                zs[:-1][i] + (zs[i + 1] - zs[i]) * np.arange(1, n) / n
-                for i, n in zip(np.flatnonzero(bad), parts.astype(int), strict=True)
-            ])  # fmt: skip
+            i_bad = np.flatnonzero(bad)
+            smooth = gap[bad] <= 4.0 * np.array([expect.get(z, np.inf) for z in zs[i_bad]])
+            parts = np.where(smooth, 2 ** np.clip(np.ceil(np.log2(np.sqrt(gap[bad] / tolerance))),
+                                                  1, 3), 2).astype(int)  # fmt: skip
+            new = [zs[i] + (zs[i + 1] - zs[i]) * np.arange(n) / n
+                   for i, n in zip(i_bad, parts, strict=True)]  # fmt: skip
+            for starts, e in zip(new, gap[bad] / parts**2, strict=True):
+                expect.update(dict.fromkeys(starts.tolist(), float(e)))
+            pending = np.concatenate([starts[1:] for starts in new])
             pending = pending[~np.isin(pending, mids[bad])]
         fine = _sample(plan.at(zs), tolerance)
         same = (len(fine.fillet) == len(plan.fillet) and len(fine.flank) == len(plan.flank)
