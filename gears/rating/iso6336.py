@@ -853,7 +853,9 @@ def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK, rest=
     if reduce is not None and inner > 1:  # many loads a pair (a spectrum's bins): by pieces
         many = -(-shape[0] // (threads * _CHUNK))  # pieces a thread, of at most _CHUNK pairs
         per = -(-shape[0] // (threads * many))
-        per = -(-per // rows) * rows  # whole blocks
+        k = -(-per // rows)  # blocks a piece, of equal rows: the threads get equal work
+        rows = -(-per // k)
+        per = rows * k
         work = piece
         blocks = list(itertools.pairwise([*range(0, shape[0], per), shape[0]]))
     if threads == 1:
