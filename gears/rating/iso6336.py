@@ -619,7 +619,12 @@ def _plain_key(args):
             add(t)
             add(len(v))
             for x in v:
-                put(x)
+                tx = type(x)
+                if tx in _KEYED:
+                    add(tx)
+                    add(x)
+                else:
+                    put(x)
         elif t is dict:
             add(dict)
             add(len(v))
@@ -634,7 +639,13 @@ def _plain_key(args):
 
     try:
         for k, v in args.items():
-            if k not in _NOT_KEYED:  # not the load's, nor ``geometry``, which the others fix
+            if k in _NOT_KEYED:  # not the load's, nor ``geometry``, which the others fix
+                continue
+            t = type(v)
+            if t in _KEYED:  # most are: no call
+                add(t)
+                add(v)
+            else:
                 put(v)
         return _Key(tuple(key))
     except TypeError:

@@ -113,3 +113,17 @@ def test_one_pair_on_python_floats_equals_the_array_route(p):
     for name in PairRatings._fields:
         x, y = float(getattr(one, name)), float(getattr(rows, name)[0])
         assert _same(x, y) or x == pytest.approx(y, rel=1e-12), (name, x, y)
+
+
+def test_a_pair_python_floats_cannot_rate_falls_back_to_numpy_alike():
+    # an internal 11/21 pair whose tips do not reach: eps_alpha = 0, so Z_eps's eps_beta /
+    # eps_alpha divides by zero on Python floats (ZeroDivisionError); the block runs again on
+    # numpy numbers. Reference: the same pair in an array (numpy throughout), every field
+    kw = dict(x1=-0.0526, x2=0.0384, pressure_angle=22.7, internal=True, quality=4,
+              material=("nodular-cast-iron", "nitrided"), errors="mask")  # fmt: skip
+    one = rate_pairs(11, 21, 4.13, 7.62, 0.0382, 693.5, **kw)
+    rows = rate_pairs([11, 11], 21, 4.13, 7.62, 0.0382, 693.5, **kw)
+    assert int(one.reason) == 1 and not bool(one.valid)  # eps_alpha < 1, masked
+    for name in PairRatings._fields:
+        x, y = float(getattr(one, name)), float(getattr(rows, name)[0])
+        assert _same(x, y) or x == pytest.approx(y, rel=1e-12), (name, x, y)
