@@ -41,6 +41,7 @@ LAYERS = {
             "rating.pitting",
             "rating.bending",
             "rating.life",
+            "rating._one",
             "search.tables",
             "forces",
             "contact.compliance",

@@ -66,6 +66,8 @@ from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import gears_part, load_part, rate_block, rows_of
+from gears.rating._one import PLAIN as _PLAIN
+from gears.rating._one import plain_key, plain_numbers, plain_or_array
 from gears.rating.bending import load_point
 from gears.rating.materials import Material, material
 
@@ -292,13 +294,10 @@ _FACTOR_RANGE = (1e-3, 1e6)  # a factor given by its symbol (the load factors fr
 # at other loads computes the load's part only
 _GEARS: dict = {}
 _GEOMETRY: dict = {}  # and its pair_geometry, by its arguments
-_ARGUMENTS: dict = {}  # and its checked arguments but the load's (_plain_key)
+_ARGUMENTS: dict = {}  # and its checked arguments but the load's (plain_key)
 _LOAD_ARGS = frozenset({"torque", "speed", "life", "application_factor", "load_sharing"})
 _LOAD_KEYS = ("T", "n", "life", "K_A", "K_gamma")
 _NOT_KEYED = _LOAD_ARGS | {"geometry"}
-_PLAIN = frozenset({int, float, bool, type(None), np.float64, np.int64, np.bool_})
-_KEYED = _PLAIN | {str, Material}
-_PYTHON_NUMBERS = frozenset({float, int, bool})
 
 
 def _overrides(factors):
@@ -567,13 +566,13 @@ def _arguments(args):
     ``o_<name>``) with the pairs' geometry, the two materials and, for one pair of plain
     arguments, the key its gears' part is kept by and its arguments but the load's (else
     None, None): those are then checked once."""
-    key = _plain_key(args)
+    key = plain_key(args, _NOT_KEYED)
     kept = _ARGUMENTS.get(key) if key is not None else None
     if kept is None:
         a, mats = _all_arguments(args)
         if key is None:
             return a, mats, None, None
-        a = _plain_numbers(a)
+        a = plain_numbers(a)
         if len(_ARGUMENTS) >= 256:
             _ARGUMENTS.clear()
         rest = {k: v for k, v in a.items() if k not in _LOAD_KEYS}
@@ -583,90 +582,6 @@ def _arguments(args):
     a = dict(rest)
     a.update(_load_arguments(args))
     return a, mats, key, rest
-
-
-def _plain_numbers(a: dict) -> dict:
-    """One pair's checked arguments as Python floats and bools, which its formulas compute on
-    through ``math`` (:data:`gears.namespace.SCALAR`); arrays stay arrays."""
-    if _PYTHON_NUMBERS.issuperset(map(type, a.values())):
-        return a  # the usual case: checked as Python numbers already
-    out = {}
-    for k, v in a.items():
-        t = type(v)
-        if t is np.float64:
-            v = float(v)
-        elif t is np.ndarray and v.ndim == 0:
-            v = v.item()
-        elif t is np.bool_:
-            v = bool(v)
-        out[k] = v
-    return out
-
-
-def _plain_key(args):
-    """The arguments of one pair but the load's, typed, when they are plain numbers, names,
-    materials and tuples of them (else None): one flat tuple, each value after its type (a
-    tuple's or a dict's after its type and length), so that 1, 1.0 and True differ."""
-    key = []
-    add = key.append
-
-    def put(v):
-        t = type(v)
-        if t in _KEYED:
-            add(t)
-            add(v)
-        elif t is tuple or t is list or isinstance(v, tuple):
-            add(t)
-            add(len(v))
-            for x in v:
-                tx = type(x)
-                if tx in _KEYED:
-                    add(tx)
-                    add(x)
-                else:
-                    put(x)
-        elif t is dict:
-            add(dict)
-            add(len(v))
-            for k in sorted(v):
-                add(k)
-                put(v[k])
-        elif t is np.ndarray and v.ndim == 0:
-            add(v.dtype.str)
-            add(v.item())
-        else:
-            raise TypeError  # an array or another object: not kept
-
-    try:
-        for k, v in args.items():
-            if k in _NOT_KEYED:  # not the load's, nor ``geometry``, which the others fix
-                continue
-            t = type(v)
-            if t in _KEYED:  # most are: no call
-                add(t)
-                add(v)
-            else:
-                put(v)
-        return _Key(tuple(key))
-    except TypeError:
-        return None
-
-
-class _Key:
-    """A key of kept parts, its hash computed once (it holds two materials, whose hash is a
-    dataclass's: five look-ups a rating)."""
-
-    __slots__ = ("hash", "values")
-
-    def __init__(self, values: tuple):
-        self.values = values
-        self.hash = hash(values)
-
-    def __hash__(self) -> int:
-        return self.hash
-
-    def __eq__(self, other) -> bool:
-        return type(other) is _Key and self.hash == other.hash and self.values == other.values
 
 
 def _load_arguments(args):
@@ -712,18 +627,10 @@ def _all_arguments(args):
     internal = args["internal"]
     base.append(internal if type(internal) is bool else np.asarray(internal, bool))
     a.update(zip(("z1", "z2", "m", "x1", "x2", "pa", "helix", "ha", "internal"), base, strict=True))
-    a["alpha_wt"] = _plain_or_array(geo.working_pressure_angle)
-    a["k"] = _plain_or_array(geo.tip_alteration)
+    a["alpha_wt"] = plain_or_array(geo.working_pressure_angle)
+    a["k"] = plain_or_array(geo.tip_alteration)
     _per_module(a)
     return a, (m1, m2)
-
-
-def _plain_or_array(value):
-    """One number as a Python float, else an array."""
-    if type(value) is np.float64 or type(value) is float:
-        return float(value)
-    value = np.asarray(value)
-    return float(value) if value.ndim == 0 else value
 
 
 def _per_module(a):
