@@ -12,8 +12,6 @@ import numpy as np
 
 from gears.rating.materials import Material
 
-__all__ = ["PLAIN", "Key", "plain_key", "plain_numbers", "plain_or_array"]
-
 #: the types of one number of one pair (Python's and numpy's)
 PLAIN = frozenset({int, float, bool, type(None), np.float64, np.int64, np.bool_})
 _KEYED = PLAIN | {str, Material}
