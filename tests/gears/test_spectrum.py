@@ -174,6 +174,33 @@ def test_rate_spectrum_property(bins, z1, z2):
         assert np.all(np.isfinite(v)) and np.all(np.asarray(v) >= 0)
 
 
+@settings(max_examples=20, deadline=None)
+@given(
+    st.lists(st.integers(6, 60), min_size=1, max_size=7),
+    st.lists(st.floats(1.0, 5000.0), min_size=1, max_size=5),
+    st.integers(1, 40),
+    st.integers(1, 2),
+)
+def test_rate_reduced_property(z1, torques, chunk, threads):
+    # every block handed to the reducer (any block size, in pieces on threads) holds what
+    # rate_pairs gives for its rows: the same ratings stored whole (an independent path)
+    from gears.rating.iso6336 import rate_pairs, rate_reduced
+
+    pairs, loads = np.array(z1, float)[:, None], np.array(torques)
+    kw = dict(z1=pairs, z2=61, module=3, face_width=30, torque=loads, speed=1450.0,
+              errors="mask", fields=("S_H1", "S_F2"))  # fmt: skip
+    seen = np.full((len(z1), len(torques)), np.nan)
+
+    def reduce(q, i0, i1):
+        seen[i0:i1] = q["S_H1"]
+
+    r = rate_reduced(reduce, chunk, threads=threads, **kw)
+    whole = rate_pairs(**kw, threads=1)
+    assert np.array_equal(np.broadcast_to(r.valid, seen.shape), whole.valid)
+    assert np.allclose(seen, whole.S_H1, rtol=1e-12, atol=0.0)
+    assert np.all(np.isfinite(seen))
+
+
 @settings(max_examples=10, deadline=None)
 @given(bins_strategy)
 def test_pair_spectrum_property(bins):
