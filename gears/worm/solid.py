@@ -469,7 +469,10 @@ def _undercut(w: _Wheel, z, side, xs, ex, ey, rho, k, first, way, x_exit):
     tx, ty = w.trochoid(zc, t, side[:, None])
     turn = _turn(tx, ty, ex, ey)
     idx = np.arange(xs.shape[1])
+    # from one sample below the cusp's (the crossing may lie between them), but never from the
+    # corner's own sample past a cusp (there the fillet meets the lower branch, not a crossing)
     lo = np.maximum(np.minimum(k, first - 1), 0)
+    lo = np.where(lo > 1, lo - 1, lo)
     ok = (idx >= lo[:, None]) & (idx <= first[:, None]) & (rho >= w.root(zc))
     ok &= np.abs(turn) < 1.0  # away from the wrap of the angle at pi
     change = ok[:, :-1] & ok[:, 1:] & ((turn[:, :-1] <= 0.0) != (turn[:, 1:] <= 0.0))
