@@ -473,8 +473,10 @@ def rate_reduced(reduce, chunk: int = _CHUNK, **arguments: Any) -> PairRatings:
     broadcast to the block and masked) to ``reduce(q, i0, i1)`` (its rows i0:i1) as soon as it
     is rated, on the block's thread, instead of storing them: a caller that reduces the last
     axis (a spectrum's bins) reads each block while it is in the cache. Blocks of about
-    ``chunk`` ratings; the last axis is never cut. Returns ``valid`` and ``reason`` only (the
-    other fields None) and raises as :func:`rate_pairs`."""
+    ``chunk`` ratings; the last axis is never cut. With more than one rating a row, the rows
+    go in pieces (at most 32 768, at least one a thread), each piece's gears' part computed at
+    once and its blocks' load parts from it. Returns ``valid`` and ``reason`` only (the other
+    fields None) and raises as :func:`rate_pairs`."""
     return _rate({**_DEFAULTS, **arguments}, reduce, chunk)[0]
 
 
