@@ -25,8 +25,9 @@ cuts that side; where a tooth would come to a point below the throat (few teeth,
 mid-plane) its tip is lowered to a land of one tolerance. Every plane's section is sampled with
 the same parameters, so the sections stack into a loft of quads with planar caps at the faces
 (:func:`gears.solid.mesh.loft_solid`): welded, watertight and wound outwards by construction.
-The sampling: chords within half the tolerance in every plane, and planes halved until the
-loft between two planes misses the exact section midway by at most the other half.
+The sampling: chords within half the tolerance in every plane, and planes split until the
+loft between two planes misses the exact section midway by at most the other half. Every
+plane's section is computed with the others, in one numpy evaluation per round of splits.
 """
 
 from __future__ import annotations
@@ -747,7 +748,7 @@ def wheel_solid(pair, tolerance: float = 0.01, progress=None):
     worm's axis, the tips the throat (at most ``d_e2``), the faces planes at ``+-b_2 / 2``.
 
     Sampling: in every plane the chords of the flanks, fillets and arcs stay within
-    ``tolerance / 2`` of them; the planes are halved until the sections interpolated between
+    ``tolerance / 2`` of them; the planes are split until the sections interpolated between
     two neighbours miss the exact section between them by at most ``tolerance / 2``.
     ``progress(done, total)`` is called as the work proceeds.
 
