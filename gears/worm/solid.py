@@ -504,17 +504,20 @@ def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> Non
     z = np.asarray(zetas, float)[:, None]
     # the tooth's width at the tip from the ends of both sides: most planes are not pointed
     ends = w.angle(*w.upper(z[:, :, None], _SIDES, lim, np.ones(1)))[..., 0]
-    thin = (ends[:, 0] + w.pitch - ends[:, 1]) * w.tip(z[:, 0]) < land
+    tips = w.tip(z[:, 0])
+    thin = (ends[:, 0] + w.pitch - ends[:, 1]) * tips < land
     if not np.any(thin):
         return
     c = np.flatnonzero(thin)
-    x, y = w.upper(z[c][:, :, None], _SIDES, lim[c], np.linspace(0.0, 1.0, 401))
+    g = np.linspace(0.0, 1.0, 401)
+    x, y = w.upper(z[c][:, :, None], _SIDES, lim[c], g)
     rho, ang = np.hypot(x, y), w.angle(x, y)
     (rho_r, rho_l), (a_r, a_l) = rho.transpose(1, 0, 2), ang.transpose(1, 0, 2)
     at = np.full(len(z), np.nan)
+    bracket = np.zeros((len(z), 2, 2))  # the samples of each side about the land's radius
     for n, i in enumerate(c):
         lo = max(rho_r[n, 0], rho_l[n, 0])
-        rho = np.linspace(lo, float(w.tip(z[i, 0])), 401)
+        rho = np.linspace(lo, tips[i], 401)
         # the upper branch (beyond a cusp) is where the radius grows: interpolate on it
         kr, kl = int(np.argmin(rho_r[n])), int(np.argmin(rho_l[n]))
         thick = (np.interp(rho, rho_r[n, kr:], a_r[n, kr:]) + w.pitch
@@ -530,6 +533,9 @@ def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> Non
         j = int(np.flatnonzero(thick < land)[0])
         frac = (thick[j - 1] - land) / (thick[j - 1] - thick[j])
         at[i] = rho[j - 1] + (rho[j] - rho[j - 1]) * frac
+        for s, (rs, k) in enumerate(((rho_r[n], kr), (rho_l[n], kl))):
+            up = max(k + int(np.argmax(rs[k:] >= at[i])), 1)
+            bracket[i, s] = g[up - 1], g[up]
     pointed = np.flatnonzero(np.isfinite(at))
     if len(pointed) == 0:
         return
@@ -540,7 +546,9 @@ def _tip_land(w: _Wheel, zetas: np.ndarray, lim: np.ndarray, land: float) -> Non
         r[..., 2] = b
         return np.hypot(*w.upper(zp, _SIDES, r, np.ones(1)))[..., 0]
 
-    lim[pointed, :, 2] = _exits(radius, rows[..., 1], rows[..., 2], at[pointed][:, None])
+    b0, span = rows[..., 1], rows[..., 2] - rows[..., 1]
+    lo, hi = (b0 + span * bracket[pointed, :, k] for k in (0, 1))
+    lim[pointed, :, 2] = _exits(radius, lo, hi, at[pointed][:, None])
 
 
 class _Plan:
