@@ -589,9 +589,10 @@ class _Plan:
                w.angle(fla[:, 0, 0, 0], fla[:, 0, 0, 1]) + w.pitch)  # fmt: skip
         return root, tip, np.hypot(fla[:, 0, 0, 0], fla[:, 0, 0, 1])
 
-    def rings(self) -> np.ndarray:
+    def rings(self, spaces: int | None = None) -> np.ndarray:
         """Every plane's section, ``(planes, N, 2)``, counter-clockwise: tooth space 0 (the
-        right side down, the root, the left side up), the tip, turned ``z_2`` times."""
+        right side down, the root, the left side up), the tip, turned ``z_2`` times (or only
+        ``spaces`` times: the first spaces of the section, for the checks)."""
         w = self.w
         fil, fla = self.fillets(), self.flanks()
         (r0, r1), (t0, t1), rho_tip = self.arcs()
@@ -605,7 +606,7 @@ class _Plan:
         space = np.concatenate([
             fla[:, 0, ::-1], fil[:, 0, -2::-1], root, fil[:, 1, :-1], fla[:, 1], tip,
         ], axis=1)  # fmt: skip
-        turns = np.arange(w.z2) * w.pitch
+        turns = np.arange(w.z2 if spaces is None else spaces) * w.pitch
         c, s = np.cos(turns)[:, None], np.sin(turns)[:, None]
         x = c * space[:, None, :, 0] - s * space[:, None, :, 1]
         y = s * space[:, None, :, 0] + c * space[:, None, :, 1]
@@ -655,10 +656,12 @@ def _sample(plan: _Plan, tolerance: float) -> _Plan:
                  max(tip_n, plan.tip_n))  # fmt: skip
 
 
-def _ring_gap(mid, lower, upper) -> np.ndarray:
+def _ring_gap(mid, lower, upper, spaces: int = 1) -> np.ndarray:
     """Per plane, the largest distance of a vertex of the mid-planes' sections ``mid``
     ``(planes, N, 2)`` from the sections interpolated linearly between their neighbours (the
-    quads' deviation): each vertex against the interpolated ring's segments near it."""
+    quads' deviation): each vertex against the interpolated ring's segments near it. With
+    ``spaces = 3`` the rings hold three tooth spaces of the sections (every space is the same
+    turned) and the middle one's vertices are measured, its neighbours' segments at hand."""
     ring = (lower + upper) / 2.0
     a = ring
     b = np.roll(ring, -1, axis=1)
@@ -671,6 +674,9 @@ def _ring_gap(mid, lower, upper) -> np.ndarray:
         )
         foot = pa + np.clip(t, 0.0, 1.0)[..., None] * d
         best = np.minimum(best, np.hypot(*(mid - foot).transpose(2, 0, 1)))
+    if spaces == 3:
+        n = best.shape[1] // 3
+        best = best[:, n : 2 * n]
     return best.max(axis=1)
 
 
@@ -696,19 +702,20 @@ def _planes(w: _Wheel, tolerance: float, progress=None) -> _Plan:
     w.limits(np.concatenate([zs, quarters.ravel()]), tolerance)
     plan = _sample(_Plan(w, zs, tolerance), tolerance)
     done = 0
+    spaces = min(w.z2, 3)  # the check's share of each section: the others are the same turned
     expect: dict[float, float] = {}  # an interval's lower plane: the miss its split foretold
     for _ in range(4):
-        rings = dict(zip(plan.zetas.tolist(), plan.rings(), strict=True))
+        rings = dict(zip(plan.zetas.tolist(), plan.rings(spaces), strict=True))
         pending = np.empty(0)
         for _ in range(14):
             zs = np.unique(np.concatenate([list(rings), pending]))
             mids = (zs[:-1] + zs[1:]) / 2.0
-            batch = plan.at(np.concatenate([pending, mids])).rings()
+            batch = plan.at(np.concatenate([pending, mids])).rings(spaces)
             rings.update(zip(pending.tolist(), batch[: len(pending)], strict=True))
             mid_rings = batch[len(pending) :]
             low = np.array([rings[z] for z in zs[:-1]])
             up = np.array([rings[z] for z in zs[1:]])
-            gap = _ring_gap(mid_rings, low, up)
+            gap = _ring_gap(mid_rings, low, up, spaces)
             bad = gap > tolerance
             done += 1
             if progress is not None:
