@@ -792,13 +792,13 @@ def wheel_solid(pair, tolerance: float = 0.01, progress=None):
     # point of the flank is off the mesh by at most the sum
     plan = _planes(w, tol / 2.0, progress)
     rings = plan.rings()
-    for zeta, ring in zip(plan.zetas, rings, strict=True):
-        poly = shapely.Polygon(ring)
-        if not poly.is_valid or poly.area <= 0.0:
-            raise GearError(
-                f"the wheel's section at z = {zeta:.6g} mm is not a simple polygon (its "
-                "teeth are pointed or cut by their neighbours' spaces: see check())"
-            )
+    polys = shapely.polygons(rings)
+    bad = ~shapely.is_valid(polys) | (shapely.area(polys) <= 0.0)
+    if np.any(bad):
+        raise GearError(
+            f"the wheel's section at z = {plan.zetas[np.argmax(bad)]:.6g} mm is not a simple "
+            "polygon (its teeth are pointed or cut by their neighbours' spaces: see check())"
+        )
     levels = np.concatenate([rings, np.broadcast_to(plan.zetas[:, None, None],
                                                     (*rings.shape[:2], 1))], -1)  # fmt: skip
     out = loft_solid(levels)
