@@ -320,3 +320,37 @@ def check_point(name: str, value) -> tuple[float, float]:
     if not ok:
         raise GearError(f"{name} = {_show(value)}; valid is a pair of finite coordinates (mm)")
     return float(value[0]), float(value[1])
+
+
+def common_shape(shapes: dict[str, tuple[int, ...]]) -> tuple[int, ...]:
+    """The shape the arrays of an array entry point broadcast to (numpy's rules), or a
+    :class:`GearError` naming two arguments whose shapes do not broadcast together.
+
+    >>> common_shape({"z1": (2, 1), "z2": (3,)})
+    (2, 3)
+    >>> common_shape({"z1": (2,), "z2": (3,)})
+    Traceback (most recent call last):
+    ...
+    gears.errors.GearError: z1 has shape (2,) and z2 shape (3,): they do not broadcast \
+together; valid are arrays of one shape, or shapes numpy broadcasts (lengths equal or 1, \
+aligned at the end)
+    """
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        pass
+    seen: dict[str, tuple[int, ...]] = {}
+    for name, shape in shapes.items():
+        for other, before in seen.items():
+            try:
+                np.broadcast_shapes(before, shape)
+            except ValueError:
+                raise GearError(
+                    f"{other} has shape {before} and {name} shape {shape}: they do not broadcast "
+                    "together; valid are arrays of one shape, or shapes numpy broadcasts (lengths "
+                    "equal or 1, aligned at the end)"
+                ) from None
+        seen[name] = shape
+    raise GearError(  # every pair broadcasts but not all together: cannot happen (numpy's rule)
+        f"the shapes {shapes} do not broadcast together; valid are arrays of one shape"
+    )

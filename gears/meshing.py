@@ -27,6 +27,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.involute import inv, inv_inverse
 from gears.namespace import of
@@ -101,7 +102,9 @@ def pair_geometry(
     args = [_floats(name, v) for name, v in zip(names, values, strict=True)]
     args.append(np.asarray(internal, bool))
     args.append(_flags("tip_shortening", tip_shortening))
-    shape = np.broadcast_shapes(*(v.shape for v in args))
+    shape = common_shape(
+        dict(zip((*names, "internal", "tip_shortening"), (v.shape for v in args), strict=True))
+    )
     n = math.prod(shape)
     if threads is None:
         threads = default_threads()

@@ -57,7 +57,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from gears.arguments import check_real
+from gears.arguments import check_real, common_shape
 from gears.errors import GearError
 
 __all__ = [
@@ -234,9 +234,11 @@ def bevel_geometry(
     x1 = np.asarray(profile_shift, float)
     xs1 = np.asarray(thickness_modification, float)
     za, zb = np.asarray(z1, float), np.asarray(z2, float)
-    shape = np.broadcast_shapes(za.shape, zb.shape, m.shape, b.shape, alpha.shape, x1.shape,
-                                xs1.shape, np.shape(shaft_angle), np.shape(addendum),
-                                np.shape(dedendum))  # fmt: skip
+    shape = common_shape({"z1": za.shape, "z2": zb.shape, "module": m.shape, "face_width": b.shape,
+                          "pressure_angle": alpha.shape, "profile_shift": x1.shape,
+                          "thickness_modification": xs1.shape,
+                          "shaft_angle": np.shape(shaft_angle), "addendum": np.shape(addendum),
+                          "dedendum": np.shape(dedendum)})  # fmt: skip
 
     def pair(a, c):  # (pinion, wheel) stacked on a leading axis, broadcast to every row
         return np.stack([np.broadcast_to(a, shape), np.broadcast_to(c, shape)])

@@ -116,3 +116,16 @@ def pair_of(name, value):
     if isinstance(value, tuple | list):
         raise GearError(f"{name} = {value!r}; give one value or a pair (gear 1, gear 2)")
     return value, value
+
+
+#: the public name of each checked argument of the array route (their keys are ISO symbols), for
+#: the message of arrays that do not broadcast together
+PUBLIC = {"T": "torque", "n": "speed", "K_A": "application_factor", "K_gamma": "load_sharing",
+          "b": "face_width", "Q": "quality", "Ra": "roughness", "Ra_root": "root_roughness",
+          "nu40": "oil_viscosity", "C_a": "tip_relief", "F_bx": "misalignment"} | {
+    f"{k}{i}": f"{name}[{i - 1}]"
+    for k, name in (("c", "contacts"), ("idler", "idler"), ("k", "tip_alteration"),
+                    ("hf", "dedendum"), ("rho", "root_radius"), ("spr", "protuberance"),
+                    ("sH", "sigma_Hlim"), ("sF", "sigma_Flim"))
+    for i in (1, 2)
+}  # fmt: skip

@@ -60,9 +60,11 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
+from gears.rating._arrays import PUBLIC as _PUBLIC
 from gears.rating._arrays import number
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import gears_part, load_part, rate_block, rows_of
@@ -719,7 +721,7 @@ def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK, rest=
     if key is not None and reduce is None and all(type(a[k]) is float for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
-        shape = np.broadcast_shapes(*(np.shape(v) for v in a.values()))
+        shape = common_shape({_PUBLIC.get(k, k): np.shape(v) for k, v in a.items()})
     n = math.prod(shape)
     if n < 2 * chunk:
         one = n == 1 and shape == ()

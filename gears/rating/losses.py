@@ -35,7 +35,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from gears.arguments import check_positive
+from gears.arguments import check_positive, common_shape
 from gears.errors import GearError
 from gears.geometry import tip_diameter
 from gears.meshing import line_positions, pair_geometry
@@ -256,6 +256,10 @@ def pair_losses(torque: ArrayLike, speed: ArrayLike, z1: ArrayLike, z2: ArrayLik
         _positive(name, value)
     if errors not in ("raise", "mask"):
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
+    shapes = dict(torque=torque, speed=speed, z1=z1, z2=z2, module=module, face_width=face_width,
+                  x1=x1, x2=x2, pressure_angle=pressure_angle, helix_angle=helix_angle,
+                  internal=internal, roughness=roughness, viscosity=viscosity)  # fmt: skip
+    common_shape({k: np.shape(v) for k, v in shapes.items()})
     x_l = lubricant_factor(lubricant)
     g = pair_geometry(z1, z2, module, x1, x2, pressure_angle, helix_angle, internal, addendum,
                       tip_shortening)  # fmt: skip

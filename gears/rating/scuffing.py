@@ -52,6 +52,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.geometry import tip_diameter
 from gears.rating._arrays import number as _number
@@ -511,7 +512,8 @@ def scuffing_block(z1, z2, module, pressure_angle, helix_angle, internal, alpha_
     mean_j = np.sum(unit[..., :n_nodes] * weights, axis=-1)
     i = np.argmax(unit, axis=-1)
     peak = np.take_along_axis(unit, i[..., None], axis=-1)[..., 0]
-    g_peak = np.take_along_axis(pts, i[..., None], axis=-1)[..., 0]
+    # the path's points have the geometry's shape, the temperatures the load's too
+    g_peak = np.take_along_axis(np.broadcast_to(pts, unit.shape), i[..., None], axis=-1)[..., 0]
     x_mp = 0.5 * (1.0 + np.asarray(meshes, float))
     theta_oil = float(oil.temperature)
     theta_flmax, theta_flm = mu_m * peak, mu_m * mean_j
@@ -622,6 +624,8 @@ def rate_scuffing(
     ([0.68, 0.65], [1.13, 1.2])
     """
     x_w, n_p, b1, b2 = _checked(oil, welding, meshes, thermal_contact, driver)
+    shapes = dict(z1=z1, z2=z2, module=module, face_width=face_width, torque=torque, speed=speed)
+    common_shape({k: np.shape(v) for k, v in (shapes | {"welding": x_w, "meshes": n_p}).items()})
     for key in ("fields", "geometry"):
         if key in rating:
             raise GearError(f"{key}= is not an argument of rate_scuffing")

@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.geometry import reference_diameter, root_diameter
 from gears.rating._arrays import shown
@@ -323,7 +324,12 @@ def smallest_width(load: Load, widths, z1, z2, module, x1=0.0, x2=0.0, pressure_
     """
     widths = np.asarray(widths, float)
     arrays = [np.asarray(v, float) for v in (z1, z2, module, x1, x2)]
-    shape = np.broadcast_shapes(*(a.shape for a in arrays), *_row_shapes(overrides))
+    shape = common_shape(
+        {
+            **dict(zip(("z1", "z2", "module", "x1", "x2"), (a.shape for a in arrays), strict=True)),
+            **_row_shapes(overrides),
+        }
+    )
     z1, z2, module, x1, x2 = (np.broadcast_to(a, shape).ravel() for a in arrays)
     n = z1.size
     index = np.full(n, -1, np.int64)
@@ -434,13 +440,13 @@ def _materials(value):
     return material(mats[0]), material(mats[1])
 
 
-def _row_shapes(overrides: dict) -> list[tuple[int, ...]]:
-    """Shapes of the per-row arrays among ``overrides`` (a pair's elements count too)."""
-    out = []
-    for v in overrides.values():
-        for item in v if isinstance(v, tuple | list) else (v,):
+def _row_shapes(overrides: dict) -> dict[str, tuple[int, ...]]:
+    """Shapes of the per-row arrays among ``overrides`` by name (a pair's elements count too)."""
+    out = {}
+    for k, v in overrides.items():
+        for i, item in enumerate(v if isinstance(v, tuple | list) else (v,)):
             if isinstance(item, np.ndarray):
-                out.append(item.shape)
+                out[f"{k}[{i}]" if isinstance(v, tuple | list) else k] = item.shape
     return out
 
 
