@@ -381,8 +381,9 @@ def worm_torque_forces(
     Returns
     -------
     MeshForces
-        ``tangential`` |F_t1|, ``axial`` |F_a1|, ``radial`` F_r, ``normal`` W, ``radial_2``
-        F_r, ``axial_2`` |F_t1| (the wheel's axial force), ``vector`` the force on the worm.
+        ``tangential`` ``abs(F_t1)``, ``axial`` ``abs(F_a1)``, ``radial`` F_r, ``normal`` W,
+        ``radial_2`` F_r, ``axial_2`` ``abs(F_t1)`` (the wheel's axial force), ``vector`` the force
+        on the worm.
 
     Raises
     ------

@@ -582,9 +582,8 @@ class GearPair:
             X_W of the flanks for the scuffing temperatures (1: case-carburized, as the FZG
             test gears).
         edition : {2019, 2006}
-            The edition of ISO 6336-1/-2/-3 (:data:`gears.rating.iso6336.EDITIONS`; they differ
-            in ISO 6336-3's Y_F and Y_beta, docs/rating.md): 2006 is the edition of
-            ISO/TR 6336-30:2017's worked examples.
+            ISO 6336-1/-2/-3's edition (:data:`gears.rating.bending.EDITIONS`: Y_F and Y_beta
+            differ); 2006 is the one of ISO/TR 6336-30:2017's worked examples.
         **factors
             Any factor by its ISO symbol (``K_v=1.0``, ``K_Hbeta=1.16``, ``Y_F=(2.1, 2.2)``)
             replaces the computed one (:data:`gears.rating.iso6336.FACTORS`); ``K_Hbeta`` and
@@ -619,8 +618,7 @@ class GearPair:
                        sigma_Hlim=sigma_Hlim, sigma_Flim=sigma_Flim, face_width=face_width,
                        contacts=contacts, idler=idler, misalignment=misalignment, root=root,
                        root_roughness=root_roughness, scuffing=scuffing,
-                       welding_factor=welding_factor, edition=edition,
-                       **factors)  # fmt: skip
+                       welding_factor=welding_factor, edition=edition, **factors)  # fmt: skip
         if spectrum is not None:
             if torque is not None or speed is not None:
                 raise GearError("give either torque and speed or spectrum=, not both")
@@ -653,18 +651,16 @@ class GearPair:
         """
         from gears.contact.result import contact
 
-        return contact(
-            self, torque, misalignment=misalignment, f_ma=f_ma, f_sh=f_sh, positions=positions,
-            slices=slices, center_distance_error=center_distance_error, modulus=modulus,
-            poisson=poisson,
-        )  # fmt: skip
+        return contact(self, torque, misalignment=misalignment, f_ma=f_ma, f_sh=f_sh,
+                       positions=positions, slices=slices, modulus=modulus, poisson=poisson,
+                       center_distance_error=center_distance_error)  # fmt: skip
 
     def harris(
         self, torques: ArrayLike, reliefs: ArrayLike, *, relief_length: float | None = None,
         kind: str = "linear", positions: int = 64, slices: int | None = None,
     ) -> HarrisMap:  # fmt: skip
-        """The Harris map: transmission error peak to peak over tip ``reliefs`` (mm, the same
-        on both gears) and ``torques`` (N m on gear 1) (:func:`gears.contact.result.harris`)."""
+        """The Harris map: transmission error peak to peak over tip ``reliefs`` (mm, both
+        gears) and ``torques`` (N m on gear 1) (:func:`gears.contact.result.harris`)."""
         from gears.contact.result import harris
 
         return harris(self, torques, reliefs, relief_length=relief_length, kind=kind,

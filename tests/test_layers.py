@@ -64,6 +64,7 @@ LAYERS = {
             "contact.analysis",
             "contact.flank",
             "worm.geometry",
+            "worm._wheel",
             "figures.forces",
             "noncircular.conjugate",
         ],

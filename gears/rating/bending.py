@@ -13,9 +13,11 @@ sensitivity Y_deltarelT (§13), the relative surface factor Y_RrelT (§14) and t
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
+from gears.errors import GearError
 from gears.involute import inv
 from gears.namespace import of
 from gears.rating._arrays import out as _out
@@ -23,6 +25,8 @@ from gears.rating._arrays import where as _where
 from gears.rating.materials import ROOT_SURFACE_CLASS, SIZE_CLASS
 
 __all__ = [
+    "EDITIONS",
+    "check_edition",
     "deep_tooth_factor",
     "form_factors",
     "helix_factor_root",
@@ -34,6 +38,22 @@ __all__ = [
     "root_size_factor",
     "root_surface_factor",
 ]
+
+
+#: The editions of ISO 6336-1/-2/-3 a rating follows (``edition=``), the default first. They
+#: differ in ISO 6336-3's Y_F (the 2019 edition's load distribution influence factor f_eps) and
+#: Y_beta (its 1/cos^3 beta); docs/rating.md, "The edition".
+EDITIONS = (2019, 2006)
+
+
+def check_edition(edition: Any) -> int:
+    """``edition`` as one of :data:`EDITIONS`, or a GearError naming it and the valid ones."""
+    if type(edition) in (int, np.int64) and int(edition) in EDITIONS:
+        return int(edition)
+    raise GearError(
+        f"edition = {edition!r}; valid are 2019 (ISO 6336-1/-2/-3:2019, the default) and 2006 "
+        "(ISO 6336-1/-2/-3:2006)"
+    )
 
 
 # --- the root: load point and form ------------------------------------------------------------

@@ -129,7 +129,7 @@ class Rating:
     @property
     def edition(self) -> int:
         """The edition of ISO 6336-1/-2/-3 the rating follows, 2019 or 2006
-        (:data:`gears.rating.iso6336.EDITIONS`)."""
+        (:data:`gears.rating.bending.EDITIONS`)."""
         return int(self.settings.get("edition", 2019))
 
     @property

@@ -10,8 +10,8 @@ arguments, names the factors and the results (:data:`FACTORS`, :data:`QUANTITIES
 :data:`REASONS`, :class:`PairRatings`) and runs the calculation in blocks on threads.
 
 The calculation (references are to the clauses of ISO 6336-1/-2/-3, whose 2019 and 2006
-editions (``edition=``, :data:`EDITIONS`) differ here in ISO 6336-3's Y_F and Y_beta only, and to
-the reference card ``rating.md``; ISO/TR 6336-30 Example 1, by the 2006 parts, is the test):
+editions (``edition=``, :data:`gears.rating.bending.EDITIONS`) differ here in ISO 6336-3's Y_F
+and Y_beta only; ISO/TR 6336-30 Example 1, by the 2006 parts, is the test):
 
 * nominal load ``F_t = 2000 T1 / d1`` (N; T1 in N m, d1 in mm), pitch-line speed
   ``v = pi d1 n1 / 60000`` (m/s, n1 the speed of gear 1 relative to its carrier);
@@ -70,38 +70,20 @@ from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import gears_part, load_part, rate_block, rows_of
 from gears.rating._one import PLAIN as _PLAIN
 from gears.rating._one import plain_key, plain_numbers, plain_or_array
-from gears.rating.bending import load_point
-from gears.rating.materials import Material, material
+from gears.rating.bending import check_edition, load_point
+from gears.rating.materials import material
 
 __all__ = [
-    "EDITIONS",
     "FACTORS",
     "QUANTITIES",
     "REASONS",
     "OnePair",
     "PairRatings",
-    "check_edition",
     "rate_again",
     "rate_one",
     "rate_pairs",
     "rate_reduced",
 ]
-
-#: The editions of ISO 6336-1/-2/-3 a rating follows (``edition=``), the default first. They
-#: differ in ISO 6336-3's Y_F (the 2019 edition's load distribution influence factor f_eps) and
-#: Y_beta (its 1/cos^3 beta); docs/rating.md, "The edition".
-EDITIONS = (2019, 2006)
-
-
-def check_edition(edition: Any) -> int:
-    """``edition`` as one of :data:`EDITIONS`, or a GearError naming it and the valid ones."""
-    if type(edition) in (int, np.int64) and int(edition) in EDITIONS:
-        return int(edition)
-    raise GearError(
-        f"edition = {edition!r}; valid are 2019 (ISO 6336-1/-2/-3:2019, the default) and 2006 "
-        "(ISO 6336-1/-2/-3:2006)"
-    )
-
 
 # --- the factors and their clauses: (symbol, per gear, what, clause) --------------------------
 #: Every factor :func:`rate_pairs` reports and accepts as an override (``K_v=1.0``,
@@ -393,9 +375,10 @@ def rate_pairs(
         Factors that replace the computed ones (``{"K_v": 1.0, "K_Hbeta": 1.16}``; names of
         :data:`FACTORS`, a pair for per-gear factors); later factors follow from the given ones.
     edition : {2019, 2006}
-        The edition of ISO 6336-1/-2/-3 (:data:`EDITIONS`): 2019 multiplies Y_F by its load
-        distribution influence factor f_eps and divides Y_beta by cos^3 beta (ISO 6336-3:2019
-        §6.2, Clause 8); 2006 is the edition ISO/TR 6336-30:2017 works by.
+        The edition of ISO 6336-1/-2/-3 (:data:`gears.rating.bending.EDITIONS`): 2019
+        multiplies Y_F by its load distribution influence factor f_eps and divides Y_beta by
+        cos^3 beta (ISO 6336-3:2019 §6.2, Clause 8); 2006 is the edition ISO/TR 6336-30:2017
+        works by.
     errors : {"raise", "mask"}
         A pair outside a method's validity (:data:`REASONS`) raises a GearError naming it and
         the reason ("raise"), or gets ``valid = False`` with NaN factors and zero safeties.
@@ -601,7 +584,7 @@ def _load_arguments(args):
 
 def _all_arguments(args):
     """Every argument checked, the geometry computed (or kept for one pair)."""
-    m1, m2 = (_as_material(v) for v in _pair_of("material", args["material"]))
+    m1, m2 = (material(v) for v in _pair_of("material", args["material"]))
     a = _checked(args, m1, m2)
     r1, r2 = _pair_of("root", args["root"]) if args["root"] is not None else (None, None)
     for i, r in ((1, r1), (2, r2)):
@@ -814,7 +797,3 @@ def _number_of(v):
     if t is float:
         return np.float64(v)
     return np.asarray(v)[()]
-
-
-def _as_material(value) -> Material:
-    return material(value)

@@ -24,8 +24,9 @@ from hypothesis import strategies as st
 
 from gears import BasicRack, Gear, GearPair
 from gears.errors import GearError
+from gears.rating import EDITIONS
 from gears.rating.bending import form_factors, helix_factor_root, load_distribution_factor
-from gears.rating.iso6336 import EDITIONS, rate_pairs
+from gears.rating.iso6336 import rate_pairs
 from trains import Planetary, Train, rating
 
 
