@@ -168,7 +168,9 @@ def test_a_scheduler_killed_mid_run_is_one_line():
     # the CLI printed a 23-line Dask traceback (its log of the failed reconnections) before its
     # one-line message. The command runs as a process of its own, as a user runs it (under
     # pytest Dask's log would go to pytest's handler), and the scheduler is killed (SIGKILL)
-    # while the search runs (a space of 60+ chunks, several seconds on one worker thread)
+    # while the search runs (a space of 60+ chunks, several seconds on one worker thread): as
+    # soon as the scheduler holds the search's first tasks, not after a fixed wait (on a quiet
+    # machine the search could end before it)
     import os
     import subprocess
     import sys
@@ -177,12 +179,17 @@ def test_a_scheduler_killed_mid_run_is_one_line():
         root = str(Path(__file__).parents[1])
         env = {**os.environ, "PYTHONPATH": root}
         argv = ["search", "pairs", "--ratio", "2", "--module", "1", "2", "3", "--teeth", "12",
-                "80", "--shifts", "-0.5", "1", "0.01", "--scheduler", address,
+                "80", "--shifts", "-0.5", "1", "0.005", "--scheduler", address,
                 "--connect-timeout", "2"]  # fmt: skip
         run = "import sys; from trains.cli.app import main; sys.exit(main(sys.argv[1:]))"
         cli = subprocess.Popen([sys.executable, "-c", run, *argv], env=env, text=True,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)  # fmt: skip
-        time.sleep(3.0)  # s: started, connected, chunks running
+        with Client(address, timeout=30) as probe:
+            deadline = time.monotonic() + 60.0
+            while time.monotonic() < deadline and cli.poll() is None:
+                if probe.run_on_scheduler(lambda dask_scheduler: len(dask_scheduler.tasks)):
+                    break  # the search's chunks are on the scheduler
+                time.sleep(0.05)
         scheduler.kill()
         out, err = cli.communicate(timeout=60)
     assert cli.returncode == 2, (out, err)

@@ -110,7 +110,7 @@ def rating_arguments(parser: argparse.ArgumentParser, required: bool = True, *,
 
 def edition_argument(parser: argparse.ArgumentParser) -> None:
     """``--edition``: the edition of ISO 6336-1/-2/-3 an ISO 6336 rating follows (``rate``,
-    ``planetary``; :data:`gears.rating.iso6336.EDITIONS`), read by :func:`edition_option`."""
+    ``planetary``; :data:`gears.rating.bending.EDITIONS`), read by :func:`edition_option`."""
     parser.add_argument(
         "--edition", type=int, choices=(2019, 2006), default=None,
         help="edition of ISO 6336-1/-2/-3 (default 2019; 2006 is the edition of ISO/TR "
