@@ -404,7 +404,7 @@ def rate_pairs(
 
     Examples
     --------
-    ISO/TR 6336-30 Example 1 (rating.md) with K_Hbeta = 1.16 given as in the TR:
+    ISO/TR 6336-30 Example 1 (docs/rating.md) with K_Hbeta = 1.16 given as in the TR:
 
     >>> from gears.rack import BasicRack
     >>> r = rate_pairs(17, 103, 8, 100, 9000, 360, x1=0.14522, helix_angle=15.8, quality=5,
