@@ -214,8 +214,10 @@ def moment_about(point: np.ndarray, force: np.ndarray, axis: np.ndarray) -> floa
     with np.errstate(over="ignore", invalid="ignore"):
         m = float(p[0] * v[1] - p[1] * v[0] if axis[2] == 1.0 else np.cross(p, v) @ axis)
     if not np.isfinite(m):
+        size, arm = float(np.max(np.abs(v))), float(np.max(np.abs(p)))
         raise TrainError(
-            "the moments of the mesh forces overflow the floating-point range (about 1e308); "
-            "valid are torques and positions whose moments stay finite"
+            f"a mesh force of {size:.3g} N at {arm:.3g} mm: its moment overflows the "
+            "floating-point range (about 1e308 N mm); valid are forces and positions whose "
+            "moments stay finite (a smaller torque)"
         )
     return m

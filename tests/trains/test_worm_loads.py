@@ -171,7 +171,8 @@ def test_a_motor_coupled_to_the_worm_shares_its_axis():
     motor, worm = ld.members["motor"], ld.members["worm"]
     np.testing.assert_allclose(motor.axis, worm.axis, atol=0)
     np.testing.assert_allclose(motor.position, worm.position, atol=0)
-    assert abs(np.dot(worm.axis, [0.0, 0.0, 1.0])) == 0.0
+    # across the plane: z x e has no z component (1e-15: one rounding of a unit vector)
+    assert abs(np.dot(worm.axis, [0.0, 0.0, 1.0])) <= 1e-15
 
 
 def test_shifted_wheel_balances_both_members():
@@ -309,3 +310,15 @@ def test_property_reactions_of_a_shaft_across_the_plane(theta, forces, za, zb):
     reach = max(1.0, float(np.abs(p).max()), abs(za), abs(zb))
     np.testing.assert_allclose(m - torque * axis, 0.0, atol=1e-7 * scale * reach)
     assert abs(np.dot(r[1], axis)) <= 1e-9 * scale  # B floats
+
+
+def test_a_moment_past_floats_range_names_the_force_and_its_arm():
+    # 1e200 N at 1e200 mm: the moment 1e400 N mm is past float's largest (about 1.8e308)
+    from trains.crossing import moment_about
+
+    z = np.array([0.0, 0.0, 1.0])
+    with pytest.raises(TrainError, match=r"force of 1e\+200 N at 1e\+200 mm.*overflows"):
+        moment_about(np.array([1e200, 0.0, 0.0]), np.array([0.0, 1e200, 0.0]), z)
+    across = np.array([1.0, 0.0, 0.0])  # a worm's axis: the other branch
+    with pytest.raises(TrainError, match=r"force of 1e\+200 N at 1e\+200 mm"):
+        moment_about(np.array([0.0, 1e200, 0.0]), np.array([0.0, 0.0, 1e200]), across)
