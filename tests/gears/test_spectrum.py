@@ -229,6 +229,15 @@ def test_equivalent_safety_property(bins, mode, code):
     if 1e-4 * 1.01 < s < 1e4 / 1.01:
         assert float(miner_damage(ratio * s * (1 + 1e-9), 1.0, cycles, code, mode)) >= 1.0 - 1e-9
         assert float(miner_damage(ratio * s * (1 - 1e-6), 1.0, cycles, code, mode)) < 1.0
+    # the solver's own Miner sum (each bin's S-N line written through its knee, in kept
+    # buffers) is miner_damage's (the S-N curve by its knots): the same formula two ways, to
+    # 1e-11 relative (ln N_f of up to a few hundred, rounded in a different order)
+    from gears.rating.miner import _damage_and_safety
+
+    for k in (0.5, 1.0, 2.0):
+        d, _ = _damage_and_safety(ratio * k, 1.0, cycles, code, mode)
+        want = float(miner_damage(ratio * k, 1.0, cycles, code, mode))
+        assert float(d) == pytest.approx(want, rel=1e-11, abs=1e-300), (k, float(d), want)
 
 
 @settings(max_examples=30, deadline=None)
