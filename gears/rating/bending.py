@@ -48,7 +48,8 @@ EDITIONS = (2019, 2006)
 
 def check_edition(edition: Any) -> int:
     """``edition`` as one of :data:`EDITIONS`, or a GearError naming it and the valid ones."""
-    if type(edition) in (int, np.int64) and int(edition) in EDITIONS:
+    # an integer (not a bool, a float or a string), numpy's of any width
+    if (type(edition) is int or isinstance(edition, np.integer)) and int(edition) in EDITIONS:
         return int(edition)
     raise GearError(
         f"edition = {edition!r}; valid are 2019 (ISO 6336-1/-2/-3:2019, the default) and 2006 "

@@ -204,13 +204,27 @@ def test_trains_and_planetary_pass_the_edition_on():
     assert r["in-out"].edition == 2006
 
 
-@pytest.mark.parametrize("bad", [2020, "2019", 2019.0, True, None, (2019,)])
+@pytest.mark.parametrize(
+    "bad",
+    [2020, "2019", 2019.0, True, None, (2019,), np.bool_(True), np.int32(2020), np.float64(2019.0)],
+)
 def test_a_bad_edition_is_named_with_the_valid_ones(bad):
     p = GearPair(Gear(20, 3, face_width=30), Gear(50, 3, face_width=30))
     with pytest.raises(GearError, match=r"edition = .*valid are 2019 .* and 2006"):
         p.rating(200, 1500, edition=bad)
     with pytest.raises(GearError, match=r"edition = "):
         rate_pairs(20, 50, 3, 30, 200, 1500, edition=bad)
+
+
+@pytest.mark.parametrize("edition", [np.int32(2006), np.int64(2006), np.uint16(2006)])
+def test_a_numpy_integer_edition_is_the_edition(edition):
+    # an edition read from an array (any integer width) is the edition: the same rating
+    p = GearPair(Gear(20, 3, helix_angle=15, face_width=30),
+                 Gear(50, 3, helix_angle=-15, face_width=30))  # fmt: skip
+    r = p.rating(200, 1500, edition=edition)
+    assert r.edition == 2006
+    assert r.safety_bending == pytest.approx(p.rating(200, 1500, edition=2006).safety_bending,
+                                             rel=1e-12)  # fmt: skip
 
 
 # --- properties -------------------------------------------------------------------------------
