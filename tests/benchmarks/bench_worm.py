@@ -113,9 +113,9 @@ def run(z2: int, tolerance: float, shift: float = 0.3, face: float | None = None
     }  # fmt: skip
 
 
-def _openscad(source: str) -> float | None:
-    """Seconds of one whole ``openscad -o x.stl`` process on ``source`` (None without OpenSCAD
-    or BOSL2)."""
+def _openscad(source: str, read=None):
+    """Seconds of one whole ``openscad -o x.stl`` process on ``source``, and with ``read`` what
+    ``read(path)`` makes of its STL as well (None without OpenSCAD or BOSL2)."""
     import shutil
     import subprocess
     import tempfile
@@ -130,7 +130,8 @@ def _openscad(source: str) -> float | None:
         t0 = time.perf_counter()
         subprocess.run([exe, "-o", stl, scad], env=dict(os.environ, OPENSCADPATH=lib),
                        check=True, capture_output=True)  # fmt: skip
-        return time.perf_counter() - t0
+        seconds = time.perf_counter() - t0
+        return seconds if read is None else (seconds, read(stl))
 
 
 BOSL2_WHEEL = (
@@ -212,27 +213,13 @@ def speed(rounds: int = 5) -> dict | None:
 def bosl2() -> dict | None:
     """BOSL2's worm wheel z 16, m 2, worm diameter 20, timed and measured (None without
     OpenSCAD)."""
-    import shutil
-    import subprocess
-    import tempfile
-
     import trimesh
 
-    exe, lib = shutil.which("openscad"), os.environ.get("OPENSCADPATH", "/tmp/bosl")
-    if exe is None or not os.path.isdir(os.path.join(lib, "BOSL2")):
+    load0 = os.getloadavg()[0]
+    done = _openscad(BOSL2_WHEEL, trimesh.load)
+    if done is None:
         return None
-    with tempfile.TemporaryDirectory() as tmp:
-        scad, stl = os.path.join(tmp, "wheel.scad"), os.path.join(tmp, "wheel.stl")
-        with open(scad, "w") as f:
-            f.write("include <BOSL2/std.scad>\ninclude <BOSL2/gears.scad>\n"
-                    "worm_gear(mod=2, teeth=16, worm_diam=20, worm_starts=1, crowning=0, "
-                    "profile_shift=0, pressure_angle=20);\n")  # fmt: skip
-        load0 = os.getloadavg()[0]
-        t0 = time.perf_counter()
-        subprocess.run([exe, "-o", stl, scad], env=dict(os.environ, OPENSCADPATH=lib),
-                       check=True, capture_output=True)  # fmt: skip
-        seconds = time.perf_counter() - t0
-        wheel = trimesh.load(stl)
+    seconds, wheel = done
     w = WormPair(1, 16, 2.0, diameter_quotient=10, flank="ZA")
     excess, deficit = accuracy(w, wheel)
     return {
