@@ -60,12 +60,11 @@ def _life(cycles, code, table):
     """The curve of ``table`` at ``cycles``: linear in log-log between the knots, constant
     outside them (one material group: ``np.interp``; groups per row: the same by branches)."""
     logn, logy = table
-    if type(cycles) is float and type(code) is int:  # one pair on Python floats
-        return math.exp(SCALAR.interp(math.log(max(cycles, 1.0)), *_KNOTS[id(table)][code]))
     if isinstance(code, int | np.integer):
         if type(cycles) is float or type(cycles) is np.float64:  # one number: no array
-            return np.float64(math.exp(np.interp(math.log(max(cycles, 1.0)), logn[code],
-                                                 logy[code])))  # fmt: skip
+            y = math.exp(SCALAR.interp(math.log(max(cycles, 1.0)), *_KNOTS[id(table)][code]))
+            # one pair on Python floats gets a Python float, a numpy number a numpy number
+            return y if type(cycles) is float and type(code) is int else np.float64(y)
         n = np.log(np.maximum(cycles, 1.0))
         out = np.exp(np.interp(n, logn[code], logy[code]))
         return out[()] if np.ndim(out) == 0 else out
