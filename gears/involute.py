@@ -240,14 +240,12 @@ def pressure_angle_at(base_radius, radius):
     >>> round(float(np.degrees(pressure_angle_at(1.0, 1.0 / np.cos(np.radians(20))))), 12)
     20.0
     """
-    if type(base_radius) is float and type(radius) is float and radius > 0:
-        ratio = base_radius / radius  # one pair on Python floats (gears.namespace.SCALAR)
-        if ratio <= 1.0 + 1e-14:
-            return math.acos(min(ratio, 1.0))
-    if type(base_radius) is np.float64 and type(radius) is np.float64 and radius > 0:
+    kind = type(base_radius)
+    if (kind is float or kind is np.float64) and type(radius) is kind and radius > 0:
         ratio = base_radius / radius  # one number: no arrays (rating one pair)
         if ratio <= 1.0 + 1e-14:
-            return np.arccos(min(ratio, 1.0))
+            angle = math.acos(min(ratio, 1.0))  # Python floats (gears.namespace.SCALAR) stay so
+            return angle if kind is float else np.float64(angle)
     rb, r = np.broadcast_arrays(np.asarray(base_radius, float), np.asarray(radius, float))
     ratio = np.divide(rb, r, out=np.full(r.shape, np.inf), where=r > 0)
     bad = ~(ratio <= 1.0 + 1e-14)
