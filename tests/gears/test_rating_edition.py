@@ -254,6 +254,24 @@ def test_editions_agree_on_pitting_and_differ_by_the_two_factors(z1, ratio, heli
         assert float(b) / float(a) == pytest.approx(c3 / f, rel=1e-9)
 
 
+@settings(max_examples=100, deadline=None)
+@given(eps_beta=st.floats(0.0, 5.0), eps_alpha_n=st.floats(1.0, 4.0), beta=st.floats(-45.0, 45.0))
+def test_property_the_two_factors_on_floats_and_arrays(eps_beta, eps_alpha_n, beta):
+    """f_eps and Y_beta of any overlap, virtual contact ratio and helix: finite, f_eps in
+    (0, 1] (ISO 6336-3:2019 Formulae (10) to (14) written out above), and the same on Python
+    floats (math) as in an array (numpy), to 1e-12 relative."""
+    f = load_distribution_factor(eps_beta, eps_alpha_n)
+    assert type(f) is float and 0.0 < f <= 1.0
+    assert f == pytest.approx(_f_eps(eps_beta, eps_alpha_n), rel=1e-12)
+    row = load_distribution_factor(np.array([eps_beta, 0.5]), np.array([eps_alpha_n, 1.5]))
+    assert float(row[0]) == pytest.approx(f, rel=1e-12)
+    for edition in EDITIONS:
+        y = helix_factor_root(eps_beta, beta, edition)
+        assert type(y) is float and math.isfinite(y) and y > 0.0
+        ys = helix_factor_root(np.array([eps_beta]), np.array([beta]), edition)
+        assert float(ys[0]) == pytest.approx(y, rel=1e-12)
+
+
 # --- the command line -------------------------------------------------------------------------
 def _cli(capsys, *argv):
     from trains.cli.app import main
