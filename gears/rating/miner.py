@@ -179,12 +179,7 @@ def _solve(z, lc, knots):
         above_knee = lc - knots[1]  # ln N_L - ln N_f at the knee
         a1, a2 = _slopes(knots)
 
-        def log_terms(x):
-            """ln of each bin's damage at x were it on its sloped segment (held above e^-700:
-            the masked terms stay out of exp's slow underflow)."""
-            return np.maximum(above_knee - _hinge(x - e1, a1, a2), -700.0)
-
-        damage = _damage_at(e2, e1, e0, n_l, above_knee, a1, a2)
+        damage, log_terms = _damage_at(e2, e1, e0, n_l, above_knee, a1, a2)
         d0 = damage(np.zeros(n))
         # the first stretch (knots[k-1], knots[k]] at whose end D >= 1 (k = 3 bins: beyond the
         # last knot, every bin static)
@@ -236,10 +231,12 @@ def _solve(z, lc, knots):
 
 
 def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
-    """``damage(x)``: Miner's sum at x per row, bins on the first axis (left-continuous: a bin
-    at one of its knots is on the side below). ``exact=False`` where x lies at or below the
-    static knot of every bin of N_L >= 1 (the search's bound): only a bin of less than one
-    cycle can be static there. On its sloped segment a bin's ln damage is one of the S-N
+    """``(damage, log_terms)``: ``damage(x)`` Miner's sum at x per row, bins on the first axis
+    (left-continuous: a bin at one of its knots is on the side below), ``log_terms(x)`` the ln
+    of each bin's damage at x were it on its sloped segment (held above e^-700: the masked
+    terms stay out of exp's slow underflow). ``damage(x, exact=False)`` where x lies at or
+    below the static knot of every bin of N_L >= 1 (the search's bound): only a bin of less
+    than one cycle can be static there. On its sloped segment a bin's ln damage is one of the S-N
     curve's two log-log lines, written in x through the bin's knee e1 (the lower of the two
     where the curve is steeper below the knee), so that a search step is a few passes over
     buffers kept for it."""
@@ -256,15 +253,18 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
 
     short = bool(np.any(n_l < 1.0))  # a bin of less than one cycle
 
-    def damage(x, exact=True):
-        np.subtract(below, a2 * x, out=terms)
-        np.subtract(above, a1 * x, out=other)
+    def sloped(x, out, spare):
+        """ln of each bin's damage at x on its sloped segment, into ``out``."""
+        np.subtract(below, a2 * x, out=out)
+        np.subtract(above, a1 * x, out=spare)
         if pick is None:
-            np.copyto(terms, other, where=np.greater(x, e1))
+            np.copyto(out, spare, where=np.greater(x, e1))
         else:
-            pick(terms, other, out=terms)
-        np.maximum(terms, floor, out=terms)
-        np.exp(terms, out=terms)
+            pick(out, spare, out=out)
+        return np.maximum(out, floor, out=out)
+
+    def damage(x, exact=True):
+        np.exp(sloped(x, terms, other), out=terms)
         np.greater(x, e2, out=mask)
         np.multiply(terms, mask, out=terms)
         if not exact and not short:
@@ -276,7 +276,10 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
             np.add(terms, static, out=terms)
         return terms.sum(axis=0)
 
-    return damage
+    def log_terms(x):
+        return sloped(x, np.empty(e1.shape), np.empty(e1.shape))
+
+    return damage, log_terms
 
 
 def _newton(c, A1, A2, a1, a2, ref, w):
