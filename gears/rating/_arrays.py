@@ -2,11 +2,13 @@
 
 Private to the rating family. ``where`` and ``out`` keep one pair's numbers numpy scalars
 (rating one pair is mostly their cost); ``number`` checks a value or an array against its range
-and names the first bad entry; ``pair_of`` splits a per-gear value.
+and names the first bad entry; ``pair_of`` splits a per-gear value; ``reducer`` checks what a
+reduced rating is handed.
 """
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
@@ -129,3 +131,21 @@ PUBLIC = {"T": "torque", "n": "speed", "K_A": "application_factor", "K_gamma": "
                     ("sH", "sigma_Hlim"), ("sF", "sigma_Flim"))
     for i in (1, 2)
 }  # fmt: skip
+
+
+def reducer(reduce, chunk, arguments: dict, function) -> int:
+    """``chunk`` of :func:`gears.rating.iso6336.rate_reduced`, checked with the rest: ``reduce``
+    a callable, ``chunk`` an integer >= 1, ``arguments`` those of ``function`` by name (none
+    unknown, none missing); else a GearError naming the first that is not."""
+    if not callable(reduce):
+        raise GearError(f"reduce = {reduce!r}; valid is a callable reduce(q, i0, i1)")
+    if not (type(chunk) is int or isinstance(chunk, np.integer)) or chunk < 1:
+        raise GearError(f"chunk = {chunk!r}; valid is an integer >= 1 (ratings a block)")
+    params = inspect.signature(function).parameters
+    unknown = [k for k in arguments if k not in params]
+    missing = [k for k, v in params.items() if v.default is v.empty and k not in arguments]
+    if unknown or missing:
+        what = f"{unknown[0]} is not an argument" if unknown else f"{missing[0]} is missing"
+        raise GearError(f"{what}; valid are the arguments of {function.__name__} by name: "
+                        f"{', '.join(params)}")  # fmt: skip
+    return int(chunk)

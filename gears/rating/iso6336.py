@@ -65,7 +65,7 @@ from gears.errors import GearError
 from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
 from gears.rating._arrays import PUBLIC as _PUBLIC
-from gears.rating._arrays import number
+from gears.rating._arrays import number, reducer
 from gears.rating._arrays import pair_of as _pair_of
 from gears.rating._block import gears_part, load_part, rate_block, rows_of
 from gears.rating._one import PLAIN as _PLAIN
@@ -462,6 +462,7 @@ def rate_reduced(reduce, chunk: int = _CHUNK, **arguments: Any) -> PairRatings:
     go in pieces (at most 32 768, at least one a thread), each piece's gears' part computed at
     once and its blocks' load parts from it. Returns ``valid`` and ``reason`` only (the other
     fields None) and raises as :func:`rate_pairs`."""
+    chunk = reducer(reduce, chunk, arguments, rate_pairs)
     return _rate({**_DEFAULTS, **arguments}, reduce, chunk)[0]
 
 

@@ -201,6 +201,31 @@ def test_rate_reduced_property(z1, torques, chunk, threads):
     assert np.all(np.isfinite(seen))
 
 
+@pytest.mark.parametrize(
+    ("reduce", "chunk", "extra", "named"),
+    [
+        (None, 10, {}, r"reduce = None; valid is a callable"),
+        ("sum", 10, {}, r"reduce = 'sum'; valid is a callable"),
+        (print, 0, {}, r"chunk = 0; valid is an integer >= 1"),
+        (print, 1.5, {}, r"chunk = 1.5; valid is an integer >= 1"),
+        (print, "x", {}, r"chunk = 'x'; valid is an integer >= 1"),
+        (print, True, {}, r"chunk = True; valid is an integer >= 1"),
+        (print, 10, {"torqe": 100.0}, r"torqe is not an argument; valid are the arguments of "
+                                      r"rate_pairs by name: z1, z2"),
+        (print, 10, {"speed": None}, r"speed is missing; valid are the arguments of rate_pairs"),
+    ],
+)  # fmt: skip
+def test_rate_reduced_names_what_it_cannot_take(reduce, chunk, extra, named):
+    # a reducer that is not callable, a block size that is not a whole number of ratings, an
+    # argument rate_pairs does not have or a required one left out: our own error, naming it
+    from gears.rating.iso6336 import rate_reduced
+
+    kw = dict(z1=20, z2=61, module=3, face_width=30, torque=100.0, speed=1450.0) | extra
+    kw = {k: v for k, v in kw.items() if v is not None}
+    with pytest.raises(GearError, match=named):
+        rate_reduced(reduce, chunk, **kw)
+
+
 @settings(max_examples=10, deadline=None)
 @given(bins_strategy)
 def test_pair_spectrum_property(bins):
