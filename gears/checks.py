@@ -307,10 +307,10 @@ def equal_sliding_split(z1, z2, module, total, pressure_angle=20.0, helix_angle=
                         internal=False, addendum=1.0, tip_shortening=True):  # fmt: skip
     """x1 of the ``"equal_sliding"`` split of a shift sum (arrays): the largest specific sliding
     of both flanks is equal, ``|zeta_1(u_A)| = |zeta_2(u_E)|`` (Joldasbekov §12 rule 3), the rule of
-    ``GearPair.at_center_distance(..., split="equal_sliding")``. As there: log|zeta_1| -
-    log|zeta_2| on 61 values of x1 (S/2 +- 1.5 external, -1.5 ... 1.5 internal), the first sign
-    change between two finite values, then bisection to machine precision. NaN where no split
-    balances (the pair method raises there).
+    ``GearPair.at_center_distance(..., split="equal_sliding")``. As there:
+    ``log(abs(zeta_1)) - log(abs(zeta_2))`` on 61 values of x1 (S/2 +- 1.5 external, -1.5 ...
+    1.5 internal), the first sign change between two finite values, then bisection to machine
+    precision. NaN where no split balances (the pair method raises there).
 
     >>> round(float(equal_sliding_split(12, 30, 4, 0.8)), 4)   # GearPair.at_center_distance
     0.5271

@@ -143,7 +143,7 @@ def _finite(result, what: str):
 
 
 def _norm(v: np.ndarray) -> np.ndarray:
-    """|v| over the last axis without squaring past the float range."""
+    """``abs(v)`` over the last axis without squaring past the float range."""
     return np.hypot(np.hypot(v[..., 0], v[..., 1]), v[..., 2])
 
 

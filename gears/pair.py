@@ -397,7 +397,7 @@ class GearPair:
 
     @property
     def overlap_ratio(self) -> float:
-        """epsilon_beta = b sin|beta| / (pi m_n) (Ozols 21.31); b = the smaller face width.
+        """epsilon_beta = ``b sin(abs(beta)) / (pi m_n)`` (Ozols 21.31); b = the smaller face width.
 
         Raises :class:`GearError` when neither gear has a face width.
         """

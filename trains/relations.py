@@ -378,7 +378,7 @@ class Structure:
 
 
 def _check_overflow(res: np.ndarray, names, values) -> None:
-    """Refuse float speeds whose solved speeds leave float64's range (|w| > 1.8e308)."""
+    """Refuse float speeds whose solved speeds leave float64's range (``abs(w) > 1.8e308``)."""
     if not np.all(np.isfinite(res)):
         given = ", ".join(f"|{n}| up to {np.max(np.abs(np.asarray(v, dtype=float))):.3g}"
                           for n, v in zip(names, values, strict=True))  # fmt: skip

@@ -185,7 +185,7 @@ def _place_keys(tuples: list[tuple], ratios: _Ratios) -> tuple[list, list[tuple]
 
 
 def _ratio_errors(key_tuples, tuples, ratios: _Ratios, target: Fraction, tol: float) -> dict:
-    """Each tuple's relative ratio error |prod - target| / target: 0 for an exact search (its
+    """Each tuple's relative ratio error ``abs(prod - target) / target``: 0 for an exact search (its
     tuples meet the target exactly), else from the exact products."""
     if tol == 0:
         return dict.fromkeys(key_tuples, 0.0)
