@@ -18,7 +18,14 @@ from gears.arguments import check_length, check_real
 from gears.budget import BUDGETS
 from gears.errors import GearError
 
-__all__ = ["MAX_OUTLINE_VERTICES", "assemble", "check_backlash", "check_blank", "one_sided"]
+__all__ = [
+    "MAX_OUTLINE_VERTICES",
+    "assemble",
+    "check_backlash",
+    "check_blank",
+    "chord_angle",
+    "one_sided",
+]
 
 # Chords are placed at half the tolerance: the deviation then stays below it, and a thickness
 # measured across two flanks (2 sag / cos alpha_y) stays within the tolerance too.
@@ -86,6 +93,17 @@ def check_backlash(gear, backlash) -> float:
     return j
 
 
+def chord_angle(radius: float, tolerance: float) -> float:
+    """The largest angle (rad) one chord may span on an arc of ``radius`` with its sagitta
+    within ``tolerance``: ``2 acos(1 - tolerance / radius)`` (sagitta ``r (1 - cos(phi / 2))``),
+    a whole turn where the tolerance passes the diameter.
+
+    >>> round(chord_angle(10.0, 0.0005), 6)   # 2 sqrt(2 e / r) = 0.02 for a small sagitta
+    0.02
+    """
+    return 2.0 * math.acos(max(1.0 - tolerance / max(radius, 1e-300), -1.0))
+
+
 def arc_segments(radius: float, angle: float, tolerance: float) -> int:
     """Segments for an arc of ``radius`` over ``angle`` rad with sagitta <= ``tolerance``.
 
@@ -94,9 +112,7 @@ def arc_segments(radius: float, angle: float, tolerance: float) -> int:
     """
     if angle <= 0 or radius <= 0:
         return 1
-    c = 1.0 - _SAFETY * tolerance / radius
-    step = 2.0 * math.acos(max(c, -1.0))
-    return max(1, math.ceil(angle / step))
+    return max(1, math.ceil(angle / chord_angle(radius, _SAFETY * tolerance)))
 
 
 #: A vertex next to a chord that would add material moves into the material by this many times

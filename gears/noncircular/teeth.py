@@ -28,6 +28,7 @@ import numpy as np
 import shapely
 
 from gears.budget import check_budget
+from gears.cutting.sampling import chord_angle
 from gears.errors import GearError
 
 __all__ = [
@@ -69,8 +70,7 @@ def _arc_points(radius: float, start: float, stop: float, sag: float) -> np.ndar
     chords sagging at most ``sag``."""
     if radius <= 0:
         return np.zeros((1, 2))
-    step = 2.0 * math.acos(max(-1.0, 1.0 - sag / radius))
-    n = max(1, math.ceil(abs(stop - start) / max(step, 1e-9)))
+    n = max(1, math.ceil(abs(stop - start) / max(chord_angle(radius, sag), 1e-9)))
     t = np.linspace(start, stop, n + 1)
     return np.stack([radius * np.cos(t), radius * np.sin(t)], axis=-1)
 

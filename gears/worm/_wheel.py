@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from gears.cutting.sampling import chord_angle
 from gears.errors import GearError
 from gears.worm.envelope import plane_rack, rack_conjugate, rolled
 
@@ -411,8 +412,7 @@ def _refine(curve, tolerance: float, g=None) -> np.ndarray:
 
 
 def _arc_count(span: float, radius: float, tolerance: float) -> int:
-    step = 2.0 * math.acos(max(1.0 - tolerance / max(radius, 1e-300), -1.0))
-    return max(math.ceil(span / max(step, 1e-12)) - 1, 1)
+    return max(math.ceil(span / max(chord_angle(radius, tolerance), 1e-12)) - 1, 1)
 
 
 def _sample(plan: _Plan, tolerance: float) -> _Plan:

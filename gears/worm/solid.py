@@ -39,6 +39,7 @@ import shapely
 
 from gears.arguments import check_callback, check_tolerance
 from gears.budget import check_budget
+from gears.cutting.sampling import chord_angle
 from gears.errors import GearError
 from gears.solid.mesh import gear_solid, loft_solid, solid_levels, to_manifold
 from gears.worm._wheel import Wheel, hob_tip, planes
@@ -91,8 +92,7 @@ def _flank_radii(curve, r0: float, r1: float, tolerance: float) -> np.ndarray:
 def _arc(r: float, a0: float, a1: float, tolerance: float) -> np.ndarray:
     """Angles from ``a0`` to ``a1`` (exclusive of both) of an arc of radius ``r`` sampled to
     ``tolerance`` (chord sag)."""
-    step = 2.0 * math.acos(max(1.0 - tolerance / r, -1.0))
-    n = max(math.ceil(abs(a1 - a0) / max(step, 1e-9)), 1)
+    n = max(math.ceil(abs(a1 - a0) / max(chord_angle(r, tolerance), 1e-9)), 1)
     return np.linspace(a0, a1, n + 1)[1:-1]
 
 
@@ -183,8 +183,7 @@ def worm_solid(pair, tolerance: float = 0.01, hob: bool = False):
     if hob:
         return long
     ra = float(pair.geometry.worm_tip_diameter) / 2.0
-    step = 2.0 * math.acos(1.0 - tol / ra)
-    n = max(math.ceil(2.0 * math.pi / step), 8)
+    n = max(math.ceil(2.0 * math.pi / chord_angle(ra, tol)), 8)
     import manifold3d
 
     # the tip cylinder circumscribes a polygon whose chords stay within the tolerance
@@ -209,7 +208,7 @@ def wheel_blank(pair, tolerance: float):
     z_e = math.sqrt(max(rk**2 - (a - re2) ** 2, 0.0))
     z_top = min(half, z_e)
     ang = math.asin(z_top / rk)
-    n = max(math.ceil(2 * ang / (2 * math.acos(1 - tolerance / rk))), 2)
+    n = max(math.ceil(2 * ang / chord_angle(rk, tolerance)), 2)
     t = np.linspace(-ang, ang, n + 1)
     arc = np.stack([a - rk * np.cos(t), rk * np.sin(t)], 1)  # (rho, z), bottom to top
     outline = [(0.0, -half)]
@@ -219,7 +218,7 @@ def wheel_blank(pair, tolerance: float):
     if half > z_top:
         outline.append((re2, half))
     outline.append((0.0, half))
-    segments = max(math.ceil(2 * math.pi / (2 * math.acos(1 - tolerance / re2))), 16)
+    segments = max(math.ceil(2 * math.pi / chord_angle(re2, tolerance)), 16)
     section = manifold3d.CrossSection([np.asarray(outline, float)])  # counter-clockwise
     # revolve takes the section's (x, y) as (rho, z) about the z axis
     return section.revolve(circular_segments=segments)
