@@ -18,14 +18,7 @@ from gears.arguments import check_length, check_real
 from gears.budget import BUDGETS
 from gears.errors import GearError
 
-__all__ = [
-    "MAX_OUTLINE_VERTICES",
-    "assemble",
-    "check_backlash",
-    "check_blank",
-    "chord_angle",
-    "one_sided",
-]
+__all__ = ["MAX_OUTLINE_VERTICES", "assemble", "check_backlash", "check_blank", "one_sided"]
 
 # Chords are placed at half the tolerance: the deviation then stays below it, and a thickness
 # measured across two flanks (2 sag / cos alpha_y) stays within the tolerance too.
