@@ -113,3 +113,23 @@ def stage_products(target, z_max, modules, widths, torque, speed):
 def gearbox_stage_products():
     """:func:`stage_products`, for the brute forces of the gearbox searches."""
     return stage_products
+
+
+def worm_hoist_train(worm):
+    """The hoist of examples/train_worm_hoist.py: motor -> ``worm`` (a ``gears.WormPair``) ->
+    its wheel coupled to a 17/68 m 3 spur pinion -> the drum."""
+    from gears import Gear
+    from trains import Train
+
+    t = Train()
+    t.mesh("worm", "wheel", pair=worm)
+    t.couple("wheel", "pinion")
+    t.mesh("pinion", "drum", gears=(Gear(17, 3), Gear(68, 3)))
+    return t
+
+
+@pytest.fixture(scope="session")
+def worm_hoist():
+    """:func:`worm_hoist_train`, for the worm trains' tests (session-wide: hypothesis tests take
+    it too)."""
+    return worm_hoist_train

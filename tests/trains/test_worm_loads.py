@@ -28,15 +28,6 @@ MU = 0.06  # the hoist example's friction (bronze on hardened steel, well lubric
 SPUR = {"pinion-drum": 0.98}
 
 
-def _hoist(worm: WormPair) -> Train:
-    # examples/train_worm_hoist.py: motor -> worm pair -> spur stage -> drum
-    t = Train()
-    t.mesh("worm", "wheel", pair=worm)
-    t.couple("wheel", "pinion")
-    t.mesh("pinion", "drum", gears=(Gear(17, 3), Gear(68, 3)))
-    return t
-
-
 def _sliding(ld, name="worm-wheel"):
     """The worm's velocity relative to the wheel at the pitch point (independent kinematics)."""
     mesh = ld.meshes[name]
@@ -74,7 +65,7 @@ def _assert_balance(ld, bearings):
     np.testing.assert_allclose(np.sum(held, axis=0), 0.0, atol=1e-9 * scale)
 
 
-def test_hoist_holds_its_load_backwards():
+def test_hoist_holds_its_load_backwards(worm_hoist):
     # The gallery's self-locking hoist (z1 1, q 16, m 4, z2 40; gamma 3.576 deg < phi' 3.653
     # deg) lowering: the drum (100 N m) drives, the worm must be pushed round. Hand derivation
     # from Ozols (14.18) and DIN 3996 with the wheel driving: the spur stage gives the wheel
@@ -82,7 +73,7 @@ def test_hoist_holds_its_load_backwards():
     # 306.25 N; W = F_a1 / (cos a_n cos g + mu sin g) = 325.24 N; F_t1 = W (cos a_n sin g -
     # mu cos g) = -0.412 N (= F_a1 tan(g - phi') < 0); F_r = W sin a_n = 111.24 N.
     worm = WormPair(1, 40, 4.0, diameter_quotient=16)
-    ld = loads(_hoist(worm), "drum", "worm", torque=100.0, friction=MU, mesh_efficiency=SPUR)
+    ld = loads(worm_hoist(worm), "drum", "worm", torque=100.0, friction=MU, mesh_efficiency=SPUR)
     assert ld.flow.self_locking
     mesh = ld.meshes["worm-wheel"]
     assert mesh.kind == "worm" and mesh.driver == "wheel"
@@ -115,12 +106,12 @@ def test_hoist_holds_its_load_backwards():
 @pytest.mark.parametrize("hand", ["right", "left"])
 @pytest.mark.parametrize("starts, q", [(1, 16), (2, 10)])
 @pytest.mark.parametrize("lifting", [True, False])
-def test_forces_match_worm_mesh_forces(starts, q, hand, lifting):
+def test_forces_match_worm_mesh_forces(starts, q, hand, lifting, worm_hoist):
     # the train's force from the power flow's torques against gears.forces.worm_mesh_forces,
     # which builds it from the friction and the driving member (DIN 3996, Ozols (14.15)/(14.18))
     worm = WormPair(starts, 40, 4.0, diameter_quotient=q, hand=hand)
     ends = ("worm", "drum") if lifting else ("drum", "worm")
-    ld = loads(_hoist(worm), *ends, torque=100.0, friction=MU, mesh_efficiency=SPUR)
+    ld = loads(worm_hoist(worm), *ends, torque=100.0, friction=MU, mesh_efficiency=SPUR)
     mesh = ld.meshes["worm-wheel"]
     driving = mesh.driver
     assert driving == ("worm" if lifting else "wheel")
@@ -141,7 +132,7 @@ def test_forces_match_worm_mesh_forces(starts, q, hand, lifting):
     v = _sliding(ld)
     assert np.dot(f, v) / np.linalg.norm(v) == pytest.approx(-MU * mesh.normal[0], rel=1e-9)
     bearings = {"worm": (-70.0, 55.0), "wheel": (-30.0, 45.0), "drum": (0.0, 80.0)}
-    ld = loads(_hoist(worm), *ends, torque=100.0, friction=MU, mesh_efficiency=SPUR,
+    ld = loads(worm_hoist(worm), *ends, torque=100.0, friction=MU, mesh_efficiency=SPUR,
                axial={"worm-wheel": 12.0}, angles={"worm-wheel": 130.0},
                bearings=bearings)  # fmt: skip
     _assert_balance(ld, bearings)
@@ -163,9 +154,9 @@ def test_hands_mirror_and_frictionless_force_is_normal_to_the_sliding():
     np.testing.assert_allclose(out[0], out[1], rtol=1e-12)
 
 
-def test_a_motor_coupled_to_the_worm_shares_its_axis():
+def test_a_motor_coupled_to_the_worm_shares_its_axis(worm_hoist):
     # a member that turns with the worm lies on the worm's axis (across the plane)
-    t = _hoist(WormPair(2, 40, 4.0, diameter_quotient=10))
+    t = worm_hoist(WormPair(2, 40, 4.0, diameter_quotient=10))
     t.couple("motor", "worm")
     ld = loads(t, "motor", "drum", torque=50.0, friction=MU, mesh_efficiency=SPUR)
     motor, worm = ld.members["motor"], ld.members["worm"]
@@ -236,7 +227,9 @@ def test_ambiguous_worm_axes_are_refused():
     angle=st.floats(-360.0, 360.0),
     lifting=st.booleans(),
 )
-def test_property_worm_loads(starts, teeth, q, shift, hand, friction, torque, angle, lifting):
+def test_property_worm_loads(
+    starts, teeth, q, shift, hand, friction, torque, angle, lifting, worm_hoist
+):
     # any worm hoist in either direction: a finite answer or the library's own error, and
     # statics that balance on every shaft
     try:
@@ -246,7 +239,7 @@ def test_property_worm_loads(starts, teeth, q, shift, hand, friction, torque, an
     ends = ("worm", "drum") if lifting else ("drum", "worm")
     bearings = {"worm": (-50.0, 60.0), "wheel": (-25.0, 35.0)}
     try:
-        ld = loads(_hoist(worm), *ends, torque=torque, friction=friction, mesh_efficiency=SPUR,
+        ld = loads(worm_hoist(worm), *ends, torque=torque, friction=friction, mesh_efficiency=SPUR,
                    angles={"worm-wheel": angle}, axial={"worm-wheel": 8.0},
                    bearings=bearings)  # fmt: skip
     except TrainError:
@@ -263,9 +256,9 @@ def test_property_worm_loads(starts, teeth, q, shift, hand, friction, torque, an
     angle=st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.text(max_size=2)),
     axial=st.floats(allow_nan=True, allow_infinity=True),
 )
-def test_property_bad_options_are_train_errors(torque, angle, axial):
+def test_property_bad_options_are_train_errors(torque, angle, axial, worm_hoist):
     # bad numbers for a worm train's options: the library's own error naming the value
-    t = _hoist(WormPair(2, 40, 4.0))
+    t = worm_hoist(WormPair(2, 40, 4.0))
     try:
         ld = loads(t, "worm", "drum", torque=torque, angles={"worm-wheel": angle},
                    axial={"worm-wheel": axial})  # fmt: skip

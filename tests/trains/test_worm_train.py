@@ -18,14 +18,6 @@ from gears import Gear, GearError, WormPair
 from trains import Train, TrainError, power_flow
 
 
-def _hoist(worm: WormPair) -> Train:
-    t = Train()
-    t.mesh("worm", "wheel", pair=worm)
-    t.couple("wheel", "pinion")
-    t.mesh("pinion", "drum", gears=(Gear(17, 3), Gear(68, 3)))
-    return t
-
-
 def test_w1_in_a_train():
     # W1: mu = f' cos(alpha_n) gives phi' = atan(0.05); i = 20; eta = 0.7920 worm driving
     w = WormPair(2, 40, 5.0, diameter_quotient=10)
@@ -44,10 +36,10 @@ def test_w1_in_a_train():
     assert abs(pf.torques["wheel"]) == pytest.approx(20 * pf.efficiency, rel=1e-9)
 
 
-def test_self_locking_hoist_holds_its_load():
+def test_self_locking_hoist_holds_its_load(worm_hoist):
     # z1 1, q 16: gamma = 3.576 deg below phi' = atan(0.08 / cos 20) = 4.866 deg
     w = WormPair(1, 40, 4.0, diameter_quotient=16)
-    t = _hoist(w)
+    t = worm_hoist(w)
     mu = 0.08
     g = math.atan(1 / 16)
     phi = math.atan(mu / math.cos(math.radians(20)))
@@ -62,7 +54,7 @@ def test_self_locking_hoist_holds_its_load():
         math.tan(g - phi) / math.tan(g), rel=1e-9
     )
     # a steep worm does not lock: the load drives it backwards
-    free = _hoist(WormPair(4, 40, 4.0, diameter_quotient=8))
+    free = worm_hoist(WormPair(4, 40, 4.0, diameter_quotient=8))
     assert not power_flow(free, "drum", "worm", friction=mu).self_locking
 
 
