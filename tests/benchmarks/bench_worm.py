@@ -262,8 +262,42 @@ def bosl2() -> dict | None:
         "wheel_vertices": len(wheel.vertices),
         "watertight": bool(wheel.is_watertight), "thickness_excess_mm": excess,
         "thickness_deficit_mm": deficit, "off_plane": peer_off_plane(w, wheel),
-        "load_before": load0,
+        "overlap": bosl2_overlap(), "load_before": load0,
     }  # fmt: skip
+
+
+BOSL2_WORM = (
+    "include <BOSL2/std.scad>\ninclude <BOSL2/gears.scad>\n"
+    "worm(mod=2, d=20, starts=1, l=40, orient=BACK);\n"
+)
+
+
+def bosl2_overlap() -> dict | None:
+    """The volume BOSL2's worm (``worm()``, its axis along y) and wheel (``worm_gear()`` as in
+    :data:`BOSL2_WHEEL`, its axis z through x = a = 26 mm, ``worm_dist``) share in mesh: the
+    wheel at the turn where they share the least (a tooth pitch in 91 steps, then bounded to
+    1e-4 deg; BOSL2's documented ``zrot`` phase is that of its own 30-tooth example), then the
+    worm turned by phi and the wheel by phi z1 / z2 (None without OpenSCAD)."""
+    import trimesh
+
+    worm = _openscad(BOSL2_WORM, trimesh.load)
+    wheel = _openscad(BOSL2_WHEEL, trimesh.load)
+    if worm is None or wheel is None:
+        return None
+    a = 26.0
+    w, g = to_manifold(worm[1]), to_manifold(wheel[1]).translate([a, 0.0, 0.0])
+
+    def shared(phi, turn):
+        gear = g.translate([-a, 0.0, 0.0]).rotate([0.0, 0.0, turn + phi / 16.0])
+        return (w.rotate([0.0, phi, 0.0]) ^ gear.translate([a, 0.0, 0.0])).volume()
+
+    from scipy.optimize import minimize_scalar
+
+    coarse = min(np.linspace(-11.25, 11.25, 91), key=lambda t: shared(0.0, t))
+    turn = minimize_scalar(lambda t: shared(0.0, t), bounds=(coarse - 0.25, coarse + 0.25),
+                           method="bounded", options={"xatol": 1e-4}).x  # fmt: skip
+    return {"turn_deg": float(turn),
+            "shared_mm3": {phi: shared(phi, turn) for phi in (0.0, 7.0, 90.0, 200.0)}}  # fmt: skip
 
 
 WORMGEAR = """
