@@ -11,7 +11,9 @@ Sources, each named where it is used:
   1/cos^3 beta, Formula (66); and its table of both at eps_alpha 1.65, alpha_n 20 deg;
 * an ISO 6336:2019 report of a planetary stage (m_n 40, beta 15 deg) whose printed s_Fn, rho_F,
   h_Fe, alpha_Fen, f_eps, Y_F and Y_S a public test fixture copies (the gearopt project's
-  ``test_calc_yf``): its Y_F is the 2006 form times f_eps;
+  ``test_calc_yf``): its Y_F is the 2006 form times f_eps; and the pitting values of the same
+  stage that project's ``test_calc_sh`` copies as KISSsoft reference values: its Z_beta is the 2006
+  1/sqrt(cos beta);
 * ISO/TR 6336-30:2017 Example 1, which works by the 2006 parts (tests/gears/test_rating.py).
 """
 
@@ -97,6 +99,18 @@ def test_y_f_of_a_2019_report_is_the_2006_form_times_f_eps():
         assert float(yf) * f_eps == pytest.approx(y_f, abs=0.006)
         assert float(ys) == pytest.approx(y_s, abs=0.006)
         assert float(yf) > y_f + 0.1  # without f_eps the report's Y_F is not reached
+
+
+def test_z_beta_of_a_2019_report_is_the_2006_form_in_both_editions():
+    """The pitting values of the same ISO 6336:2019 stage (beta 15 deg, the gearopt project's
+    test_calc_sh) print Z_beta 1.017: ISO 6336-2's 1/sqrt(cos beta), which both editions compute
+    (1/sqrt(cos beta_b) would print 1.015)."""
+    g1 = Gear(19, 3, helix_angle=15, face_width=30)
+    pair = GearPair(g1, Gear(61, 3, helix_angle=-15, face_width=30))
+    for edition in EDITIONS:
+        z_beta = float(pair.rating(150, 1450, edition=edition).factors["Z_beta"])
+        assert z_beta == pytest.approx(1.017, abs=0.0005)
+        assert z_beta == pytest.approx(1 / math.sqrt(math.cos(math.radians(15))), rel=1e-12)
 
 
 # --- the rating's two paths -------------------------------------------------------------------
