@@ -42,7 +42,8 @@ LIFE_CAP = 1e12
 MODES = ("pitting", "bending")
 #: Most bins a spectrum may have.
 MAX_BINS = 10_000
-_BLOCK = 1 << 15  # bins x pairs solved at once: the arrays stay in the cache
+_BLOCK = 1 << 17  # bins x pairs solved at once (larger blocks: fewer numpy calls a pair)
+_ROUNDS = 6  # rounds of the fast path before a row goes to the bisection
 _THREADED = 1 << 14  # ratings (pairs x bins) from which the gears and modes run on threads
 _TABLES = {"pitting": _PITTING_TABLE, "bending": _BENDING_TABLE}
 
@@ -169,7 +170,147 @@ def _damage_and_safety(stress, strength, cycles, code, mode, axis=-1):
 
 
 def _solve(z, lc, knots):
-    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows)."""
+    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows).
+
+    On a stretch between knots D(x) = C + A_1 exp(b_1 x) + A_2 exp(b_2 x) (b = -a > 0), its
+    coefficients summed over the bins by their states. From a start below the answer (each line
+    summed over every bin bounds D from above, :meth:`_Lines.start`) each round takes the
+    states at x, solves that stretch's D = 1 (:func:`_regime_root`) and moves there; a row is
+    settled when the states at the root are the ones it was solved with (the root is then D's).
+    A row not settled in :data:`_ROUNDS` rounds (D jumps over 1 at a knot, or a root so far
+    out that the lines' factors at S = 1 lose it) is solved by :func:`_bisect`."""
+    n = z.shape[1]
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        lines = _Lines(z, lc, knots)
+        sums = lines.sums(0.0)
+        d0 = sums.sum(axis=0)
+        x, bound = lines.start()
+        solved = np.zeros(n, bool)
+        out = np.full(n, np.nan)
+        rows = np.arange(n)
+        for _ in range(_ROUNDS):
+            new = lines.sums(x)
+            root = _regime_root(new, lines.b)
+            # settled: the states at x are the ones x was solved with; or x is the bound and D
+            # stays below 1 up to it, where it jumps over 1 (a bin of N_L >= 1 turns static)
+            done = (solved & (new == sums).all(axis=0)) | ((x == bound) & (root > x))
+            out[rows[done]] = x[done]
+            left = ~done
+            if not left.any():
+                break
+            sums = new
+            solved = np.isfinite(root) & (root <= bound)
+            x = np.where(solved, root, np.where(root > bound, bound, x))
+            if 2 * np.count_nonzero(left) < left.size:  # the settled rows set aside
+                rows = rows[left]
+                lines.keep(left)
+                x, bound, solved, sums = x[left], bound[left], solved[left], sums[:, left]
+        out[np.abs(out) * lines.steepest >= 650.0] = np.nan  # far out: exp's range (e^700)
+        rest = np.flatnonzero(np.isnan(out))
+        if rest.size:
+            part = tuple(k[rest] if np.ndim(k) else k for k in knots)
+            out[rest] = np.log(_bisect(z[:, rest].copy(), lc[:, rest].copy(), part)[1])
+    return d0, np.exp(np.clip(out, math.log(1e-4), math.log(1e4)))
+
+
+class _Lines:
+    """A block's bins (bins, rows) for :func:`_solve`: ``n`` stacks, for each bin, its cycles
+    N_L (its damage were it static) and its damage at S = 1 on the S-N curve's upper and lower
+    log-log lines (exponents held in [-700, 700]: exp's normal range); ``b`` the lines' slopes
+    -a_1, -a_2 in ln D per ln S; buffers for the rounds."""
+
+    def __init__(self, z, lc, knots):
+        y0, y1, y2 = knots[3:]
+        a1, a2 = _slopes(knots)
+        y = (np.stack(np.broadcast_arrays(y0, y1, y2))[:, None] if np.ndim(y0)
+             else np.array([y0, y1, y2])[:, None, None])  # fmt: skip
+        a = np.stack(np.broadcast_arrays(a1, a2)) if np.ndim(a1) else np.array([a1, a2])
+        self.b = -a
+        self.steepest = float(np.max(self.b))
+        n = np.empty((3, *z.shape))
+        np.exp(lc, out=n[0])
+        h = n[1:]
+        np.multiply(np.subtract(y1, z), a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
+        h += lc - knots[1]
+        np.clip(h, -700.0, 700.0, out=h)
+        np.exp(h, out=h)
+        self.n = n
+        self.knots = np.subtract(y, z)  # each bin's knots in x = ln S (3, bins, rows)
+        self._buffers()
+
+    def _buffers(self):
+        self.mask = np.empty(self.knots.shape, bool)
+        self.terms = np.empty(self.knots.shape)
+
+    def sums(self, x):
+        """``(C, A_1, A_2)`` at x (rows): the static bins' cycles and each line's bins' damage
+        at S = 1 (a bin at a knot is on the side below, as in :func:`_bisect`)."""
+        m = self.mask
+        np.greater(x, self.knots, out=m)  # past the static knot, the knee, the endurance
+        np.logical_xor(m[1:], m[:-1], out=m[1:])  # on the upper line, on the lower line
+        return np.multiply(self.n, m, out=self.terms).sum(axis=1)
+
+    def start(self):
+        """Where the rounds start: the larger x at which one line summed over every bin
+        reaches 1, below the first static knot of a bin of N_L >= 1 (D >= 1 past it). Where the
+        curve is the lower of its lines (a_1 >= a_2) D is at most either sum, and this is at or
+        below the answer."""
+        total = self.n[1:].sum(axis=1)
+        b = self.b.reshape(2, -1)
+        x = (-np.log(total) / b).max(axis=0)
+        static = np.where(self.n[0] >= 1.0, self.knots[0], np.inf).min(axis=0)
+        return np.minimum(x, static), static
+
+    def keep(self, rows):
+        """Only ``rows`` (a mask) from now on."""
+        self.n, self.knots = self.n[:, :, rows], self.knots[:, :, rows]
+        if self.b.ndim > 1:
+            self.b = self.b[:, rows]
+        self._buffers()
+
+
+def _regime_root(sums, b):
+    """x where C + A_1 exp(b_1 x) + A_2 exp(b_2 x) = 1 (``sums`` = (C, A_1, A_2), ``b`` > 0):
+    the nearer root of one term alone where one is loaded, else Newton's method on the convex
+    ln D from it (D >= 1 there: it comes down monotonically); NaN where C >= 1 or nothing is
+    loaded."""
+    c, p, q = sums
+    b1, b2 = b
+    ok = (c < 1.0) & ((p > 0.0) | (q > 0.0))
+    c = np.where(ok, c, 0.0)
+    left = np.log1p(-c)  # ln(1 - C)
+    w = np.minimum((left - np.log(np.maximum(p, 1e-300))) / b1,
+                   (left - np.log(np.maximum(q, 1e-300))) / b2)  # fmt: skip
+    two = np.flatnonzero(ok & (p > 0.0) & (q > 0.0))
+    if two.size:
+        c, p, q, v = c[two], p[two], q[two], w[two]
+        if np.ndim(b1):
+            b1, b2 = b1[two], b2[two]
+        for k in range(60):
+            t1 = np.exp(b1 * v)
+            t1 *= p
+            t2 = np.exp(b2 * v)
+            t2 *= q
+            d = t1 + t2
+            d += c
+            t1 *= b1
+            t2 *= b2
+            t1 += t2
+            step = np.log(d)
+            step *= d
+            step /= t1
+            v -= step
+            # quadratic: after a step below 1e-9 the error is below 1e-16 (as in _newton)
+            if k >= 3 and not (np.abs(step) > 1e-9 * (1.0 + np.abs(v))).any():
+                break
+        w[two] = v
+    w[~ok] = np.nan
+    return w
+
+
+def _bisect(z, lc, knots):
+    """Miner's sum and the equivalent safety of one block, ``z``, ``lc`` (bins, rows), by a
+    bisection over the rows' knots, sorted: exact for any bins, the fallback of :func:`_solve`."""
     n = z.shape[1]
     y0, y1, y2 = knots[3:]
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):

@@ -358,7 +358,7 @@ def smallest_width(load: Load, widths, z1, z2, module, x1=0.0, x2=0.0, pressure_
 _PER_PAIR = ("x1", "x2", "pressure_angle", "helix_angle", "internal", "application_factor",
              "quality", "roughness", "oil_viscosity", "load_sharing", "misalignment",
              "tip_relief", "addendum", "root_roughness")  # fmt: skip
-_SPECTRUM_CHUNK = 1 << 15  # ratings (pairs x bins) a block, as rate_pairs's
+_SPECTRUM_CHUNK = 1 << 17  # ratings (pairs x bins) a block: Miner's rule takes whole blocks
 _NEEDED = ("sigma_H1", "sigma_H2", "sigma_HP1", "sigma_HP2", "Z_NT1", "Z_NT2", "sigma_F1",
            "sigma_F2", "sigma_FP1", "sigma_FP2", "Y_NT1", "Y_NT2", "N_L1", "N_L2")  # fmt: skip
 

@@ -278,3 +278,39 @@ def test_read_spectrum_property(tmp_path_factory, text):
         assert "spectrum" in str(exc)
         return
     assert bins and all(len(b) == 3 and min(b) > 0 and math.isfinite(sum(b)) for b in bins)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.integers(1, 12),
+    st.integers(1, 300),
+    st.sampled_from(["pitting", "bending"]),
+    st.one_of(st.integers(0, 7), st.just(-1)),
+    st.integers(0, 2**32 - 1),
+)
+def test_fast_path_equals_the_bisection(bins, rows, mode, code, seed):
+    # brute force by another method: the rounds of _solve (each stretch's D = 1 solved, kept
+    # where the bins' states at the root are the stretch's) against the bisection over every
+    # row's sorted knots (_bisect), on random blocks: stresses over 1e-3 ... 20 of the
+    # strength, cycles from under one to 1e11, a few rows where D jumps over 1 at a knot (a
+    # bin's endurance knot with N_L of 1e10 and more), NaN rows, a material group per row
+    from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
+    from gears.rating.miner import _bisect, _knots, _solve
+
+    rng = np.random.default_rng(seed)
+    z = rng.uniform(-7.0, 3.0, (bins, rows))
+    lc = rng.uniform(-2.0, 25.3, (bins, rows))
+    jump = rng.random(rows) < 0.1
+    lc[0, jump] = rng.uniform(23.0, 26.0, jump.sum())  # N_L of 1e10 ... 2e11 on one bin
+    z[:, rng.random(rows) < 0.02] = np.nan
+    codes = rng.integers(0, 8, rows) if code < 0 else code
+    knots = _knots(codes, _PITTING_TABLE if mode == "pitting" else _BENDING_TABLE)
+    if np.ndim(codes):
+        knots = tuple(k[..., 0] for k in knots)
+    d_fast, s_fast = _solve(z.copy(), lc.copy(), knots)
+    d_bis, s_bis = _bisect(z.copy(), lc.copy(), knots)
+    # the same Miner's sum written two ways (the lines' factors at S = 1 against each bin's
+    # ln damage at S = 1): to 1e-12 relative; the safeties to 1e-12 (both solve the same
+    # stretch's equation to ~1e-16)
+    np.testing.assert_allclose(d_fast, d_bis, rtol=1e-12, atol=0)
+    np.testing.assert_allclose(s_fast, s_bis, rtol=1e-12, atol=0)
