@@ -412,8 +412,8 @@ def _pitting(q, a, mats, given, xp):
     hours_turns = 60.0 * a["life"] * n  # the load's; the contacts per turn the pair's
     N_L1 = hours_turns * a["c1"]
     N_L2 = hours_turns * (a["c2"] / u)
-    Z_NT1 = given("Z_NT1", pitting_life_factor(N_L1, code1))
-    Z_NT2 = given("Z_NT2", pitting_life_factor(N_L2, code2))
+    Z_NT1 = _life(given, "Z_NT1", pitting_life_factor, N_L1, code1)
+    Z_NT2 = _life(given, "Z_NT2", pitting_life_factor, N_L2, code2)
     us = s * u
     # the gears' factors multiplied first, the load's last (one pass over a spectrum's bins)
     root = xp.sqrt(q["F_t"] * ((us + 1.0) / (q["d1"] * q["b"] * us)))
@@ -429,13 +429,20 @@ def _pitting(q, a, mats, given, xp):
     })  # fmt: skip
 
 
+def _life(given, name, factor, cycles, code):
+    """The life factor ``name`` where given (a spectrum's bins take 1: Miner's rule reads the
+    S-N curve itself), else ``factor(cycles, code)``."""
+    value = given(name, None)
+    return factor(cycles, code) if value is None else value
+
+
 def _bending(q, a, mats, given):
     """Y_NT and sigma_F0, sigma_F, sigma_FP (ISO 6336-3)."""
     # the gears' factors multiplied first, the load's last (one pass over a spectrum's bins)
     form = q["Y_beta"] * q["Y_DT"] / (q["b"] * q["m"])
     kf = q["K_gamma"] * q["K_A"] * q["K_v"] * q["K_Fbeta"] * q["K_Falpha"]
     for i, code in ((1, mats[0].code), (2, mats[1].code)):
-        q[f"Y_NT{i}"] = given(f"Y_NT{i}", bending_life_factor(q[f"N_L{i}"], code))
+        q[f"Y_NT{i}"] = _life(given, f"Y_NT{i}", bending_life_factor, q[f"N_L{i}"], code)
         q[f"sigma_F0{i}"] = q["F_t"] * (form * q[f"Y_F{i}"] * q[f"Y_S{i}"] * q[f"Y_B{i}"])
         q[f"sigma_F{i}"] = q[f"sigma_F0{i}"] * kf
         allowable = a[f"sF{i}"] * q["Y_ST"] * q[f"Y_deltarelT{i}"] * q[f"Y_RrelT{i}"]

@@ -153,24 +153,33 @@ def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
 
 def _damage_and_safety(stress, strength, cycles, code, mode, axis=-1):
     """Miner's sum and the equivalent safety (:func:`equivalent_safety`) of the same bins."""
-    z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
-    shape, bins = z.shape[:-1], z.shape[-1]
-    z, lc = z.reshape(-1, bins), lc.reshape(-1, bins)
-    n = len(z)
+    stress, strength, cycles = (np.moveaxis(v, axis, -1) for v in np.broadcast_arrays(
+        *(np.asarray(v, float) for v in (stress, strength, cycles))))  # fmt: skip
+    shape, bins = stress.shape[:-1], stress.shape[-1]
+    stress, strength, cycles = (v.reshape(-1, bins) for v in (stress, strength, cycles))
+    n = len(stress)
     knots = tuple(np.broadcast_to(k, (*shape, 1)).reshape(n) if np.ndim(k) else k
                   for k in _knots(code, _mode_table(mode)))  # fmt: skip
     d, s = np.empty(n), np.empty(n)
-    step = max(1, _BLOCK // bins)  # blocks that stay in the cache
-    for i in range(0, n, step):
-        rows = slice(i, i + step)
-        # the bins on the first axis, the rows contiguous on the last (fast broadcasts, sums)
-        d[rows], s[rows] = _solve(z[rows].T.copy(), lc[rows].T.copy(),
-                                  tuple(k[rows] if np.ndim(k) else k for k in knots))  # fmt: skip
+    step = max(1, _BLOCK // bins)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(0, n, step):
+            rows = slice(i, i + step)
+            # the bins on the first axis, the rows contiguous on the last (fast broadcasts,
+            # sums), written so as the ratio is taken
+            m = len(stress[rows])
+            z, n_l = np.empty((bins, m)), np.empty((bins, m))
+            np.divide(stress[rows].T, strength[rows].T, out=z)
+            np.log(z, out=z)  # ln(sigma / sigma_inf)
+            np.copyto(n_l, cycles[rows].T)
+            d[rows], s[rows] = _solve(z, np.log(n_l), tuple(k[rows] if np.ndim(k) else k
+                                                            for k in knots), n_l)  # fmt: skip
     return (d.reshape(shape), s.reshape(shape)) if shape else (d[0], s[0])
 
 
-def _solve(z, lc, knots):
-    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows).
+def _solve(z, lc, knots, cycles=None):
+    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows) and the
+    cycles themselves where at hand (else exp(lc)).
 
     On a stretch between knots D(x) = C + A_1 exp(b_1 x) + A_2 exp(b_2 x) (b = -a > 0), its
     coefficients summed over the bins by their states. From a start below the answer (each line
@@ -181,7 +190,7 @@ def _solve(z, lc, knots):
     out that the lines' factors at S = 1 lose it) is solved by :func:`_bisect`."""
     n = z.shape[1]
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        lines = _Lines(z, lc, knots)
+        lines = _Lines(z, lc, knots, cycles)
         sums = lines.sums(0.0)
         d0 = sums.sum(axis=0)
         x, bound = lines.start()
@@ -219,7 +228,7 @@ class _Lines:
     log-log lines (exponents held in [-700, 700]: exp's normal range); ``b`` the lines' slopes
     -a_1, -a_2 in ln D per ln S; buffers for the rounds."""
 
-    def __init__(self, z, lc, knots):
+    def __init__(self, z, lc, knots, cycles=None):
         y0, y1, y2 = knots[3:]
         a1, a2 = _slopes(knots)
         y = (np.stack(np.broadcast_arrays(y0, y1, y2))[:, None] if np.ndim(y0)
@@ -228,7 +237,10 @@ class _Lines:
         self.b = -a
         self.steepest = float(np.max(self.b))
         n = np.empty((3, *z.shape))
-        np.exp(lc, out=n[0])
+        if cycles is None:
+            np.exp(lc, out=n[0])
+        else:
+            n[0] = cycles
         h = n[1:]
         np.multiply(np.subtract(y1, z), a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
         h += lc - knots[1]

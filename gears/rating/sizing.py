@@ -406,6 +406,9 @@ def rate_spectrum(
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
     torques, speeds, hours = check_spectrum(spectrum)
     extra = {k: _trailing(v) if k in _PER_PAIR else v for k, v in options.items()}
+    given = extra.get("factors") or {}
+    if isinstance(given, dict):  # Miner's rule reads the S-N curve itself: no life factors
+        extra["factors"] = {"Z_NT": 1.0, "Y_NT": 1.0, **given}
     m1, m2 = _materials(options.get("material", "case-carburized"))
     total = float(hours.sum())
     parts = {}
