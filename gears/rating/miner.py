@@ -199,21 +199,22 @@ def _solve(z, lc, knots, cycles=None):
         rows = np.arange(n)
         for _ in range(_ROUNDS):
             new = lines.sums(x)
-            root = _regime_root(new, lines.b)
-            # settled: the states at x are the ones x was solved with; or x is the bound and D
-            # stays below 1 up to it, where it jumps over 1 (a bin of N_L >= 1 turns static)
-            done = (solved & (new == sums).all(axis=0)) | ((x == bound) & (root > x))
+            done = solved & (new == sums).all(axis=0)  # the states x was solved with
             out[rows[done]] = x[done]
-            left = ~done
-            if not left.any():
-                break
-            sums = new
-            solved = np.isfinite(root) & (root <= bound)
-            x = np.where(solved, root, np.where(root > bound, bound, x))
-            if 2 * np.count_nonzero(left) < left.size:  # the settled rows set aside
+            if 2 * np.count_nonzero(done) >= done.size:  # the settled rows set aside
+                left = ~done
+                if not left.any():
+                    break
                 rows = rows[left]
                 lines.keep(left)
-                x, bound, solved, sums = x[left], bound[left], solved[left], sums[:, left]
+                x, bound, new = x[left], bound[left], new[:, left]
+            sums = new
+            root = _regime_root(sums, lines.b)
+            # at the bound D stays below 1 up to it and jumps over 1 there (a bin of N_L >= 1
+            # turns static): settled there too
+            jumps = (x == bound) & (root > x)
+            solved = (np.isfinite(root) & (root <= bound)) | jumps
+            x = np.where(solved & ~jumps, root, np.where(root > bound, bound, x))
         out[np.abs(out) * lines.steepest >= 650.0] = np.nan  # far out: exp's range (e^700)
         rest = np.flatnonzero(np.isnan(out))
         if rest.size:
