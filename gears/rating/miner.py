@@ -242,18 +242,17 @@ class _Lines:
             np.exp(lc, out=n[0])
         else:
             n[0] = cycles
+        self.knots = np.subtract(y, z)  # each bin's knots in x = ln S (3, bins, rows)
         h = n[1:]
-        np.multiply(np.subtract(y1, z), a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
+        np.multiply(self.knots[1], a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
         h += lc - knots[1]
         np.clip(h, -700.0, 700.0, out=h)
         np.exp(h, out=h)
         self.n = n
-        self.knots = np.subtract(y, z)  # each bin's knots in x = ln S (3, bins, rows)
         self._buffers()
 
     def _buffers(self):
         self.mask = np.empty(self.knots.shape, bool)
-        self.terms = np.empty(self.knots.shape)
 
     def sums(self, x):
         """``(C, A_1, A_2)`` at x (rows): the static bins' cycles and each line's bins' damage
@@ -261,7 +260,7 @@ class _Lines:
         m = self.mask
         np.greater(x, self.knots, out=m)  # past the static knot, the knee, the endurance
         np.logical_xor(m[1:], m[:-1], out=m[1:])  # on the upper line, on the lower line
-        return np.multiply(self.n, m, out=self.terms).sum(axis=1)
+        return np.einsum("ijk,ijk->ik", self.n, m)  # one pass: the products summed
 
     def start(self):
         """Where the rounds start: the larger x at which one line summed over every bin
@@ -294,10 +293,13 @@ def _regime_root(sums, b):
     left = np.log1p(-c)  # ln(1 - C)
     w = np.minimum((left - np.log(np.maximum(p, 1e-300))) / b1,
                    (left - np.log(np.maximum(q, 1e-300))) / b2)  # fmt: skip
-    two = np.flatnonzero(ok & (p > 0.0) & (q > 0.0))
-    if two.size:
-        c, p, q, v = c[two], p[two], q[two], w[two]
-        if np.ndim(b1):
+    both = ok & (p > 0.0) & (q > 0.0)
+    every = bool(both.all())
+    two = slice(None) if every else np.flatnonzero(both)
+    if every or two.size:
+        c, p, q = c[two], p[two], q[two]
+        v = w if every else w[two]
+        if np.ndim(b1) and not every:
             b1, b2 = b1[two], b2[two]
         for k in range(60):
             t1 = np.exp(b1 * v)
@@ -316,7 +318,8 @@ def _regime_root(sums, b):
             # quadratic: after a step below 1e-9 the error is below 1e-16 (as in _newton)
             if k >= 3 and not (np.abs(step) > 1e-9 * (1.0 + np.abs(v))).any():
                 break
-        w[two] = v
+        if not every:
+            w[two] = v
     w[~ok] = np.nan
     return w
 
