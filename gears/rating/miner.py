@@ -172,14 +172,13 @@ def _damage_and_safety(stress, strength, cycles, code, mode, axis=-1):
             np.divide(stress[rows].T, strength[rows].T, out=z)
             np.log(z, out=z)  # ln(sigma / sigma_inf)
             np.copyto(n_l, cycles[rows].T)
-            d[rows], s[rows] = _solve(z, np.log(n_l), tuple(k[rows] if np.ndim(k) else k
-                                                            for k in knots), n_l)  # fmt: skip
+            d[rows], s[rows] = _solve(z, n_l, tuple(k[rows] if np.ndim(k) else k for k in knots))
     return (d.reshape(shape), s.reshape(shape)) if shape else (d[0], s[0])
 
 
-def _solve(z, lc, knots, cycles=None):
-    """Miner's sum and the equivalent safety of one block: ``z``, ``lc`` (bins, rows) and the
-    cycles themselves where at hand (else exp(lc)).
+def _solve(z, cycles, knots):
+    """Miner's sum and the equivalent safety of one block: ``z`` = ln(sigma / sigma_inf) and
+    the cycles N_L (bins, rows).
 
     On a stretch between knots D(x) = C + A_1 exp(b_1 x) + A_2 exp(b_2 x) (b = -a > 0), its
     coefficients summed over the bins by their states. From a start below the answer (each line
@@ -190,7 +189,7 @@ def _solve(z, lc, knots, cycles=None):
     out that the lines' factors at S = 1 lose it) is solved by :func:`_bisect`."""
     n = z.shape[1]
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        lines = _Lines(z, lc, knots, cycles)
+        lines = _Lines(z, cycles, knots)
         sums = lines.sums(0.0)
         d0 = sums.sum(axis=0)
         x, bound = lines.start()
@@ -215,21 +214,24 @@ def _solve(z, lc, knots, cycles=None):
             jumps = (x == bound) & (root > x)
             solved = (np.isfinite(root) & (root <= bound)) | jumps
             x = np.where(solved & ~jumps, root, np.where(root > bound, bound, x))
-        out[np.abs(out) * lines.steepest >= 650.0] = np.nan  # far out: exp's range (e^700)
-        rest = np.flatnonzero(np.isnan(out))
+        out[np.abs(out) * lines.steepest >= 550.0] = np.nan  # far out: exp's range (e^600)
+        # and rows the lines' factors cannot hold (N_L over 1e47: an inf factor, a NaN sum)
+        rest = np.flatnonzero(np.isnan(out) | ~np.isfinite(d0))
         if rest.size:
             part = tuple(k[rest] if np.ndim(k) else k for k in knots)
-            out[rest] = np.log(_bisect(z[:, rest].copy(), lc[:, rest].copy(), part)[1])
+            d0[rest], s = _bisect(z[:, rest].copy(), np.log(cycles[:, rest]), part)
+            out[rest] = np.log(s)
     return d0, np.exp(np.clip(out, math.log(1e-4), math.log(1e4)))
 
 
 class _Lines:
     """A block's bins (bins, rows) for :func:`_solve`: ``n`` stacks, for each bin, its cycles
     N_L (its damage were it static) and its damage at S = 1 on the S-N curve's upper and lower
-    log-log lines (exponents held in [-700, 700]: exp's normal range); ``b`` the lines' slopes
+    log-log lines (their exponents at N_L = 1 held in [-600, 600]: exp's normal range); ``b``
+    the lines' slopes
     -a_1, -a_2 in ln D per ln S; buffers for the rounds."""
 
-    def __init__(self, z, lc, knots, cycles=None):
+    def __init__(self, z, cycles, knots):
         y0, y1, y2 = knots[3:]
         a1, a2 = _slopes(knots)
         y = (np.stack(np.broadcast_arrays(y0, y1, y2))[:, None] if np.ndim(y0)
@@ -238,16 +240,14 @@ class _Lines:
         self.b = -a
         self.steepest = float(np.max(self.b))
         n = np.empty((3, *z.shape))
-        if cycles is None:
-            np.exp(lc, out=n[0])
-        else:
-            n[0] = cycles
+        n[0] = cycles
         self.knots = np.subtract(y, z)  # each bin's knots in x = ln S (3, bins, rows)
         h = n[1:]
         np.multiply(self.knots[1], a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
-        h += lc - knots[1]
-        np.clip(h, -700.0, 700.0, out=h)
+        h -= knots[1]
+        np.clip(h, -600.0, 600.0, out=h)  # times N_L up to 1e47 a normal number
         np.exp(h, out=h)
+        h *= n[0]
         self.n = n
         self._buffers()
 
