@@ -140,13 +140,15 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     cv1 = 0.32
     cv2 = _where(low, 0.34, 0.57 / (egx - 0.3))
     cv3 = _where(low, 0.23, 0.096 / (egx - 1.56))
+    ns = _where(w < 100.0, 0.5 + 0.35 * xp.sqrt(xp.maximum(w, 0.0) / 100.0), 0.85)
+    sub = n * (cv1 * bp + cv2 * bf + cv3 * bk) + 1.0
+    if xp is np and not np.any(n > ns):  # every pair sub-critical: the other ranges unused
+        return _out(sub)
     cv4 = _where(low, 0.90, (0.57 - 0.05 * egx) / (egx - 1.44))
     cv5 = 0.47
     cv6 = _where(low, 0.47, 0.12 / (egx - 1.74))
     cv7 = _where(eg <= 1.5, 0.75, _where(eg <= 2.5, 0.125 * xp.sin(xp.pi * (eg - 2.0)) + 0.875,
                                              1.0))  # fmt: skip
-    ns = _where(w < 100.0, 0.5 + 0.35 * xp.sqrt(xp.maximum(w, 0.0) / 100.0), 0.85)
-    sub = n * (cv1 * bp + cv2 * bf + cv3 * bk) + 1.0
     main = cv1 * bp + cv2 * bf + cv4 * bk + 1.0
     sup = cv5 * bp + cv6 * bf + cv7
     between = sup + (main - sup) * (1.5 - n) / 0.35
