@@ -196,6 +196,7 @@ def _solve(z, cycles, knots):
         solved = np.zeros(n, bool)
         out = np.full(n, np.nan)
         rows = np.arange(n)
+        lo, hi = np.full(n, -np.inf), np.full(n, np.inf)  # D < 1 at lo, D >= 1 at hi
         for _ in range(_ROUNDS):
             new = lines.sums(x)
             done = solved & (new == sums).all(axis=0)  # the states x was solved with
@@ -206,14 +207,27 @@ def _solve(z, cycles, knots):
                     break
                 rows = rows[left]
                 lines.keep(left)
-                x, bound, new = x[left], bound[left], new[:, left]
+                x, bound, new, lo, hi = x[left], bound[left], new[:, left], lo[left], hi[left]
             sums = new
             root = _regime_root(sums, lines.b)
+            below = np.where(np.isfinite(root), root > x, sums[0] < 1.0)
+            lo = np.where(below, np.maximum(lo, x), lo)
+            hi = np.where(below, hi, np.minimum(hi, x))
             # at the bound D stays below 1 up to it and jumps over 1 there (a bin of N_L >= 1
             # turns static): settled there too
             jumps = (x == bound) & (root > x)
             solved = (np.isfinite(root) & (root <= bound)) | jumps
             x = np.where(solved & ~jumps, root, np.where(root > bound, bound, x))
+        # D jumps over 1 at the one knot between lo and hi (the stretches on either side have
+        # their roots beyond it: else they would have settled)
+        pending = np.flatnonzero(np.isnan(out[rows]))
+        if pending.size:
+            lo, hi, knot = lo[pending], hi[pending], lines.knots[:, :, pending]
+            between = (knot >= lo) & (knot < hi)
+            first = np.where(between, knot, np.inf).min(axis=(0, 1))
+            last = np.where(between, knot, -np.inf).max(axis=(0, 1))
+            one = np.isfinite(first) & (first == last)
+            out[rows[pending[one]]] = first[one]
         out[np.abs(out) * lines.steepest >= 550.0] = np.nan  # far out: exp's range (e^600)
         # and rows the lines' factors cannot hold (N_L over 1e47: an inf factor, a NaN sum)
         rest = np.flatnonzero(np.isnan(out) | ~np.isfinite(d0))
@@ -390,8 +404,8 @@ def _bisect(z, lc, knots):
 def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
     """``(damage, log_terms)``: ``damage(x)`` Miner's sum at x per row, bins on the first axis
     (left-continuous: a bin at one of its knots is on the side below), ``log_terms(x)`` the ln
-    of each bin's damage at x were it on its sloped segment (held above e^-700: the masked
-    terms stay out of exp's slow underflow). ``damage(x, exact=False)`` where x lies at or
+    of each bin's damage at x were it on its sloped segment (held in [-700, 700]: the masked
+    terms stay out of exp's slow underflow and its overflow). ``damage(x, exact=False)`` where x lies at or
     below the static knot of every bin of N_L >= 1 (the search's bound): only a bin of less
     than one cycle can be static there. On its sloped segment a bin's ln damage is one of the S-N
     curve's two log-log lines, written in x through the bin's knee e1 (the lower of the two
@@ -399,7 +413,6 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
     buffers kept for it."""
     below = above_knee + a2 * e1  # ln damage = below - a2 x below the knee
     above = above_knee + a1 * e1  # and above - a1 x above it
-    floor = np.full(e1.shape, -700.0)  # exp's slow underflow kept out
     if np.all(np.greater_equal(a1, a2)):
         pick = np.minimum
     elif np.all(np.less_equal(a1, a2)):
@@ -418,7 +431,9 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
             np.copyto(out, spare, where=np.greater(x, e1))
         else:
             pick(out, spare, out=out)
-        return np.maximum(out, floor, out=out)
+        # exp's slow underflow kept out, and its overflow: a static bin's line far past its
+        # static knot (inf times a False mask would be NaN)
+        return np.clip(out, -700.0, 700.0, out=out)
 
     def damage(x, exact=True):
         np.exp(sloped(x, terms, other), out=terms)

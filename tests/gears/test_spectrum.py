@@ -316,3 +316,24 @@ def test_fast_path_equals_the_bisection(bins, rows, mode, code, seed):
     # stretch's equation to ~1e-16)
     np.testing.assert_allclose(d_fast, d_bis, rtol=1e-12, atol=0)
     np.testing.assert_allclose(s_fast, s_bis, rtol=1e-12, atol=0)
+
+
+def test_a_static_bin_far_past_its_knot_is_not_lost():
+    # regression: group 7's bending curve (Y_NT 2.5 ... 1 over 10^3 ... 3 x 10^6 cycles: its
+    # upper line falls 84 in ln N_f per unit of ln sigma) with one bin 8.4 times its strength
+    # (static at S = 1: D(1) = its 4.4 cycles) and one far below: the bisection's line of the
+    # static bin at the next knot overflowed (e^726, times a False mask: NaN) and S came out
+    # 1e4. By the definition, D jumps over 1 where that bin turns static: S is the static
+    # knot's stress ratio over the bin's, e^y0 / 8.3963 (y0 = ln Y_NT there), within 1e-9;
+    # and brute force with miner_damage (the S-N curve by its knots) on either side of it
+    from gears.rating.spectrum import equivalent_safety, miner_damage
+
+    stress = np.exp([2.12755577, -6.8400827])
+    cycles = np.exp([1.47810215, 7.00615623])
+    s = float(equivalent_safety(stress, 1.0, cycles, 7, "bending"))
+    from gears.rating.life import _BENDING_TABLE
+
+    y0 = float(_BENDING_TABLE[1][7][0])
+    assert s == pytest.approx(math.exp(y0) / stress[0], rel=1e-9)
+    assert float(miner_damage(stress * s * (1 - 1e-9), 1.0, cycles, 7, "bending")) < 1.0
+    assert float(miner_damage(stress * s * (1 + 1e-9), 1.0, cycles, 7, "bending")) >= 1.0
