@@ -405,12 +405,12 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
     """``(damage, log_terms)``: ``damage(x)`` Miner's sum at x per row, bins on the first axis
     (left-continuous: a bin at one of its knots is on the side below), ``log_terms(x)`` the ln
     of each bin's damage at x were it on its sloped segment (held in [-700, 700]: the masked
-    terms stay out of exp's slow underflow and its overflow). ``damage(x, exact=False)`` where x lies at or
-    below the static knot of every bin of N_L >= 1 (the search's bound): only a bin of less
-    than one cycle can be static there. On its sloped segment a bin's ln damage is one of the S-N
-    curve's two log-log lines, written in x through the bin's knee e1 (the lower of the two
-    where the curve is steeper below the knee), so that a search step is a few passes over
-    buffers kept for it."""
+    terms stay out of exp's slow underflow and its overflow). ``damage(x, exact=False)`` where
+    x lies at or below the static knot of every bin of N_L >= 1 (the search's bound): only a
+    bin of less than one cycle can be static there. On its sloped segment a bin's ln damage is
+    one of the S-N curve's two log-log lines, written in x through the bin's knee e1 (the
+    lower of the two where the curve is steeper below the knee), so that a search step is a
+    few passes over buffers kept for it."""
     below = above_knee + a2 * e1  # ln damage = below - a2 x below the knee
     above = above_knee + a1 * e1  # and above - a1 x above it
     if np.all(np.greater_equal(a1, a2)):
