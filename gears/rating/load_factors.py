@@ -137,23 +137,39 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     bk = xp.abs(1.0 - c * c_a / w)
     low = eg <= 2.0
     egx = _where(low, 3.0, eg)  # keeps the eps_gamma > 2 branch finite where unused
-    cv1 = 0.32
     cv2 = _where(low, 0.34, 0.57 / (egx - 0.3))
     cv3 = _where(low, 0.23, 0.096 / (egx - 1.56))
     ns = _where(w < 100.0, 0.5 + 0.35 * xp.sqrt(xp.maximum(w, 0.0) / 100.0), 0.85)
-    sub = n * (cv1 * bp + cv2 * bf + cv3 * bk) + 1.0
-    if xp is np and not np.any(n > ns):  # every pair sub-critical: the other ranges unused
+    sub = n * (_CV1 * bp + cv2 * bf + cv3 * bk) + 1.0
+    if xp is np and not np.any(n > ns):  # every pair sub-critical
         return _out(sub)
+    shape = () if xp is not np else np.broadcast_shapes(
+        *(np.shape(v) for v in (n, bp, bf, bk, eg, cv2, sub)))  # fmt: skip
+    if not shape:  # one pair
+        return _out(_where(n <= ns, sub, _resonant(n, bp, bf, bk, eg, low, egx, cv2, xp)))
+    # the resonance ranges only where a pair is in them (a few of a sweep's pairs)
+    over = n > ns
+    k = np.array(np.broadcast_to(sub, shape))
+    at = np.nonzero(np.broadcast_to(over, shape))
+    k[at] = _resonant(*(np.broadcast_to(v, shape)[at] for v in (n, bp, bf, bk, eg, low, egx, cv2)),
+                      np)  # fmt: skip
+    return _out(k)
+
+
+_CV1, _CV5 = 0.32, 0.47  # ISO 6336-1 Table 8, for every eps_gamma
+
+
+def _resonant(n, bp, bf, bk, eg, low, egx, cv2, xp):
+    """K_v above the sub-critical range (N > N_S): the main resonance up to 1.15, the
+    super-critical range from 1.5, linear between."""
     cv4 = _where(low, 0.90, (0.57 - 0.05 * egx) / (egx - 1.44))
-    cv5 = 0.47
     cv6 = _where(low, 0.47, 0.12 / (egx - 1.74))
     cv7 = _where(eg <= 1.5, 0.75, _where(eg <= 2.5, 0.125 * xp.sin(xp.pi * (eg - 2.0)) + 0.875,
                                              1.0))  # fmt: skip
-    main = cv1 * bp + cv2 * bf + cv4 * bk + 1.0
-    sup = cv5 * bp + cv6 * bf + cv7
+    main = _CV1 * bp + cv2 * bf + cv4 * bk + 1.0
+    sup = _CV5 * bp + cv6 * bf + cv7
     between = sup + (main - sup) * (1.5 - n) / 0.35
-    k = _where(n <= ns, sub, _where(n <= 1.15, main, _where(n < 1.5, between, sup)))
-    return _out(k)
+    return _where(n <= 1.15, main, _where(n < 1.5, between, sup))
 
 
 # --- face and transverse load factors -----------------------------------------------------------
