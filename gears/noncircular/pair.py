@@ -41,6 +41,7 @@ from gears.arguments import (
     check_real,
     check_tolerance,
 )
+from gears.cutting.sampling import chord_angle
 from gears.errors import GearError
 from gears.noncircular.centrode import (
     KINDS,
@@ -431,7 +432,7 @@ class NonCircularPair:
         r = s(np.mod(x, period))
         theta = -x if g == 1 else math.pi + x
         curve = shapely.Polygon(np.stack([r * np.cos(theta), r * np.sin(theta)], axis=-1))
-        quad = max(2, math.ceil(math.pi / 2 / (2 * math.acos(1 - tol / 4 / self.module))))
+        quad = max(2, math.ceil(math.pi / 2 / chord_angle(self.module, tol / 4)))
         return curve.buffer(self.addendum * self.module, quad_segs=min(quad, 64))
 
     def outlines(
