@@ -575,13 +575,15 @@ def bearing_reactions(
 
 @dataclass(frozen=True)
 class PairForces:
-    """The forces of one mesh under a torque: what :meth:`gears.GearPair.forces` and
-    :meth:`gears.BevelPair.forces` return (N, N m, mm, degrees).
+    """The forces of one mesh under a torque: what :meth:`gears.GearPair.forces`,
+    :meth:`gears.BevelPair.forces` and :meth:`gears.WormPair.forces` return (N, N m, mm,
+    degrees).
 
     Attributes
     ----------
     kind : str
-        ``"spur"``, ``"helical"``, ``"internal"``, ``"rack"`` or ``"bevel"``.
+        ``"spur"``, ``"helical"``, ``"internal"``, ``"rack"``, ``"bevel"`` or ``"worm"`` (gear 1
+        the worm).
     torque : float
         The torque applied to gear 1, N m, signed about its axis (+z).
     torque_2 : float or None
@@ -599,7 +601,9 @@ class PairForces:
     working_pressure_angle, working_helix_angle : float
         alpha_wt and beta_w of gear 1 (bevel: alpha and 0).
     friction : float
-        The friction coefficient of Ozols (21.17)/(21.18) (0: frictionless).
+        The friction coefficient of Ozols (21.17)/(21.18) (0: frictionless); a worm's mu.
+    driving : str or None
+        A worm pair's driving member, ``"worm"`` or ``"wheel"``; None for the other kinds.
     """
 
     kind: str
@@ -616,6 +620,7 @@ class PairForces:
     working_pressure_angle: float = 20.0
     working_helix_angle: float = 0.0
     friction: float = 0.0
+    driving: str | None = None
 
     def rows(self) -> list[tuple[str, str, str]]:
         """``(quantity, gear 1, gear 2)`` text rows of the table."""
@@ -633,9 +638,10 @@ class PairForces:
 
     def _title(self) -> str:
         if self.kind == "worm":  # gear 1 is the worm; the angles are alpha_n and gamma
-            return (f"worm mesh, torque {self.torque:g} N m on the worm (gear 1), alpha_n "
-                    f"{self.working_pressure_angle:.4f} deg, lead angle "
-                    f"{self.working_helix_angle:.4f} deg, friction {self.friction:g}")  # fmt: skip
+            return (f"worm mesh, the {self.driving or 'worm'} driving, torque {self.torque:g} N m "
+                    f"on the worm (gear 1), alpha_n {self.working_pressure_angle:.4f} deg, lead "
+                    f"angle {self.working_helix_angle:.4f} deg, friction "
+                    f"{self.friction:g}")  # fmt: skip
         head = f"{self.kind} mesh, torque {self.torque:g} N m on gear 1"
         head += f", alpha_wt {self.working_pressure_angle:.4f} deg"
         if self.working_helix_angle:
@@ -644,13 +650,17 @@ class PairForces:
             head += f", friction {self.friction:g} (Ozols (21.17))"
         return head
 
+    def _heads(self) -> tuple[str, str]:
+        return ("worm", "wheel") if self.kind == "worm" else ("gear 1", "gear 2")
+
     def __str__(self) -> str:
-        lines = [self._title(), f"{'':22s} {'gear 1':>12s} {'gear 2':>12s}"]
+        one, two = self._heads()
+        lines = [self._title(), f"{'':22s} {one:>12s} {two:>12s}"]
         lines += [f"{a:22s} {b:>12s} {c:>12s}" for a, b, c in self.rows()]
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:
-        return html_table(["", "gear 1", "gear 2"], self.rows(), caption=self._title())
+        return html_table(["", *self._heads()], self.rows(), caption=self._title())
 
 
 def _moment(point: np.ndarray, centre: np.ndarray, axis: np.ndarray, force: np.ndarray) -> float:
@@ -756,4 +766,5 @@ def worm_pair_forces(pair, torque, friction=0.0, driving="worm") -> PairForces:
         "worm", t, t2, (ft, fa), (fr, fr), (fa, ft), (fn, fn), np.stack([v1, v2]), point,
         np.stack([np.zeros(3), centre2]), axes, float(pair.normal_pressure_angle),
         float(pair.lead_angle), float(_array("friction", friction, 0.0, 1.0, low_open=False)),
+        driving,
     )  # fmt: skip

@@ -5,6 +5,13 @@ worm's tip land, ZI's base cylinder, the face width's wrap angle, the threaded l
 efficiency with the worm driving and with the wheel driving, self-locking, and the lead angle of
 the best efficiency at the friction coefficient --friction.
 
+--torque T (N m on the worm, whichever member drives) adds the mesh forces at the worm's
+reference cylinder (DIN 3996): tangential F_t, radial F_r, axial F_a and normal F_n on the worm
+and on the wheel (the worm's axial force is the wheel's tangential force), their components in
+the pair's frame, and the torque on the wheel that balances T at --friction. --driving wheel
+gives the forces with the wheel driving the worm backwards (the friction turns: Ozols (14.18));
+a self-locking worm cannot be driven so, and the command says so (exit status 2).
+
 --module is the worm's axial module m_x; give the worm's size by --q (the diameter quotient
 q = d_m1 / m_x, default 10) or by --worm-diameter d_m1. --pressure-angle is taken in the section
 the flank form names: axial for ZA, normal for ZN, ZI and ZK. --shift is the wheel's profile
@@ -16,6 +23,8 @@ acting as the hob) in mesh at zero backlash; --animate FILE writes the pair turn
 Examples:
     geartrain worm 2 40 --module 5 --q 10 --friction 0.05
     geartrain worm 1 50 --module 4 --q 16 --flank ZA --friction 0.08 --speed 1450
+    geartrain worm 2 40 --module 5 --q 10 --friction 0.05 --torque 12
+    geartrain worm 2 40 --module 5 --q 10 --friction 0.05 --torque 12 --driving wheel
 """
 
 from __future__ import annotations
@@ -33,7 +42,10 @@ from trains.cli._common import (
 )
 from trains.cli._types import bounded, finite, integer, positive
 
-HELP = "check a worm pair (STARTS TEETH): geometry, checks, efficiency both ways, self-locking"
+HELP = (
+    "check a worm pair (STARTS TEETH): geometry, checks, efficiency both ways, self-locking, "
+    "mesh forces"
+)
 
 NAMES = {
     "starts": "STARTS",
@@ -48,8 +60,9 @@ NAMES = {
     "worm_length": "--worm-length",
     "hand": "--hand",
     "tool_radius": "--tool-radius",
-    "friction": "--friction",
+    r"friction(?! angle)": "--friction",
     "worm_speed": "--speed",
+    "torque": "--torque",
     "tolerance": "--tolerance",
 }
 """The library's names in error messages -> this command's options (see trains.cli.app)."""
@@ -129,6 +142,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="the worm's speed, rpm: also print the sliding speed",
     )
+    parser.add_argument(
+        "--torque",
+        type=positive("--torque", "N m"),
+        default=None,
+        help="torque on the worm, N m (whichever member drives): print the mesh forces",
+    )
+    parser.add_argument(
+        "--driving",
+        choices=("worm", "wheel"),
+        default=None,
+        help="the member that drives, for --torque's forces (default worm; wheel: the wheel "
+        "driving the worm backwards)",
+    )
     _scene_arguments(parser)
 
 
@@ -148,7 +174,10 @@ def _scene_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from gears import WormPair
+    from trains.errors import TrainError
 
+    if args.driving is not None and args.torque is None:
+        raise TrainError("--driving applies with --torque (the mesh forces): give --torque too")
     pair = WormPair(
         args.starts,
         args.teeth,
@@ -164,9 +193,14 @@ def run(args: argparse.Namespace) -> int:
         tool_radius=args.tool_radius,
     )
     report = pair.check()
+    forces = None
+    if args.torque is not None:  # before any printing: a self-locking worm is refused
+        forces = pair.forces(args.torque, args.friction, args.driving or "worm")
     print(pair.describe())
     print(report)
     print(pair.describe_efficiency(args.friction, args.speed))
+    if forces is not None:
+        print(forces)
     refuse_undrawn(args)
     with progress_bar("building the wheel", unit="step") as progress:
         write_scene(
