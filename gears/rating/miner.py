@@ -197,6 +197,7 @@ def _solve(z, cycles, knots):
         out = np.full(n, np.nan)
         rows = np.arange(n)
         lo, hi = np.full(n, -np.inf), np.full(n, np.inf)  # D < 1 at lo, D >= 1 at hi
+        r_lo, r_hi = np.full(n, np.nan), np.full(n, np.nan)  # their stretches' roots
         for _ in range(_ROUNDS):
             new = lines.sums(x)
             done = solved & (new == sums).all(axis=0)  # the states x was solved with
@@ -207,26 +208,31 @@ def _solve(z, cycles, knots):
                     break
                 rows = rows[left]
                 lines.keep(left)
-                x, bound, new, lo, hi = x[left], bound[left], new[:, left], lo[left], hi[left]
+                x, bound, new = x[left], bound[left], new[:, left]
+                lo, hi, r_lo, r_hi = lo[left], hi[left], r_lo[left], r_hi[left]
             sums = new
             root = _regime_root(sums, lines.b)
             below = np.where(np.isfinite(root), root > x, sums[0] < 1.0)
-            lo = np.where(below, np.maximum(lo, x), lo)
-            hi = np.where(below, hi, np.minimum(hi, x))
+            up, down = below & (x >= lo), ~below & (x <= hi)
+            lo, r_lo = np.where(up, x, lo), np.where(up, root, r_lo)
+            hi, r_hi = np.where(down, x, hi), np.where(down, root, r_hi)
             # at the bound D stays below 1 up to it and jumps over 1 there (a bin of N_L >= 1
             # turns static): settled there too
             jumps = (x == bound) & (root > x)
             solved = (np.isfinite(root) & (root <= bound)) | jumps
             x = np.where(solved & ~jumps, root, np.where(root > bound, bound, x))
-        # D jumps over 1 at the one knot between lo and hi (the stretches on either side have
-        # their roots beyond it: else they would have settled)
+        # D jumps over 1 at a knot k, the one between lo and hi, where the stretch of lo ends
+        # below 1 (its root past k, or none: C < 1) and that of hi starts at 1 or more (its
+        # root at or before k, or none: C >= 1); else (the rounds ran out before a root was
+        # tried, or no D >= 1 seen) the bisection
         pending = np.flatnonzero(np.isnan(out[rows]))
         if pending.size:
             lo, hi, knot = lo[pending], hi[pending], lines.knots[:, :, pending]
             between = (knot >= lo) & (knot < hi)
             first = np.where(between, knot, np.inf).min(axis=(0, 1))
             last = np.where(between, knot, -np.inf).max(axis=(0, 1))
-            one = np.isfinite(first) & (first == last)
+            one = np.isfinite(first) & (first == last) & np.isfinite(hi)
+            one &= ~(r_lo[pending] <= first) & ~(r_hi[pending] > first)
             out[rows[pending[one]]] = first[one]
         out[np.abs(out) * lines.steepest >= 550.0] = np.nan  # far out: exp's range (e^600)
         # and rows the lines' factors cannot hold (N_L over 1e47: an inf factor, a NaN sum)

@@ -337,3 +337,87 @@ def test_a_static_bin_far_past_its_knot_is_not_lost():
     assert s == pytest.approx(math.exp(y0) / stress[0], rel=1e-9)
     assert float(miner_damage(stress * s * (1 - 1e-9), 1.0, cycles, 7, "bending")) < 1.0
     assert float(miner_damage(stress * s * (1 + 1e-9), 1.0, cycles, 7, "bending")) >= 1.0
+
+
+_KINDS = ("any", "ties", "one row of bins", "below endurance", "static", "under one cycle",
+          "near the endurance knot")  # fmt: skip
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    st.sampled_from([1, 2, 3, 7, 50, 200]),
+    st.integers(1, 24),
+    st.sampled_from(["pitting", "bending"]),
+    st.booleans(),
+    st.sampled_from(_KINDS),
+    st.sampled_from([1, 2, 6]),
+    st.integers(0, 2**32 - 1),
+)
+def test_fast_path_by_the_definition(bins, rows, mode, per_row, kind, rounds, seed):
+    # the rounds of _solve (cut short after 1, 2 or its 6 rounds: the rows left go to the
+    # knot between the last x below and above, or the bisection) against (a) the bisection
+    # over the sorted knots (_bisect) to 1e-9 and (b) brute force by the definition with
+    # miner_damage (the S-N curve by its knots, another formula): D < 1 just below S (unless
+    # S is the bound 1e-4) and D >= 1 at S (1 + 1e-7) (unless S is the bound 1e4); S within
+    # 1e-7 of a crossing is 4 x 10^-7 of D at least on the curves' slopes (b >= 6.2), far over
+    # the two formulas' 1e-12 apart. On ties (equal stresses and cycles), zero cycles, cycles
+    # under one, 1 ... 200 bins, every bin below its endurance knot or static at S = 1, a
+    # material group per row, NaN rows (both give S = 1e4 and a NaN sum)
+    from gears.rating import miner
+    from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
+    from gears.rating.miner import _bisect, _knots, _solve, miner_damage
+
+    rng = np.random.default_rng(seed)
+    z = rng.uniform(-3.0, 2.5, (bins, rows))  # ln(sigma / sigma_inf)
+    lc = rng.uniform(-3.0, 25.0, (bins, rows))  # ln N_L
+    if kind == "ties":
+        z, lc = np.round(z * 2.0) / 2.0, np.round(lc / 4.0) * 4.0
+    elif kind == "one row of bins":
+        z[:], lc[:] = z[0], lc[0]
+    elif kind == "below endurance":
+        z = rng.uniform(-3.0, -0.17, (bins, rows))  # ln 0.85 = -0.163: the lowest y2
+    elif kind == "static":
+        z = rng.uniform(0.5, 3.0, (bins, rows))  # ln 1.6 = 0.47: past every y0 but 2.5's
+    elif kind == "under one cycle":
+        lc = rng.uniform(-10.0, 0.0, (bins, rows))
+    elif kind == "near the endurance knot":
+        z, lc = rng.uniform(-0.5, 0.3, (bins, rows)), rng.uniform(18.0, 24.0, (bins, rows))
+    cycles = np.exp(lc)
+    cycles[rng.random((bins, rows)) < 0.1] = 0.0  # ln N_L = -inf
+    nan = rng.random(rows) < 0.05
+    z[:, nan] = np.nan
+    codes = rng.integers(0, 8, rows) if per_row else int(rng.integers(0, 8))
+    knots = _knots(codes, _PITTING_TABLE if mode == "pitting" else _BENDING_TABLE)
+    if per_row:
+        knots = tuple(k[..., 0] for k in knots)
+    saved = miner._ROUNDS
+    miner._ROUNDS = rounds
+    try:
+        d_fast, s_fast = _solve(z.copy(), cycles.copy(), knots)
+    finally:
+        miner._ROUNDS = saved
+    with np.errstate(divide="ignore"):
+        d_bis, s_bis = _bisect(z.copy(), np.log(cycles), knots)
+    np.testing.assert_allclose(s_fast, s_bis, rtol=1e-9, atol=0)
+    np.testing.assert_allclose(d_fast, d_bis, rtol=1e-11, atol=1e-300)
+    assert np.all(np.isnan(d_fast) == nan) and np.all(s_fast[nan] > 1e4 * (1 - 1e-12))
+    ratio, n_l, s = np.exp(z[:, ~nan]).T, cycles[:, ~nan].T, s_fast[~nan]
+    code = codes[~nan] if per_row else codes
+    below = miner_damage(ratio * (s * (1 - 1e-7))[:, None], 1.0, n_l, code, mode)
+    above = miner_damage(ratio * (s * (1 + 1e-7))[:, None], 1.0, n_l, code, mode)
+    assert np.all((below < 1.0) | (s < 1e-4 * (1 + 1e-12))), (s, below)
+    assert np.all((above >= 1.0) | (s > 1e4 * (1 - 1e-12))), (s, above)
+
+
+def test_bins_under_one_cycle_never_fail():
+    # regression: bending, group 2, three bins of 0.094, 8 x 10^-5 and 0 cycles: each bin's
+    # damage is at most its cycles (N_f >= 1), so D <= 0.094 at any S and S is the bound 1e4
+    # (within 1e-12); the rounds gave 15.09, the second bin's static knot, taking the one knot
+    # past the last x below 1 for a jump with no x at or above 1 seen
+    from gears.rating.spectrum import equivalent_safety, miner_damage
+
+    stress = np.exp([0.33266419, -1.22401813, -1.79795485])
+    cycles = np.array([9.35366884e-02, 7.98290784e-05, 0.0])
+    s = float(equivalent_safety(stress, 1.0, cycles, 2, "bending"))
+    assert s == pytest.approx(1e4, rel=1e-12)
+    assert float(miner_damage(stress * 1e4, 1.0, cycles, 2, "bending")) < 1.0
