@@ -54,7 +54,7 @@ import inspect
 import itertools
 import math
 import operator
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -285,6 +285,11 @@ _NOT_KEYED = _LOAD_ARGS | {"geometry"}
 
 
 def _overrides(factors):
+    if factors is None:
+        return {}
+    if not isinstance(factors, Mapping):
+        raise GearError(f"factors = {factors!r:.80}; valid is a dict of factors by symbol "
+                        "(K_A, Z_NT, ...) or None")  # fmt: skip
     out = {}
     for key, value in factors.items():
         if key not in _OVERRIDABLE:
@@ -595,7 +600,7 @@ def _all_arguments(args):
             for key, value, low in zip(("s_Fn", "rho_F", "h_Fe", "alpha_Fen"), r,
                                        (0.0, 0.0, 0.0, -1.6), strict=True):  # fmt: skip
                 a[f"root_{key}{i}"] = _number(f"{key} of gear {i}", value, low, 1e6)
-    a.update({f"o_{k}": v for k, v in _overrides(args["factors"] or {}).items()})
+    a.update({f"o_{k}": v for k, v in _overrides(args["factors"]).items()})
     names = ("z1", "z2", "module", "x1", "x2", "pressure_angle", "helix_angle", "internal",
              "addendum", "tip_shortening", "threads")  # fmt: skip
     geo = args["geometry"]

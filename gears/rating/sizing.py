@@ -364,8 +364,20 @@ _NEEDED = ("sigma_H1", "sigma_H2", "sigma_HP1", "sigma_HP2", "Z_NT1", "Z_NT2", "
 
 
 def _trailing(v):
-    """``v`` with a trailing axis for the bins when it is an array."""
-    return v if np.ndim(v) == 0 else np.asarray(v)[..., None]
+    """``v`` with a trailing axis for the bins when it is an array (as it is when not even
+    that: rate_pairs names it)."""
+    try:
+        return v if np.ndim(v) == 0 else np.asarray(v)[..., None]
+    except ValueError:  # a ragged sequence
+        return v
+
+
+def _trailing_factors(factors):
+    """The given factors with a trailing axis for the bins on their arrays (on each of a
+    per-gear factor's pair)."""
+    per_gear = {f[0] for f in FACTORS if f[1]}
+    return {k: type(v)(map(_trailing, v)) if k in per_gear and isinstance(v, tuple | list)
+            else _trailing(v) for k, v in factors.items()}  # fmt: skip
 
 
 def rate_spectrum(
@@ -406,9 +418,12 @@ def rate_spectrum(
         raise GearError(f"errors = {errors!r}; valid are 'raise', 'mask'")
     torques, speeds, hours = check_spectrum(spectrum)
     extra = {k: _trailing(v) if k in _PER_PAIR else v for k, v in options.items()}
-    given = extra.get("factors") or {}
-    if isinstance(given, dict):  # Miner's rule reads the S-N curve itself: no life factors
-        extra["factors"] = {"Z_NT": 1.0, "Y_NT": 1.0, **given}
+    # Miner's rule reads the S-N curve itself: the bins rated without life factors (a Z_NT or
+    # Y_NT given cancels too, in sigma_HP / Z_NT and sigma_FP / Y_NT); a factor's arrays are
+    # per pair (each of a per-gear pair's too)
+    given = extra.get("factors")
+    if given is None or isinstance(given, Mapping):
+        extra["factors"] = {"Z_NT": 1.0, "Y_NT": 1.0, **_trailing_factors(given or {})}
     m1, m2 = _materials(options.get("material", "case-carburized"))
     total = float(hours.sum())
     parts = {}

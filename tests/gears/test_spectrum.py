@@ -421,3 +421,41 @@ def test_bins_under_one_cycle_never_fail():
     s = float(equivalent_safety(stress, 1.0, cycles, 2, "bending"))
     assert s == pytest.approx(1e4, rel=1e-12)
     assert float(miner_damage(stress * 1e4, 1.0, cycles, 2, "bending")) < 1.0
+
+
+def test_given_life_factors_cancel_and_factor_arrays_are_per_pair():
+    # Miner's rule reads the S-N curve itself: the strength is sigma_HP / Z_NT (sigma_FP / Y_NT)
+    # and sigma_HP is Z_NT times the rest (ISO 6336-2 eq. (2), ISO 6336-3 eq. (4)), so a given
+    # life factor cancels (derivation): rate_spectrum (bins rated with Z_NT = Y_NT = 1) with
+    # and without them to 1e-12, and GearPair.rating (each bin with its life factors) to 1e-9
+    bins = [(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0), (900.0, 300.0, 2.0)]
+    plain = rate_spectrum([18, 20, 25], 50, 3, 30, bins)
+    given = rate_spectrum([18, 20, 25], 50, 3, 30, bins, factors={"Z_NT": 0.8, "Y_NT": (0.9, 1.1)})
+    for f in plain._fields[:-1]:
+        np.testing.assert_allclose(getattr(given, f), getattr(plain, f), rtol=1e-12, atol=0)
+    spec = _pair().rating(spectrum=bins, Z_NT=0.8, Y_NT=(0.9, 1.1))
+    assert float(given.S_H1[1]) == pytest.approx(spec.safety_pitting[0], rel=1e-9)
+    assert float(given.S_F2[1]) == pytest.approx(spec.safety_bending[1], rel=1e-9)
+    # a factor's array runs over the pairs, not the bins (3 of each here: it used to run over
+    # the bins), each of a per-gear pair's too: against each pair rated alone, to 1e-12
+    k_a, y_x = np.array([1.0, 1.25, 1.5]), np.array([1.0, 0.95, 0.9])
+    arr = rate_spectrum([18, 20, 25], 50, 3, 30, bins, factors={"K_A": k_a, "Y_X": (y_x, 1.0)})
+    for i, z in enumerate((18, 20, 25)):
+        one = rate_spectrum(z, 50, 3, 30, bins, factors={"K_A": k_a[i], "Y_X": (y_x[i], 1.0)})
+        assert float(arr.S_H1[i]) == pytest.approx(float(one.S_H1), rel=1e-12)
+        assert float(arr.S_F1[i]) == pytest.approx(float(one.S_F1), rel=1e-12)
+
+
+@pytest.mark.parametrize("factors", [[], 0, "K_A", np.array([1.0, 2.0]), {"K_A": [[1.0], 2]},
+                                     {"Z_NT": ([1.0, [2.0]], 1.0)}])  # fmt: skip
+def test_bad_factors_are_named(factors):
+    # factors that are not a dict of factors (or a ragged array in one): our own error naming
+    # them, in rate_spectrum as in rate_pairs (were: AttributeError, ValueError, or taken as
+    # no factors)
+    from gears.rating.iso6336 import rate_pairs
+
+    bins = [(420.0, 1500.0, 3000.0), (180.0, 900.0, 40000.0)]
+    for rate in (lambda: rate_spectrum(20, 50, 3, 30, bins, factors=factors),
+                 lambda: rate_pairs(20, 50, 3, 30, 420.0, 1500.0, factors=factors)):  # fmt: skip
+        with pytest.raises(GearError, match=r"factors = |K_A = |Z_NT = "):
+            rate()
