@@ -21,9 +21,12 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.meshing import _pool
+from gears.rating._arrays import number
 from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
+from gears.rating.materials import KINDS
 
 __all__ = [
     "LIFE_CAP",
@@ -91,6 +94,41 @@ def _log_cycles(z, knots):
     return np.where(z <= y2, np.inf, ln_nf)
 
 
+def _material_code(code):
+    """``code`` a material group's integer code (:func:`gears.rating.materials.kind_code`) or
+    an array of them, or a GearError naming it."""
+    c = number("code", code, 0, len(KINDS) - 1, low_open=False, high_open=False, integer=True)
+    return int(c) if np.ndim(c) == 0 else c.astype(int)
+
+
+def _checked(stress, strength, cycles, code, mode, axis):
+    """The bins of :func:`miner_damage` and :func:`equivalent_safety` checked before any work
+    (stresses and strengths finite and > 0 in MPa, cycles finite and >= 0, ``axis`` one of
+    their broadcast shape's, an array ``code`` of the result's shape), or a GearError naming
+    the first bad one."""
+    _mode_table(mode)
+    stress, strength = number("stress", stress, 0.0, math.inf), number(
+        "strength", strength, 0.0, math.inf)  # fmt: skip
+    cycles = number("cycles", cycles, 0.0, math.inf, low_open=False)
+    code = _material_code(code)
+    shape = common_shape({"stress": np.shape(stress), "strength": np.shape(strength),
+                          "cycles": np.shape(cycles)})  # fmt: skip
+    k = len(shape)
+    if isinstance(axis, bool) or not isinstance(axis, int | np.integer) or not -k <= axis < k:
+        raise GearError(f"axis = {axis!r}; valid is an axis of the bins' arrays, of shape "
+                        f"{shape}: an integer from {-k} to {k - 1}" if k else
+                        f"axis = {axis!r}: the bins' arrays are numbers; valid are arrays "
+                        "with the bins on an axis")  # fmt: skip
+    if shape[axis] == 0:
+        raise GearError(f"no bins (arrays of shape {shape}, the bins on axis {axis}); valid is "
+                        "one bin or more")  # fmt: skip
+    rest = shape[: axis % k] + shape[axis % k + 1 :]
+    if np.ndim(code) and common_shape({"the result": rest, "code": np.shape(code)}) != rest:
+        raise GearError(f"code has shape {np.shape(code)}; valid is the result's shape {rest} "
+                        "(or one code)")  # fmt: skip
+    return stress, strength, cycles, code
+
+
 def cycles_to_failure(ratio, code, mode="pitting"):
     """Cycles to failure N_f at the stress ratio ``sigma / sigma_inf`` on the S-N curve of the
     material group ``code`` (:func:`gears.rating.materials.kind_code`) for ``mode`` (arrays
@@ -101,9 +139,11 @@ def cycles_to_failure(ratio, code, mode="pitting"):
     >>> round(float(cycles_to_failure(1.0, kind_code("Eh"))))   # Z_NT = 1 at 5 x 10^7
     50000000
     """
-    code = np.asarray(code)
-    z = np.log(np.asarray(ratio, float))
-    knots = _knots(code, _mode_table(mode))
+    table = _mode_table(mode)
+    ratio, code = number("ratio", ratio, 0.0, math.inf), np.asarray(_material_code(code))
+    common_shape({"ratio": np.shape(ratio), "code": code.shape})
+    z = np.log(ratio)
+    knots = _knots(code, table)
     if code.ndim:
         knots = tuple(v[..., 0] for v in knots)
     return np.exp(np.minimum(_log_cycles(z, knots), math.log(LIFE_CAP * 3.6e6)))
@@ -127,6 +167,7 @@ def miner_damage(stress, strength, cycles, code, mode="pitting", axis=-1):
     >>> round(float(miner_damage([1000.0], [1000.0], [2.5e7], 4)), 6)   # Eh: half of 5 x 10^7
     0.5
     """
+    stress, strength, cycles, code = _checked(stress, strength, cycles, code, mode, axis)
     z, lc = _log_ratio_cycles(stress, strength, cycles, axis)
     return np.sum(np.exp(lc - _log_cycles(z, _knots(code, _mode_table(mode)))), axis=-1)
 
@@ -139,15 +180,18 @@ def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
     With x = ln S, each bin's damage is 0 up to its endurance knot, exp(g - a x) on a sloped
     segment of the S-N curve (a the segment's slope d ln N_f / d ln sigma) and N_L above the
     static knot: D(x) is non-decreasing, smooth between the knots of the bins and jumps at
-    some. A bisection over the bins' knots, sorted (3 per bin), finds the stretch where D
-    reaches 1; there D = C + A_1 exp(-a_1 x) + A_2 exp(-a_2 x): the answer is the stretch's
-    start where D jumps over 1, in closed form where one segment is loaded, and by Newton's
-    method on the convex ln D otherwise, from the nearer root of one term alone (D >= 1
-    there). The search's bounds: D(0), and D >= N_L past a static knot.
+    some. Rounds over the stretches (each solving its D = 1, kept where the bins' states at
+    the root are the stretch's: docs/rating.md) or, for the rows they leave, a bisection over
+    the bins' knots, sorted (3 per bin), find the stretch where D reaches 1; there
+    D = C + A_1 exp(-a_1 x) + A_2 exp(-a_2 x): the answer is the stretch's start where D jumps
+    over 1, in closed form where one segment is loaded, and by Newton's method on the convex
+    ln D otherwise, from the nearer root of one term alone (D >= 1 there). The search's
+    bounds: D(0), and D >= N_L past a static knot.
 
     >>> round(float(equivalent_safety([1000.0], [1000.0], [5e7], 4)), 9)   # one bin at its knot
     1.0
     """
+    stress, strength, cycles, code = _checked(stress, strength, cycles, code, mode, axis)
     return _damage_and_safety(stress, strength, cycles, code, mode, axis)[1]
 
 

@@ -459,3 +459,55 @@ def test_bad_factors_are_named(factors):
                  lambda: rate_pairs(20, 50, 3, 30, 420.0, 1500.0, factors=factors)):  # fmt: skip
         with pytest.raises(GearError, match=r"factors = |K_A = |Z_NT = "):
             rate()
+
+
+@pytest.mark.parametrize(
+    ("args", "kw", "named"),
+    [
+        (("a", 1.0, 1.0, 4), {}, r"stress = 'a'; valid is a number"),
+        ((-1.0, 1.0, [1.0], 4), {}, r"stress = -1; valid is 0 < stress"),
+        (([1.0, np.nan], 1.0, 1.0, 4), {}, r"stress = nan at row 1"),
+        (([1.0], 0.0, [1.0], 4), {}, r"strength = 0; valid is 0 < strength"),
+        (([1.0], 1.0, [np.inf], 4), {}, r"cycles = inf at row 0; valid is 0 <= cycles"),
+        (([1.0], 1.0, [1.0], 8), {}, r"code = 8; valid is an integer 0 <= code <= 7"),
+        (([1.0], 1.0, [1.0], 2.5), {}, r"code = 2.5; valid is an integer"),
+        (([[1.0, 2.0]], 1.0, 1.0, [1, 2, 3]), {}, r"code has shape \(3,\); valid is the result's"),
+        (([1.0, 2.0], 1.0, [1.0, 2.0, 3.0], 4), {}, r"stress has shape \(2,\) and cycles"),
+        (([], 1.0, 1.0, 4), {}, r"no bins"),
+        ((1.0, 1.0, 1.0, 4), {}, r"axis = -1: the bins' arrays are numbers"),
+        (([1.0], 1.0, [1.0], 4), {"axis": 1}, r"axis = 1; valid is an axis .* from -1 to 0"),
+        (([1.0], 1.0, [1.0], 4), {"axis": True}, r"axis = True"),
+        (([1.0], 1.0, [1.0], 4), {"mode": "wear"}, r"mode = 'wear'; valid are pitting, bending"),
+    ],
+)  # fmt: skip
+def test_miner_functions_name_bad_bins(args, kw, named):
+    # the public Miner's rule functions check their bins before any work (were: numpy's
+    # AxisError, ValueError, IndexError, or a NaN or 1e4 out)
+    from gears.rating.spectrum import equivalent_safety, miner_damage
+
+    for f in (equivalent_safety, miner_damage):
+        with pytest.raises(GearError, match=named):
+            f(*args, **kw)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.tuples(st.floats(allow_nan=True, allow_infinity=True),
+                       st.floats(-1.0, 1e30, allow_nan=False)), min_size=0, max_size=4),
+    st.one_of(st.integers(-2, 9), st.floats(-1.0, 9.0)),
+    st.sampled_from(["pitting", "bending", "x"]),
+)  # fmt: skip
+def test_miner_functions_property(bins, code, mode):
+    # any numbers: a finite answer (S in [1e-4, 1e4], D and N_f >= 0) or our own error
+    from gears.rating.spectrum import cycles_to_failure, equivalent_safety, miner_damage
+
+    ratio = [b[0] for b in bins]
+    cycles = [b[1] for b in bins]
+    for call in (lambda: equivalent_safety(ratio, 1.0, cycles, code, mode),
+                 lambda: miner_damage(ratio, 1.0, cycles, code, mode),
+                 lambda: cycles_to_failure(ratio, code, mode)):  # fmt: skip
+        try:
+            v = np.asarray(call(), float)
+        except GearError:
+            continue
+        assert np.all(np.isfinite(v)) and np.all(v >= 0.0)
