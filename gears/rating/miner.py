@@ -438,7 +438,10 @@ def _bisect(z, lc, knots):
         A2 = (t * (sloped & ~upper)).sum(axis=0)
         a1, a2 = (np.broadcast_to(a, (n,)) for a in (a1, a2))
         w0 = start - ref
-        jumped = c + A1 * np.exp(-a1 * w0) + A2 * np.exp(-a2 * w0) >= 1.0  # at its start
+        # D at its start (a line no bin is on adds 0, where its exp overflows too: 0 * inf)
+        at_start = c + np.where(A1 > 0.0, A1 * np.exp(-a1 * w0), 0.0)
+        at_start += np.where(A2 > 0.0, A2 * np.exp(-a2 * w0), 0.0)
+        jumped = at_start >= 1.0
         solve = np.flatnonzero(~jumped & np.isfinite(end))
         w = np.full(n, np.nan)
         if solve.size:  # the stretch's root in w = x - ref (its slopes -a)

@@ -340,7 +340,7 @@ def test_a_static_bin_far_past_its_knot_is_not_lost():
 
 
 _KINDS = ("any", "ties", "one row of bins", "below endurance", "static", "under one cycle",
-          "near the endurance knot")  # fmt: skip
+          "near the endurance knot", "far out")  # fmt: skip
 
 
 @settings(max_examples=150, deadline=None)
@@ -361,8 +361,8 @@ def test_fast_path_by_the_definition(bins, rows, mode, per_row, kind, rounds, se
     # S is the bound 1e-4) and D >= 1 at S (1 + 1e-7) (unless S is the bound 1e4); S within
     # 1e-7 of a crossing is 4 x 10^-7 of D at least on the curves' slopes (b >= 6.2), far over
     # the two formulas' 1e-12 apart. On ties (equal stresses and cycles), zero cycles, cycles
-    # under one, 1 ... 200 bins, every bin below its endurance knot or static at S = 1, a
-    # material group per row, NaN rows (both give S = 1e4 and a NaN sum)
+    # under one, 1 ... 200 bins, every bin below its endurance knot or static at S = 1, S far
+    # out (up to 1e4), a material group per row, NaN rows (both give S = 1e4 and a NaN sum)
     from gears.rating import miner
     from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
     from gears.rating.miner import _bisect, _knots, _solve, miner_damage
@@ -382,6 +382,8 @@ def test_fast_path_by_the_definition(bins, rows, mode, per_row, kind, rounds, se
         lc = rng.uniform(-10.0, 0.0, (bins, rows))
     elif kind == "near the endurance knot":
         z, lc = rng.uniform(-0.5, 0.3, (bins, rows)), rng.uniform(18.0, 24.0, (bins, rows))
+    elif kind == "far out":  # stresses 1e-4 ... 2.5e-3 of the strength: S up to 1e4
+        z, lc = rng.uniform(-9.2, -6.0, (bins, rows)), rng.uniform(-3.0, 40.0, (bins, rows))
     cycles = np.exp(lc)
     cycles[rng.random((bins, rows)) < 0.1] = 0.0  # ln N_L = -inf
     nan = rng.random(rows) < 0.05
@@ -511,3 +513,20 @@ def test_miner_functions_property(bins, code, mode):
         except GearError:
             continue
         assert np.all(np.isfinite(v)) and np.all(v >= 0.0)
+
+
+def test_a_far_out_bin_turning_static_is_not_lost():
+    # regression: group 7 bending, one bin at 2.1e-4 of its strength for 1.07 cycles: D jumps
+    # from 0.001 to its 1.07 cycles where the bin turns static, at S = e^y0 / the stress ratio
+    # (y0 = ln Y_NT at the static knot), within 1e-9 (derivation). The rounds' lines cannot
+    # hold a bin this far out and the bisection took D at the last stretch's start as
+    # 0 * e^719 = NaN: S came out 1e4. Brute force with miner_damage on either side
+    from gears.rating.life import _BENDING_TABLE
+    from gears.rating.spectrum import equivalent_safety, miner_damage
+
+    stress, cycles = np.exp([-8.47130678]), np.array([1.07296993])
+    s = float(equivalent_safety(stress, 1.0, cycles, 7, "bending"))
+    y0 = float(_BENDING_TABLE[1][7][0])
+    assert s == pytest.approx(math.exp(y0) / stress[0], rel=1e-9)
+    assert float(miner_damage(stress * s * (1 - 1e-9), 1.0, cycles, 7, "bending")) < 1.0
+    assert float(miner_damage(stress * s * (1 + 1e-9), 1.0, cycles, 7, "bending")) >= 1.0
