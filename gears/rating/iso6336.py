@@ -285,13 +285,10 @@ _NOT_KEYED = _LOAD_ARGS | {"geometry"}
 
 
 def _overrides(factors):
-    if factors is None:
-        return {}
-    if not isinstance(factors, Mapping):
-        raise GearError(f"factors = {factors!r:.80}; valid is a dict of factors by symbol "
-                        "(K_A, Z_NT, ...) or None")  # fmt: skip
+    if not isinstance(factors, Mapping | None):
+        raise GearError(f"factors = {factors!r:.80}; valid is a dict of factors by symbol, or None")
     out = {}
-    for key, value in factors.items():
+    for key, value in (factors or {}).items():
         if key not in _OVERRIDABLE:
             raise GearError(
                 f"unknown factor {key!r}; the factors that can be given are "
