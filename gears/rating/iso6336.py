@@ -290,10 +290,8 @@ def _overrides(factors):
     out = {}
     for key, value in (factors or {}).items():
         if key not in _OVERRIDABLE:
-            raise GearError(
-                f"unknown factor {key!r}; the factors that can be given are "
-                f"{', '.join(_OVERRIDABLE)}"
-            )
+            raise GearError(f"unknown factor {key!r}; the factors that can be given are "
+                            f"{', '.join(_OVERRIDABLE)}")  # fmt: skip
         name = key.replace("'", "_prime")
         if _OVERRIDABLE[key]:
             v1, v2 = _pair_of(key, value)
