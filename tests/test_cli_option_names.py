@@ -21,6 +21,7 @@ BASE = {
     "pair": ["pair", "12", "24"],
     "profile": ["profile", "12"],
     "mesh": ["mesh", "20"],
+    "worm": ["worm", "2", "40"],
 }
 #: options that name a file or a resource, not a number of the design
 NOT_DESIGN = {"--scene", "--animate", "--output", "--threads", "--frames"}
