@@ -357,6 +357,28 @@ def test_worm_self_locking_wheel_cannot_drive():
         worm_pair_forces(pair, 5.0, 0.1, "nobody")
 
 
+def test_worm_pair_forces_name_the_driving_member():
+    # PairForces.driving: "worm" or "wheel" for a worm pair, None for the other kinds; the
+    # table heads its columns worm and wheel and names the driving member in its title. The
+    # value by hand (Ozols (14.18), the wheel driving: F_a1 = F_t1 / tan(gamma - phi'),
+    # tan gamma = z_1 / q = 0.1, tan phi' = mu / cos alpha_n, F_t1 = 2000 T_1 / d_m1 = 400 N)
+    from gears import WormPair
+    from gears.forces import worm_pair_forces
+
+    pair = WormPair(1, 40, 5, diameter_quotient=10)
+    phi = math.atan(0.05 / math.cos(math.radians(20.0)))
+    for driving, sign in (("worm", 1.0), ("wheel", -1.0)):
+        f = worm_pair_forces(pair, 10.0, 0.05, driving)
+        assert f.driving == driving
+        assert float(f.axial[0]) == pytest.approx(400.0 / math.tan(math.atan(0.1) + sign * phi),
+                                                  rel=1e-12)  # fmt: skip
+        title, heads = str(f).splitlines()[:2]
+        assert f"the {driving} driving" in title and heads.split() == ["worm", "wheel"]
+        assert "<th>worm</th>" in f._repr_html_().replace(" ", "")
+    spur = GearPair(Gear(20, 2), Gear(40, 2)).forces(50.0)
+    assert spur.driving is None and str(spur).splitlines()[1].split() == ["gear", "1", "gear", "2"]
+
+
 @pytest.mark.parametrize("x", [-6.0, -2.0, 0.5, 3.0, 7.0])
 def test_friction_joldasbekov_7_65_7_67(x):
     # Joldasbekov (7.65), (7.67): N21 = M1 / [r1 cos a -+ f (r1 sin a -+ x)], x the distance of
