@@ -225,10 +225,11 @@ def _solve(z, cycles, knots):
     the cycles N_L (bins, rows).
 
     On a stretch between knots D(x) = C + A_1 exp(b_1 x) + A_2 exp(b_2 x) (b = -a > 0), its
-    coefficients summed over the bins by their states. From a start below the answer (each line
-    summed over every bin bounds D from above, :meth:`_Lines.start`) each round takes the
-    states at x, solves that stretch's D = 1 (:func:`_regime_root`) and moves there; a row is
-    settled when the states at the root are the ones it was solved with (the root is then D's).
+    coefficients summed over the bins by their states. From a start (:meth:`_Lines.start`: at
+    or below the answer but for a curve steeper above its knee than below, group 7 in bending)
+    each round takes the states at x, solves that stretch's D = 1 (:func:`_regime_root`) and
+    moves there, from below or above; a row is settled when the states at the root are the
+    ones it was solved with (the root is then D's).
     A row not settled in :data:`_ROUNDS` rounds (D jumps over 1 at a knot, or a root so far
     out that the lines' factors at S = 1 lose it) is solved by :func:`_bisect`."""
     n = z.shape[1]
@@ -328,9 +329,10 @@ class _Lines:
 
     def start(self):
         """Where the rounds start: the larger x at which one line summed over every bin
-        reaches 1, below the first static knot of a bin of N_L >= 1 (D >= 1 past it). Where the
-        curve is the lower of its lines (a_1 >= a_2) D is at most either sum, and this is at or
-        below the answer."""
+        reaches 1, below the first static knot of a bin of N_L >= 1 (D >= 1 past it). Where a
+        bin's damage is the lower of its lines (a_1 >= a_2) D is at most either sum, and this is
+        at or below the answer; else (group 7 in bending) it may lie above, and the rounds come
+        down."""
         total = self.n[1:].sum(axis=1)
         b = self.b.reshape(2, -1)
         x = (-np.log(total) / b).max(axis=0)

@@ -530,3 +530,28 @@ def test_a_far_out_bin_turning_static_is_not_lost():
     assert s == pytest.approx(math.exp(y0) / stress[0], rel=1e-9)
     assert float(miner_damage(stress * s * (1 - 1e-9), 1.0, cycles, 7, "bending")) < 1.0
     assert float(miner_damage(stress * s * (1 + 1e-9), 1.0, cycles, 7, "bending")) >= 1.0
+
+
+def test_rounds_come_down_from_a_start_above_the_answer():
+    # group 7's bending curve is steeper above its knee than below (a_1 = -84 < a_2 = -49.9,
+    # ISO 6336-3 Table 3's Y_NT): a bin's damage is the larger of its two lines, so the start
+    # (where one line summed over the bins reaches 1) lies above the answer in most rows; the
+    # rounds still reach it: against the bisection over the sorted knots (_bisect, brute force
+    # by another method) to 1e-12, and by the definition with miner_damage (D < 1 just below
+    # S, >= 1 just above)
+    from gears.rating.life import _BENDING_TABLE
+    from gears.rating.miner import _bisect, _knots, _Lines, _slopes, _solve, miner_damage
+
+    knots = _knots(7, _BENDING_TABLE)
+    a1, a2 = _slopes(knots)
+    assert a1 < a2
+    rng = np.random.default_rng(3)
+    z, cycles = rng.uniform(-0.5, 0.5, (5, 400)), np.exp(rng.uniform(10.0, 20.0, (5, 400)))
+    start, _ = _Lines(z, cycles, knots).start()
+    _, s = _solve(z.copy(), cycles.copy(), knots)
+    assert np.count_nonzero(start > np.log(s) + 1e-9) > 200  # most rows start above
+    _, s_bis = _bisect(z.copy(), np.log(cycles), knots)
+    np.testing.assert_allclose(s, s_bis, rtol=1e-12, atol=0)
+    ratio = np.exp(z).T
+    assert np.all(miner_damage(ratio * (s * (1 - 1e-7))[:, None], 1.0, cycles.T, 7, "bending") < 1)
+    assert np.all(miner_damage(ratio * (s * (1 + 1e-7))[:, None], 1.0, cycles.T, 7, "bending") >= 1)
