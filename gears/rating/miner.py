@@ -45,6 +45,9 @@ LIFE_CAP = 1e12
 MODES = ("pitting", "bending")
 #: Most bins a spectrum may have.
 MAX_BINS = 10_000
+# most load cycles a bin of miner_damage and equivalent_safety may have: far past any gear's
+# (10^9 hours at 10^7 rpm are 6 x 10^17), and Miner's sum of any array of bins stays finite
+_MAX_CYCLES = 1e30
 _BLOCK = 1 << 17  # bins x pairs solved at once (larger blocks: fewer numpy calls a pair)
 _ROUNDS = 6  # rounds of the fast path before a row goes to the bisection
 _THREADED = 1 << 14  # ratings (pairs x bins) from which the gears and modes run on threads
@@ -103,13 +106,13 @@ def _material_code(code):
 
 def _checked(stress, strength, cycles, code, mode, axis):
     """The bins of :func:`miner_damage` and :func:`equivalent_safety` checked before any work
-    (stresses and strengths finite and > 0 in MPa, cycles finite and >= 0, ``axis`` one of
+    (stresses and strengths finite and > 0 in MPa, cycles 0 ... 10^30, ``axis`` one of
     their broadcast shape's, an array ``code`` of the result's shape), or a GearError naming
     the first bad one."""
     _mode_table(mode)
     stress, strength = number("stress", stress, 0.0, math.inf), number(
         "strength", strength, 0.0, math.inf)  # fmt: skip
-    cycles = number("cycles", cycles, 0.0, math.inf, low_open=False)
+    cycles = number("cycles", cycles, 0.0, _MAX_CYCLES, low_open=False, high_open=False)
     code = _material_code(code)
     shape = common_shape({"stress": np.shape(stress), "strength": np.shape(strength),
                           "cycles": np.shape(cycles)})  # fmt: skip
@@ -161,8 +164,8 @@ def _log_ratio_cycles(stress, strength, cycles, axis):
 def miner_damage(stress, strength, cycles, code, mode="pitting", axis=-1):
     """Miner's sum D = sum N_L,i / N_f,i over the bins on ``axis``: ``stress`` sigma_i,
     ``strength`` sigma_inf,i (the allowable stress over its life factor) in MPa, ``cycles``
-    N_L,i, ``code`` the material group (arrays broadcast; an array ``code`` has the shape of the
-    result).
+    N_L,i (0 ... 10^30), ``code`` the material group (arrays broadcast; an array ``code`` has
+    the shape of the result).
 
     >>> round(float(miner_damage([1000.0], [1000.0], [2.5e7], 4)), 6)   # Eh: half of 5 x 10^7
     0.5
@@ -175,7 +178,7 @@ def miner_damage(stress, strength, cycles, code, mode="pitting", axis=-1):
 def equivalent_safety(stress, strength, cycles, code, mode="pitting", axis=-1):
     """The factor S by which every bin's stress may grow until Miner's sum reaches 1: the bound
     between D(S sigma) < 1 and D(S sigma) >= 1 in [1e-4, 1e4] (arrays broadcast, the bins on
-    ``axis``; an array ``code`` has the shape of the result).
+    ``axis``, as :func:`miner_damage`'s; an array ``code`` has the shape of the result).
 
     With x = ln S, each bin's damage is 0 up to its endurance knot, exp(g - a x) on a sloped
     segment of the S-N curve (a the segment's slope d ln N_f / d ln sigma) and N_L above the

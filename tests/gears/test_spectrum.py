@@ -471,6 +471,8 @@ def test_bad_factors_are_named(factors):
         (([1.0, np.nan], 1.0, 1.0, 4), {}, r"stress = nan at row 1"),
         (([1.0], 0.0, [1.0], 4), {}, r"strength = 0; valid is 0 < strength"),
         (([1.0], 1.0, [np.inf], 4), {}, r"cycles = inf at row 0; valid is 0 <= cycles"),
+        (([9.0, 9.0], 1.0, [1e308, 1e308], 4), {}, r"cycles = 1e\+308 at row 0; valid is 0 <= "
+                                                    r"cycles <= 1e\+30"),  # the sum was inf
         (([1.0], 1.0, [1.0], 8), {}, r"code = 8; valid is an integer 0 <= code <= 7"),
         (([1.0], 1.0, [1.0], 2.5), {}, r"code = 2.5; valid is an integer"),
         (([[1.0, 2.0]], 1.0, 1.0, [1, 2, 3]), {}, r"code has shape \(3,\); valid is the result's"),
@@ -495,7 +497,7 @@ def test_miner_functions_name_bad_bins(args, kw, named):
 @settings(max_examples=60, deadline=None)
 @given(
     st.lists(st.tuples(st.floats(allow_nan=True, allow_infinity=True),
-                       st.floats(-1.0, 1e30, allow_nan=False)), min_size=0, max_size=4),
+                       st.floats(-1.0, 1e308, allow_nan=False)), min_size=0, max_size=4),
     st.one_of(st.integers(-2, 9), st.floats(-1.0, 9.0)),
     st.sampled_from(["pitting", "bending", "x"]),
 )  # fmt: skip
