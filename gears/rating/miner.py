@@ -89,6 +89,14 @@ def _sloped_log_cycles(u, knots):
     return knots[1] + _hinge(u, *_slopes(knots))
 
 
+def _line_at_one(e1, a, ln_knee, out=None):
+    """ln N_f at S = 1 on the S-N curve's log-log line of slope ``a`` through its knee (ln N_f
+    = ``ln_knee`` there) for a bin whose knee lies at x = ln S = ``e1`` (y1 - z): the line of
+    both Miner's solvers (:class:`_Lines`, :func:`_bisect`); into ``out`` where given."""
+    out = np.multiply(e1, a, out=out)
+    return np.subtract(ln_knee, out, out=out)
+
+
 def _log_cycles(z, knots):
     """ln N_f at ``z = ln(sigma / sigma_inf)``: +inf below the endurance knot, 0 (one cycle)
     above the static knot, the log-log lines between."""
@@ -296,8 +304,7 @@ class _Lines:
     """A block's bins (bins, rows) for :func:`_solve`: ``n`` stacks, for each bin, its cycles
     N_L (its damage were it static) and its damage at S = 1 on the S-N curve's upper and lower
     log-log lines (their exponents at N_L = 1 held in [-600, 600]: exp's normal range); ``b``
-    the lines' slopes
-    -a_1, -a_2 in ln D per ln S; buffers for the rounds."""
+    the lines' slopes -a_1, -a_2 in ln D per ln S; buffers for the rounds."""
 
     def __init__(self, z, cycles, knots):
         y0, y1, y2 = knots[3:]
@@ -310,9 +317,9 @@ class _Lines:
         n = np.empty((3, *z.shape))
         n[0] = cycles
         self.knots = np.subtract(y, z)  # each bin's knots in x = ln S (3, bins, rows)
-        h = n[1:]
-        np.multiply(self.knots[1], a[:, None] if a.ndim == 2 else a[:, None, None], out=h)
-        h -= knots[1]
+        h = n[1:]  # ln(1 / N_f) at S = 1 on each line, then N_L / N_f
+        _line_at_one(self.knots[1], a[:, None] if a.ndim == 2 else a[:, None, None], knots[1], h)
+        np.negative(h, out=h)
         np.clip(h, -600.0, 600.0, out=h)  # times N_L up to 1e47 a normal number
         np.exp(h, out=h)
         h *= n[0]
@@ -402,10 +409,9 @@ def _bisect(z, lc, knots):
         # each bin's knots in x = ln S: endless up to e2, the knee at e1, static above e0
         e2, e1, e0 = y2 - z, y1 - z, y0 - z
         n_l = np.exp(lc)
-        above_knee = lc - knots[1]  # ln N_L - ln N_f at the knee
         a1, a2 = _slopes(knots)
 
-        damage, log_terms = _damage_at(e2, e1, e0, n_l, above_knee, a1, a2)
+        damage, log_terms = _damage_at(e2, e1, e0, n_l, lc, knots[1], a1, a2)
         d0 = damage(np.zeros(n))
         # the first stretch (knots[k-1], knots[k]] at whose end D >= 1 (k = 3 bins: beyond the
         # last knot, every bin static)
@@ -457,7 +463,7 @@ def _bisect(z, lc, knots):
     return d0, np.exp(np.clip(x, math.log(1e-4), math.log(1e4)))
 
 
-def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
+def _damage_at(e2, e1, e0, n_l, lc, ln_knee, a1, a2):
     """``(damage, log_terms)``: ``damage(x)`` Miner's sum at x per row, bins on the first axis
     (left-continuous: a bin at one of its knots is on the side below), ``log_terms(x)`` the ln
     of each bin's damage at x were it on its sloped segment (held in [-700, 700]: the masked
@@ -467,8 +473,8 @@ def _damage_at(e2, e1, e0, n_l, above_knee, a1, a2):
     one of the S-N curve's two log-log lines, written in x through the bin's knee e1 (the
     lower of the two where the curve is steeper below the knee), so that a search step is a
     few passes over buffers kept for it."""
-    below = above_knee + a2 * e1  # ln damage = below - a2 x below the knee
-    above = above_knee + a1 * e1  # and above - a1 x above it
+    below = lc - _line_at_one(e1, a2, ln_knee)  # ln damage = below - a2 x below the knee
+    above = lc - _line_at_one(e1, a1, ln_knee)  # and above - a1 x above it
     if np.all(np.greater_equal(a1, a2)):
         pick = np.minimum
     elif np.all(np.less_equal(a1, a2)):

@@ -557,3 +557,22 @@ def test_rounds_come_down_from_a_start_above_the_answer():
     ratio = np.exp(z).T
     assert np.all(miner_damage(ratio * (s * (1 - 1e-7))[:, None], 1.0, cycles.T, 7, "bending") < 1)
     assert np.all(miner_damage(ratio * (s * (1 + 1e-7))[:, None], 1.0, cycles.T, 7, "bending") >= 1)
+
+
+@pytest.mark.parametrize("mode", ["pitting", "bending"])
+def test_the_solvers_line_is_the_life_curve(mode):
+    # both Miner's solvers take a bin's ln N_f at S = 1 from one line (_line_at_one): on the
+    # S-N curve's sloped segments it is the curve of ISO 6336-2 Table 2 / ISO 6336-3 Table 3
+    # (log-log linear between the knots), read by cycles_to_failure (another formula: the
+    # hinge through the knee), to 1e-12 relative, above the knee on the upper line and below
+    # it on the lower, for every material group
+    from gears.rating.life import _BENDING_TABLE, _PITTING_TABLE
+    from gears.rating.miner import _knots, _line_at_one, _slopes, cycles_to_failure
+
+    for code in range(8):
+        knots = _knots(code, _PITTING_TABLE if mode == "pitting" else _BENDING_TABLE)
+        y0, y1, y2 = knots[3:]
+        for lo, hi, a in ((y1, y0, _slopes(knots)[0]), (y2, y1, _slopes(knots)[1])):
+            z = np.linspace(lo, hi, 7)[1:-1]
+            want = np.log(cycles_to_failure(np.exp(z), code, mode))
+            np.testing.assert_allclose(_line_at_one(y1 - z, a, knots[1]), want, rtol=1e-12)
