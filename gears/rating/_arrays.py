@@ -133,6 +133,16 @@ PUBLIC = {"T": "torque", "n": "speed", "K_A": "application_factor", "K_gamma": "
 }  # fmt: skip
 
 
+def public_name(key: str) -> str:
+    """The public name of the array route's argument ``key`` (:data:`PUBLIC`); a given factor's
+    ``o_K_A`` is ``factors["K_A"]``, a per-gear one's ``o_Y_X1`` ``factors["Y_X"][0]``."""
+    if not key.startswith("o_"):
+        return PUBLIC.get(key, key)
+    name = key[2:].replace("_prime", "'")  # no factor's symbol ends in a digit but a gear's
+    return f'factors["{name[:-1]}"][{int(name[-1]) - 1}]' if name[-1] in "12" else (
+        f'factors["{name}"]')  # fmt: skip
+
+
 def reducer(reduce, chunk, arguments: dict, function) -> int:
     """``chunk`` of :func:`gears.rating.iso6336.rate_reduced`, checked with the rest: ``reduce``
     a callable, ``chunk`` an integer >= 1, ``arguments`` those of ``function`` by name (none

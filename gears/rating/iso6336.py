@@ -64,9 +64,9 @@ from gears.arguments import common_shape
 from gears.errors import GearError
 from gears.meshing import _CHUNK, _pool, contact_ratio, default_threads, pair_geometry
 from gears.rack import BasicRack, max_root_radius
-from gears.rating._arrays import PUBLIC as _PUBLIC
 from gears.rating._arrays import number, reducer
 from gears.rating._arrays import pair_of as _pair_of
+from gears.rating._arrays import public_name as _public
 from gears.rating._block import gears_part, load_part, rate_block, rows_of
 from gears.rating._one import PLAIN as _PLAIN
 from gears.rating._one import plain_key, plain_numbers, plain_or_array
@@ -705,7 +705,7 @@ def _blocks(a, mats, fields, threads, key=None, reduce=None, chunk=_CHUNK, rest=
     if key is not None and reduce is None and all(type(a[k]) is float for k in _LOAD_KEYS):
         shape = ()  # one pair of plain arguments, its load one number each
     else:
-        shape = common_shape({_PUBLIC.get(k, k): np.shape(v) for k, v in a.items()})
+        shape = common_shape({_public(k): np.shape(v) for k, v in a.items()})
     n = math.prod(shape)
     if n < 2 * chunk:
         one = n == 1 and shape == ()

@@ -576,3 +576,45 @@ def test_the_solvers_line_is_the_life_curve(mode):
             z = np.linspace(lo, hi, 7)[1:-1]
             want = np.log(cycles_to_failure(np.exp(z), code, mode))
             np.testing.assert_allclose(_line_at_one(y1 - z, a, knots[1]), want, rtol=1e-12)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    st.integers(1, 4),
+    st.integers(1, 4),
+    st.sampled_from(["K_A", "Y_X", "Z_NT", "K_v", "Z_L"]),
+    st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(0.5, 2.0)),
+    st.sampled_from(["number", "per pair", "other length", "per gear", "per gear arrays"]),
+)
+def test_rate_spectrum_factors_property(pairs, bins, name, value, form):
+    # rate_spectrum's factors= (a number, an array over the pairs, one of another length, a
+    # per-gear pair of numbers or arrays), any value: finite safeties and lives >= 0, or our
+    # own error
+    z1 = list(range(18, 18 + pairs))
+    spectrum = [(300.0 + 100 * i, 1000.0, 500.0 * (i + 1)) for i in range(bins)]
+    arr = np.full(pairs, value)
+    given = {"number": value, "per pair": arr, "other length": np.full(pairs + 1, value),
+             "per gear": (value, 1.0), "per gear arrays": (arr, arr)}[form]  # fmt: skip
+    try:
+        r = rate_spectrum(z1, 50, 3, 30, spectrum, factors={name: given})
+    except GearError:
+        return
+    for v in r:
+        assert np.all(np.isfinite(v)) and np.all(np.asarray(v) >= 0)
+
+
+@pytest.mark.parametrize(("factors", "named"), [
+    ({"K_A": np.ones(4)}, r'factors\["K_A"\] has shape \(4,?'),
+    ({"Y_X": (1.0, np.ones(4))}, r'factors\["Y_X"\]\[1\] has shape \(4,?'),
+    ({"c'": np.full(4, 14.0)}, r'factors\["c\'"\] has shape \(4,?'),
+])  # fmt: skip
+def test_a_factor_array_of_another_length_is_named_as_given(factors, named):
+    # three pairs, a factor's array of four: the message names the factor as the caller gave it
+    # (it named the internal o_K_A, o_Y_X2, o_c_prime), in rate_pairs and rate_spectrum
+    from gears.rating.iso6336 import rate_pairs
+
+    for rate in (lambda: rate_pairs([18, 19, 20], 50, 3, 30, 300.0, 1000.0, factors=factors),
+                 lambda: rate_spectrum([18, 19, 20], 50, 3, 30, [(300.0, 1000.0, 5.0)],
+                                       factors=factors)):  # fmt: skip
+        with pytest.raises(GearError, match=named):
+            rate()
