@@ -345,7 +345,7 @@ class _Lines:
         down."""
         total = self.n[1:].sum(axis=1)
         b = self.b.reshape(2, -1)
-        x = (-np.log(total) / b).max(axis=0)
+        x = _term_root(0.0, total, b).max(axis=0)
         static = np.where(self.n[0] >= 1.0, self.knots[0], np.inf).min(axis=0)
         return np.minimum(x, static), static
 
@@ -355,6 +355,12 @@ class _Lines:
         if self.b.ndim > 1:
             self.b = self.b[:, rows]
         self._buffers()
+
+
+def _term_root(left, a, b):
+    """x where one term alone, ``a`` exp(``b`` x), reaches exp(``left``) (1 - C: the root of
+    C + a exp(b x) = 1): (left - ln a) / b."""
+    return (left - np.log(a)) / b
 
 
 def _regime_root(sums, b):
@@ -367,8 +373,8 @@ def _regime_root(sums, b):
     ok = (c < 1.0) & ((p > 0.0) | (q > 0.0))
     c = np.where(ok, c, 0.0)
     left = np.log1p(-c)  # ln(1 - C)
-    w = np.minimum((left - np.log(np.maximum(p, 1e-300))) / b1,
-                   (left - np.log(np.maximum(q, 1e-300))) / b2)  # fmt: skip
+    w = np.minimum(_term_root(left, np.maximum(p, 1e-300), b1),
+                   _term_root(left, np.maximum(q, 1e-300), b2))  # fmt: skip
     both = ok & (p > 0.0) & (q > 0.0)
     every = bool(both.all())
     two = slice(None) if every else np.flatnonzero(both)

@@ -618,3 +618,15 @@ def test_a_factor_array_of_another_length_is_named_as_given(factors, named):
                                        factors=factors)):  # fmt: skip
         with pytest.raises(GearError, match=named):
             rate()
+
+
+def test_one_term_root_is_the_root():
+    # _term_root (the rounds' start and _regime_root's one-term roots) by its definition:
+    # C + A exp(b x) = 1 at x, to 1e-12, over C in [0, 0.99), A over 1e-30 ... 1e30, b 6 ... 84
+    # (the S-N lines' slopes negated)
+    from gears.rating.miner import _term_root
+
+    rng = np.random.default_rng(11)
+    c, a, b = rng.uniform(0, 0.99, 500), 10.0 ** rng.uniform(-30, 30, 500), rng.uniform(6, 84, 500)
+    x = _term_root(np.log1p(-c), a, b)
+    np.testing.assert_allclose(c + a * np.exp(b * x), 1.0, rtol=1e-12)
