@@ -235,3 +235,16 @@ def test_scene_and_outlines_sweep(angle, width, tol):
     except GearError:
         return
     assert all(g.is_watertight for g in s.geometry.values())
+
+
+def test_a_tolerance_past_eight_moduli_is_drawn():
+    # regression: the blank's buffer took its segments from 2 acos(1 - tol / (4 m)), a math
+    # domain error (a ValueError) past tol = 8 m; the chord angle is a whole turn there
+    # (gears.cutting.sampling.chord_angle: the sagitta passes the diameter), so the coarsest
+    # outlines come out valid, each of an area within 5 % of the same outline's at 0.02 mm
+    # (the fixture's; a coarse outline's chords cut its area by a few per cent at most)
+    p = NonCircularPair.elliptical(40.0, 0.2, module=2.0)
+    fine = p.outlines(0.0, 0.02)
+    coarse = p.outlines(0.0, 20.0)  # ten moduli
+    for c, f in zip(coarse, fine, strict=True):
+        assert c.is_valid and c.area == pytest.approx(f.area, rel=0.05)
