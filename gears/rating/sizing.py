@@ -398,8 +398,10 @@ def rate_spectrum(
     **options
         Passed to :func:`gears.rating.iso6336.rate_pairs` (``material``, ``x1``, ``quality``,
         ``factors``, ``threads``, ...; not ``torque``, ``speed``, ``life``, ``fields``). The
-        per-pair arrays among them broadcast against the pairs; materials and per-gear pairs
-        are one for all.
+        per-pair arrays among them broadcast against the pairs, and so do ``factors``' arrays
+        (each of a per-gear factor's pair too); materials and per-gear pairs of other options
+        are one for all. A life factor given (``Z_NT``, ``Y_NT``) cancels: Miner's rule reads
+        the material's S-N curve.
 
     Returns
     -------
