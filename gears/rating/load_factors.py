@@ -9,8 +9,6 @@ running-in allowances y_alpha and y_beta they use. Every function takes scalars 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from gears.namespace import of
@@ -148,7 +146,8 @@ def dynamic_factor(resonance_ratio, line_load, c_prime, f_pb_eff, f_f_eff, tip_r
     shape = () if xp is not np else np.broadcast_shapes(
         *(np.shape(v) for v in (n, bp, bf, bk, eg, cv2, sub)))  # fmt: skip
     over = n > ns if shape else None
-    if not shape or 8 * np.count_nonzero(over) > math.prod(shape):  # one pair, or many in them
+    # one pair, or many in them (the share of over's, which broadcasts to the rest uniformly)
+    if not shape or 8 * np.count_nonzero(over) > np.size(over):
         return _out(_where(n <= ns, sub, _resonant(n, bp, bf, bk, eg, low, egx, cv2, xp)))
     # the resonance ranges only where a pair is in them (a few of a sweep's pairs)
     k = np.array(np.broadcast_to(sub, shape))

@@ -491,3 +491,25 @@ def test_dynamic_factor_ranges_over_arrays_match_one_pair_each():
         got = dynamic_factor(n, *args[1:])
         one = [dynamic_factor(*(float(v[i]) for v in (n, *args[1:]))) for i in range(k)]
         np.testing.assert_allclose(got, one, rtol=1e-12, atol=0)
+
+
+def test_dynamic_factor_ranges_over_broadcast_arrays_match_one_pair_each():
+    # ISO 6336-1 §6.5 over arrays of different shapes (the resonance ratio per row, the rest
+    # per column: a spectrum's pairs x bins): the resonance ranges computed only where an
+    # element is in them, taken from the broadcast arrays. Independent check: each element
+    # alone (plain floats, one expression of all four ranges) to 1e-12; N of 0 ... 0.6 with a
+    # few rows up to 3 (a few elements past N_S: the subset route) and of 0 ... 3 (most)
+    from gears.rating.load_factors import dynamic_factor
+
+    rng = np.random.default_rng(8)
+    rows, cols = 60, 40
+    rest = tuple(rng.uniform(lo, hi, cols) for lo, hi in ((20.0, 2000.0), (10.0, 20.0),
+                 (0.0, 20.0), (0.0, 20.0), (0.0, 50.0), (1.1, 3.5)))  # fmt: skip
+    few = rng.uniform(0.0, 0.6, (rows, 1))
+    few[:3, 0] = rng.uniform(1.0, 3.0, 3)
+    for n in (few, rng.uniform(0.0, 3.0, (rows, 1))):
+        got = dynamic_factor(n, *rest)
+        assert got.shape == (rows, cols)
+        one = [[dynamic_factor(float(n[i, 0]), *(float(v[j]) for v in rest)) for j in range(cols)]
+               for i in range(rows)]  # fmt: skip
+        np.testing.assert_allclose(got, one, rtol=1e-12, atol=0)
