@@ -72,7 +72,7 @@ def test_clip_where_logical_not_and_interp_answer_as_numpy():
         assert _same(SCALAR.clip(x, -1.0, 2.0), _numpy("clip", x, -1.0, 2.0))
         assert _same(SCALAR.interp(x, knots, values), np.interp(x, knots, values))
         assert SCALAR.logical_not(x > 0) == bool(np.logical_not(np.float64(x) > 0))
-        assert SCALAR.where(x > 0, 1.0, 2.0) == float(np.where(np.float64(x) > 0, 1.0, 2.0))
+        assert _same(SCALAR.where(x > 0, 1.0, 2.0), np.where(np.float64(x) > 0, 1.0, 2.0))
 
 
 def test_of_picks_math_for_python_numbers_only():
